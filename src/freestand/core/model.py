@@ -1,0 +1,151 @@
+"""The planar model: blocks stacked on a support, and the excitation.
+
+Conventions (see ``docs/nomenclature.md``): x horizontal to the right, z
+vertical up, z = 0 on the support surface; angles and angular accelerations
+positive counter-clockwise (from x towards z). All values SI.
+
+A :class:`Stack` lists its blocks bottom to top; block ``i`` rests on block
+``i - 1`` through its two lower contacts (the paper's edges or wheels), block 0
+on the support. The interface *below* a block belongs to that block: its
+friction and its sliding restriction are given with the block.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+
+
+class Sliding(str, Enum):
+    """Which way the interface below a block may slide.
+
+    ``free``: both ways; ``none``: never (wheel flanges, pins); ``no-right``: an
+    end stop, the block cannot slide further to the right (+x) relative to the
+    body below; ``no-left``: likewise to the left.
+    """
+
+    FREE = "free"
+    NONE = "none"
+    NO_RIGHT = "no-right"
+    NO_LEFT = "no-left"
+
+    def allows(self, direction: int) -> bool:
+        """Whether sliding in ``direction`` (+1 right, -1 left) is possible."""
+        if self is Sliding.FREE:
+            return True
+        if self is Sliding.NONE:
+            return False
+        if self is Sliding.NO_RIGHT:
+            return direction < 0
+        return direction > 0
+
+
+@dataclass(frozen=True)
+class Friction:
+    """Coulomb friction of an interface (paper section 3.1.2.1).
+
+    Parameters
+    ----------
+    static : float
+        Static coefficient mu_0 [-]: the interface holds while
+        ``|T| <= static * N``.
+    kinetic : float
+        Kinetic coefficient mu [-]: while sliding, ``|T| = kinetic * N``
+        against the sliding. Not above ``static``.
+    """
+
+    static: float
+    kinetic: float
+
+
+@dataclass(frozen=True)
+class Block:
+    """One rigid block of a stack, with the interface below it.
+
+    Parameters
+    ----------
+    name : str
+        Name used in results (``"bridge"``, ``"cart"``).
+    mass : float
+        Mass m [kg], positive.
+    inertia : float
+        Mass moment of inertia about the centre of gravity for rotation in the
+        plane, Theta_S [kg m^2], positive.
+    centre : tuple of float
+        (x, z) of the centre of gravity S [m].
+    base_left, base_right : float
+        x of the left and right lower contacts [m], ``base_left < base_right``.
+    base_level : float
+        z of the lower contacts [m]: 0 for the bottom block, the top of the
+        block below for the others.
+    friction : Friction
+        Friction of the interface below this block.
+    sliding : Sliding
+        Sliding restriction of the interface below this block.
+    """
+
+    name: str
+    mass: float
+    inertia: float
+    centre: tuple[float, float]
+    base_left: float
+    base_right: float
+    base_level: float
+    friction: Friction
+    sliding: Sliding = Sliding.FREE
+
+    @property
+    def contacts(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        """(x, z) of the left and right lower contacts [m]."""
+        return (self.base_left, self.base_level), (self.base_right, self.base_level)
+
+    def inertia_about(self, point: tuple[float, float]) -> float:
+        """Moment of inertia about ``point`` [kg m^2] by the parallel-axis rule."""
+        dx = self.centre[0] - point[0]
+        dz = self.centre[1] - point[1]
+        return self.inertia + self.mass * (dx * dx + dz * dz)
+
+
+@dataclass(frozen=True)
+class Stack:
+    """A planar model: blocks listed bottom to top (one model-file configuration).
+
+    Parameters
+    ----------
+    name : str
+        Configuration name (``"y-z"``, ``"x-z cart right"``).
+    blocks : tuple of Block
+        Bottom to top; block 0 rests on the support.
+    """
+
+    name: str
+    blocks: tuple[Block, ...]
+
+    def block_index(self, name: str) -> int:
+        """Index of the block called ``name``; ``KeyError`` if there is none."""
+        for index, block in enumerate(self.blocks):
+            if block.name == name:
+                return index
+        raise KeyError(name)
+
+
+@dataclass(frozen=True)
+class Excitation:
+    """A level of support acceleration (paper section 2).
+
+    Parameters
+    ----------
+    name : str
+        Name of the level (``"rigid"``, ``"elastic"``).
+    horizontal : float
+        Magnitude of the horizontal support acceleration a_hor [m/s^2]; both
+        senses are analysed.
+    vertical : float
+        Downward support acceleration a_ver [m/s^2]: the weight becomes
+        m (g - a_ver). Upward support acceleration only adds stability and is
+        not analysed (paper section 2).
+    """
+
+    name: str
+    horizontal: float
+    vertical: float = 0.0

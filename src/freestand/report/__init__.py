@@ -1,0 +1,1 @@
+"""Reports built from solver results."""
