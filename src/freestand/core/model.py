@@ -13,10 +13,10 @@ friction and its sliding restriction are given with the block.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from enum import Enum
+from enum import StrEnum
 
 
-class Sliding(str, Enum):
+class Sliding(StrEnum):
     """Which way the interface below a block may slide.
 
     ``free``: both ways; ``none``: never (wheel flanges, pins); ``no-right``: an
@@ -82,6 +82,9 @@ class Block:
         Friction of the interface below this block.
     sliding : Sliding
         Sliding restriction of the interface below this block.
+    contact_names : tuple of str
+        Names of the left and right lower contacts, for tables (the paper's
+        G/H, C/D, E/F, A/B); ``("left", "right")`` by default.
     """
 
     name: str
@@ -93,6 +96,7 @@ class Block:
     base_level: float
     friction: Friction
     sliding: Sliding = Sliding.FREE
+    contact_names: tuple[str, str] = ("left", "right")
 
     @property
     def contacts(self) -> tuple[tuple[float, float], tuple[float, float]]:

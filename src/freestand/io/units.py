@@ -72,7 +72,10 @@ def to_si(
         If the value is not a number, has the wrong dimension or is not finite.
     """
     unit, example = QUANTITIES[quantity]
-    fix = f"give {quantity} as a bare SI number ({unit or 'no unit'}) or a string with a unit, e.g. {example}"
+    fix = (
+        f"give {quantity} as a bare SI number ({unit or 'no unit'}) or a string with a unit, "
+        f"e.g. {example}"
+    )
     if isinstance(value, bool):
         raise FreestandError(f"{value!r} is not a number; {fix}", source=source, field=field)
     if isinstance(value, int | float):

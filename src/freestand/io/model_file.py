@@ -1,0 +1,593 @@
+"""Model files: TOML descriptions of stacks, excitations and checks.
+
+The format is documented in the README ("Model file"). Bare numbers are SI;
+strings with units are converted with pint (:mod:`freestand.io.units`).
+Every problem is reported as one :class:`~freestand.errors.FreestandError`
+naming the file, the field, the value and the fix.
+
+A two-block configuration can also be given in the paper's own notation
+(Table 1: ``p1, p3, g, h, p2, c, d, r, q`` in the y-z plane, or
+``p1, p3, e, f, p2, a, b, s, t`` in the x-z plane); it is converted to
+coordinates by :func:`paper_notation_blocks`.
+"""
+
+from __future__ import annotations
+
+import difflib
+import hashlib
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, ValidationError, field_validator, model_validator
+
+from freestand.core.model import Block, Excitation, Friction, Sliding, Stack
+from freestand.errors import FreestandError
+from freestand.io.units import to_si
+
+Quantity = float | int | str
+
+
+@dataclass(frozen=True)
+class ModelFile:
+    """A loaded model file, validated and in SI units.
+
+    Attributes
+    ----------
+    name : str
+        Model name.
+    gravity : float
+        g [m/s^2].
+    excitations : tuple of Excitation
+    configurations : tuple of Stack
+    source : str
+        File name the model was read from (``"<string>"`` for text).
+    sha256 : str
+        Hash of the file's bytes.
+    sections : dict
+        Further top-level sections (``spectrum``, ``beam``...) as read, for
+        the checks that use them.
+    """
+
+    name: str
+    gravity: float
+    excitations: tuple[Excitation, ...]
+    configurations: tuple[Stack, ...]
+    source: str = "<string>"
+    sha256: str = ""
+    base_dir: Path = field(default_factory=Path.cwd)
+    sections: dict = field(default_factory=dict)
+
+    def configuration(self, name: str) -> Stack:
+        """The configuration called ``name``, or a FreestandError listing the names."""
+        for stack in self.configurations:
+            if stack.name == name:
+                return stack
+        known = ", ".join(repr(stack.name) for stack in self.configurations)
+        raise FreestandError(
+            f"no configuration named {name!r}; choose one of {known}", source=self.source
+        )
+
+
+# --- schema -------------------------------------------------------------------------------------
+
+_SLIDING_WORDS = ", ".join(repr(s.value) for s in Sliding)
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+def _context(info) -> tuple[str | None, float]:
+    context = info.context or {}
+    return context.get("source"), context.get("gravity", 9.81)
+
+
+def _quantity(value: Any, quantity: str, info) -> float:
+    source, gravity = _context(info)
+    # The field path is added when the ValidationError is translated.
+    return to_si(value, quantity, field="", source=None, gravity=gravity)
+
+
+def _positive(value: float, what: str, example: str) -> float:
+    if not value > 0:
+        raise ValueError(f"{value!r} is not positive; the {what} must be > 0, e.g. {example}")
+    return value
+
+
+class _FrictionSpec(_Strict):
+    static: float
+    kinetic: float
+
+    @model_validator(mode="after")
+    def _order(self):
+        if self.static < 0 or self.kinetic < 0:
+            raise ValueError(
+                f"friction coefficients must be >= 0 (static = {self.static}, "
+                f"kinetic = {self.kinetic})"
+            )
+        if self.kinetic > self.static:
+            raise ValueError(
+                f"kinetic = {self.kinetic} is above static = {self.static}; the kinetic "
+                "coefficient must not exceed the static one (swap them?)"
+            )
+        return self
+
+
+class _BaseSpec(_Strict):
+    left: Quantity
+    right: Quantity
+    level: Quantity = 0.0
+    names: tuple[str, str] = ("left", "right")
+
+    @field_validator("left", "right", "level", mode="before")
+    @classmethod
+    def _length(cls, value, info):
+        return _quantity(value, "length", info)
+
+    @model_validator(mode="after")
+    def _order(self):
+        if not self.left < self.right:
+            raise ValueError(
+                f"left = {self.left} m is not left of right = {self.right} m; "
+                "give the x of the left contact first (left < right)"
+            )
+        return self
+
+
+def _sliding_word(value: Any) -> str:
+    try:
+        return Sliding(value).value
+    except ValueError:
+        raise ValueError(f"{value!r} is not a sliding word; use one of {_SLIDING_WORDS}") from None
+
+
+def _mass_value(value: Any, info) -> float:
+    return _positive(_quantity(value, "mass", info), "mass", '16600 or "16.6 t"')
+
+
+def _inertia_value(value: Any, info) -> float:
+    return _positive(
+        _quantity(value, "inertia", info), "moment of inertia about the centre", "49400"
+    )
+
+
+class _BlockSpec(_Strict):
+    name: str
+    mass: Quantity
+    inertia: Quantity
+    centre: tuple[Quantity, Quantity]
+    base: _BaseSpec
+    friction: _FrictionSpec | None = None
+    sliding: str = "free"
+
+    _mass = field_validator("mass", mode="before")(_mass_value)
+    _inertia = field_validator("inertia", mode="before")(_inertia_value)
+    _sliding = field_validator("sliding", mode="before")(_sliding_word)
+
+    @field_validator("centre", mode="before")
+    @classmethod
+    def _centre(cls, value, info):
+        if not isinstance(value, list | tuple) or len(value) != 2:
+            raise ValueError(f"{value!r} is not a pair; give [x, z] in m, e.g. [0.0, 0.98]")
+        return tuple(_quantity(v, "length", info) for v in value)
+
+    @model_validator(mode="after")
+    def _checks(self):
+        if self.friction is None and self.sliding != Sliding.NONE.value:
+            raise ValueError(
+                "friction is missing; add friction = { static = 0.25, kinetic = 0.20 } "
+                '(it may be left out only with sliding = "none")'
+            )
+        if not self.centre[1] > self.base.level:
+            raise ValueError(
+                f"the centre z = {self.centre[1]} m is not above the base level "
+                f"{self.base.level} m; z is measured up from the support surface"
+            )
+        return self
+
+    def to_block(self) -> Block:
+        friction = self.friction or _FrictionSpec(static=0.0, kinetic=0.0)
+        return Block(
+            name=self.name,
+            mass=float(self.mass),
+            inertia=float(self.inertia),
+            centre=(float(self.centre[0]), float(self.centre[1])),
+            base_left=float(self.base.left),
+            base_right=float(self.base.right),
+            base_level=float(self.base.level),
+            friction=Friction(friction.static, friction.kinetic),
+            sliding=Sliding(self.sliding),
+            contact_names=tuple(self.base.names),
+        )
+
+
+class _PaperBody(_Strict):
+    name: str
+    mass: Quantity
+    inertia: Quantity
+    friction: _FrictionSpec | None = None
+    sliding: str = "free"
+
+    _mass = field_validator("mass", mode="before")(_mass_value)
+    _inertia = field_validator("inertia", mode="before")(_inertia_value)
+    _sliding = field_validator("sliding", mode="before")(_sliding_word)
+
+
+_PAPER_LENGTHS = {
+    "y-z": ("p1", "p3", "g", "h", "p2", "c", "d", "r", "q"),
+    "x-z": ("p1", "p3", "e", "f", "p2", "a", "b", "s", "t"),
+}
+
+
+class _PaperSpec(_Strict):
+    """The paper's Table 1 notation for a two-block configuration."""
+
+    model_config = ConfigDict(extra="allow", frozen=True)
+    plane: str
+    lower: _PaperBody
+    upper: _PaperBody
+
+    @field_validator("plane")
+    @classmethod
+    def _plane(cls, value):
+        if value not in _PAPER_LENGTHS:
+            raise ValueError(f'{value!r} is not a plane of the paper; use "y-z" or "x-z"')
+        return value
+
+    @model_validator(mode="after")
+    def _lengths(self, info):
+        names = _PAPER_LENGTHS[self.plane]
+        extra = dict(self.model_extra or {})
+        unknown = sorted(set(extra) - set(names))
+        if unknown:
+            raise ValueError(
+                f"unknown length(s) {', '.join(unknown)} for plane {self.plane}; "
+                f"the paper's notation uses {', '.join(names)}"
+            )
+        missing = [name for name in names if name not in extra]
+        if missing:
+            raise ValueError(
+                f"missing length(s) {', '.join(missing)}; plane {self.plane} needs "
+                f"{', '.join(names)} (paper Table 1)"
+            )
+        lengths = {}
+        for name in names:
+            try:
+                lengths[name] = _quantity(extra[name], "length", info)
+            except FreestandError as error:
+                raise ValueError(f"{name}: {error.detail}") from None
+            if lengths[name] < 0:
+                raise ValueError(f"{name} = {lengths[name]} m is negative; paper lengths are >= 0")
+        object.__setattr__(self, "__pydantic_extra__", lengths)
+        return self
+
+
+class _ConfigurationSpec(_Strict):
+    name: str
+    block: list[_BlockSpec] | None = None
+    paper: _PaperSpec | None = None
+
+    @model_validator(mode="after")
+    def _one_form(self):
+        if (self.block is None) == (self.paper is None):
+            raise ValueError(
+                "give either [[configuration.block]] entries (coordinates) or one "
+                "[configuration.paper] table (the paper's notation), not both or neither"
+            )
+        if self.block is not None:
+            if not self.block:
+                raise ValueError("no blocks; add at least one [[configuration.block]]")
+            names = [b.name for b in self.block]
+            if len(set(names)) != len(names):
+                raise ValueError(f"block names {names} repeat; give each block its own name")
+            for lower, upper in zip(self.block, self.block[1:], strict=False):
+                if not upper.base.level > lower.base.level:
+                    raise ValueError(
+                        f"block {upper.name!r} has its base at z = {upper.base.level} m, not above "
+                        f"the base of {lower.name!r} below it ({lower.base.level} m); list blocks "
+                        "bottom to top, each resting on the one before"
+                    )
+        return self
+
+
+class _ExcitationSpec(_Strict):
+    name: str
+    horizontal: Quantity
+    vertical: Quantity = 0.0
+
+    @field_validator("horizontal", "vertical", mode="before")
+    @classmethod
+    def _acceleration(cls, value, info):
+        result = _quantity(value, "acceleration", info)
+        if result < 0:
+            raise ValueError(
+                f"{value!r} is negative; give the magnitude (horizontal: both senses are "
+                "analysed; vertical: the downward support acceleration, an upward one only "
+                "adds stability)"
+            )
+        return result
+
+
+class _ModelSpec(_Strict):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+    name: str
+    gravity: Quantity = 9.81
+    excitation: list[_ExcitationSpec]
+    configuration: list[_ConfigurationSpec]
+    spectrum: list[dict] | None = None
+    beam: dict | None = None
+
+    @model_validator(mode="after")
+    def _unique(self):
+        for what, items in (("excitation", self.excitation), ("configuration", self.configuration)):
+            if not items:
+                raise ValueError(f"no {what}; add at least one [[{what}]] table")
+            names = [item.name for item in items]
+            if len(set(names)) != len(names):
+                raise ValueError(f"{what} names {names} repeat; give each its own name")
+        return self
+
+
+# --- paper notation -----------------------------------------------------------------------------
+
+
+def paper_notation_blocks(spec: _PaperSpec) -> tuple[Block, Block]:
+    """Convert the paper's Table 1 notation of a two-block model to coordinates.
+
+    y-z plane (paper Fig. 1): lower block centre S1 = (0, p1), lower contacts
+    G = (-g, 0), H = (h, 0); top of the lower block at z = p1 + p3; upper
+    contacts C = (-(g - r), p1 + p3), D = (h - q, p1 + p3); upper centre S2 at
+    x = C + c (= D - d), z = p1 + p3 + p2.
+
+    x-z plane (paper Fig. 2): E = (-e, 0), F = (f, 0); upper contacts
+    A = (-e + s, p1 + p3), B = (f - t, p1 + p3); upper centre S2 at x = A + a
+    (= B - b), z = p1 + p3 + p2.
+
+    Raises
+    ------
+    ValueError
+        If the two ways of locating S2 disagree by more than 2 cm, or the
+        upper contacts are not in order.
+    """
+    d = spec.model_extra
+    top = d["p1"] + d["p3"]
+    if spec.plane == "y-z":
+        names = (("G", "H"), ("C", "D"))
+        lower_left, lower_right = -d["g"], d["h"]
+        upper_left, upper_right = -(d["g"] - d["r"]), d["h"] - d["q"]
+        centre_from_left, centre_from_right = upper_left + d["c"], upper_right - d["d"]
+        letters = "c, d, r, q"
+    else:
+        names = (("E", "F"), ("A", "B"))
+        lower_left, lower_right = -d["e"], d["f"]
+        upper_left, upper_right = -d["e"] + d["s"], d["f"] - d["t"]
+        centre_from_left, centre_from_right = upper_left + d["a"], upper_right - d["b"]
+        letters = "a, b, s, t"
+    if not upper_left < upper_right:
+        raise ValueError(
+            f"the upper contacts come out at x = {upper_left:.3f} and {upper_right:.3f} m, "
+            f"not left before right; check {letters}"
+        )
+    if abs(centre_from_left - centre_from_right) > 0.02:
+        raise ValueError(
+            f"the upper centre is at x = {centre_from_left:.3f} m from its left contact but "
+            f"{centre_from_right:.3f} m from its right one; check {letters}"
+        )
+    blocks = []
+    for body, centre, left, right, level, contact_names in (
+        (spec.lower, (0.0, d["p1"]), lower_left, lower_right, 0.0, names[0]),
+        (spec.upper, (centre_from_left, top + d["p2"]), upper_left, upper_right, top, names[1]),
+    ):
+        friction = body.friction or _FrictionSpec(static=0.0, kinetic=0.0)
+        blocks.append(
+            Block(
+                name=body.name,
+                mass=float(body.mass),
+                inertia=float(body.inertia),
+                centre=(float(centre[0]), float(centre[1])),
+                base_left=float(left),
+                base_right=float(right),
+                base_level=float(level),
+                friction=Friction(friction.static, friction.kinetic),
+                sliding=Sliding(body.sliding),
+                contact_names=contact_names,
+            )
+        )
+        if body.friction is None and body.sliding != Sliding.NONE.value:
+            raise ValueError(
+                f"{body.name}: friction is missing; add friction = {{ static = 0.25, "
+                'kinetic = 0.20 }} (it may be left out only with sliding = "none")'
+            )
+    return blocks[0], blocks[1]
+
+
+# --- loading ------------------------------------------------------------------------------------
+
+
+def _field_path(location: tuple, data: dict) -> str:
+    """A readable dotted path such as ``configuration[0] 'y-z'.block[1] 'cart'.mass``."""
+    parts = []
+    node: Any = data
+    for item in location:
+        if isinstance(item, int):
+            parts[-1] = f"{parts[-1]}[{item}]" if parts else f"[{item}]"
+            node = node[item] if isinstance(node, list) and item < len(node) else None
+            if isinstance(node, dict) and isinstance(node.get("name"), str):
+                parts[-1] += f" ({node['name']!r})"
+        else:
+            parts.append(str(item))
+            node = node.get(item) if isinstance(node, dict) else None
+    return ".".join(parts)
+
+
+_MISSING_HINTS = {
+    "name": 'a name, e.g. name = "bridge"',
+    "mass": "the mass in kg, e.g. mass = 16600",
+    "inertia": "the moment of inertia about the centre in kg m^2, e.g. inertia = 49400",
+    "centre": "the centre of gravity [x, z] in m, e.g. centre = [0.0, 0.98]",
+    "base": "the lower contacts, e.g. base = { left = -1.74, right = 2.46, level = 0.0 }",
+    "left": "the x of the left contact in m",
+    "right": "the x of the right contact in m",
+    "static": "the static friction coefficient, e.g. static = 0.25",
+    "kinetic": "the kinetic friction coefficient, e.g. kinetic = 0.20",
+    "horizontal": 'the horizontal support acceleration, e.g. horizontal = "2.70 m/s^2"',
+    "excitation": "at least one [[excitation]] table with name, horizontal and vertical",
+    "configuration": "at least one [[configuration]] table with its blocks",
+    "plane": 'the plane, "y-z" or "x-z"',
+    "lower": 'the lower body, e.g. lower = { name = "bridge", mass = 16600, inertia = 49400, ... }',
+    "upper": 'the upper body, e.g. upper = { name = "cart", mass = 25600, inertia = 151600, ... }',
+}
+
+
+def _translate(error: ValidationError, data: dict, source: str) -> FreestandError:
+    errors = error.errors(include_url=False)
+    # A misspelt field shows as an unknown one and a missing one: name the unknown one.
+    first = next((e for e in errors if e["type"] == "extra_forbidden"), errors[0])
+    location = tuple(first["loc"])
+    kind = first["type"]
+    path = _field_path(location, data)
+    name = str(location[-1]) if location else ""
+    if kind == "missing":
+        hint = _MISSING_HINTS.get(name, "add it")
+        return FreestandError(f"is missing; add {hint}", source=source, field=path)
+    if kind == "extra_forbidden":
+        missing = [str(e["loc"][-1]) for e in errors if e["type"] == "missing"]
+        close = difflib.get_close_matches(name, missing + list(_MISSING_HINTS), n=1)
+        suggestion = f"did you mean {close[0]!r}? " if close else ""
+        return FreestandError(
+            f"is not a known field (value {first.get('input')!r}); {suggestion}check its "
+            "spelling against the README's model-file section",
+            source=source,
+            field=path,
+        )
+    if kind == "value_error":
+        cause = first.get("ctx", {}).get("error")
+        message = cause.detail if isinstance(cause, FreestandError) else str(cause)
+        return FreestandError(message, source=source, field=path or None)
+    value = first.get("input")
+    return FreestandError(
+        f"{value!r}: {first['msg'].lower()}; see the README's model-file section",
+        source=source,
+        field=path or None,
+    )
+
+
+def load_model_text(
+    text: str, *, source: str = "<string>", base_dir: Path | None = None
+) -> ModelFile:
+    """Read a model from TOML text.
+
+    Parameters
+    ----------
+    text : str
+        TOML document.
+    source : str, optional
+        Name used in error messages.
+    base_dir : pathlib.Path, optional
+        Folder that relative paths in the model (spectrum files) are relative to.
+
+    Returns
+    -------
+    ModelFile
+
+    Raises
+    ------
+    FreestandError
+        For malformed TOML or any invalid field.
+    """
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as error:
+        raise FreestandError(
+            f"is not valid TOML ({error}); fix the syntax at that line", source=source
+        ) from None
+    gravity_value = data.get("gravity", 9.81)
+    gravity = to_si(gravity_value, "acceleration", field="gravity", source=source, gravity=9.81)
+    if not 0 < gravity < 100:
+        raise FreestandError(
+            f"{gravity_value!r} is not a plausible gravitational acceleration; give it in "
+            "m/s^2, e.g. 9.81",
+            source=source,
+            field="gravity",
+        )
+    try:
+        spec = _ModelSpec.model_validate(data, context={"source": source, "gravity": gravity})
+    except ValidationError as error:
+        raise _translate(error, data, source) from None
+
+    configurations = []
+    for index, configuration in enumerate(spec.configuration):
+        if configuration.block is not None:
+            blocks = tuple(block.to_block() for block in configuration.block)
+        else:
+            try:
+                blocks = paper_notation_blocks(configuration.paper)
+            except ValueError as error:
+                raise FreestandError(
+                    str(error),
+                    source=source,
+                    field=f"configuration[{index}] ({configuration.name!r}).paper",
+                ) from None
+        configurations.append(Stack(name=configuration.name, blocks=blocks))
+    excitations = tuple(
+        Excitation(name=e.name, horizontal=float(e.horizontal), vertical=float(e.vertical))
+        for e in spec.excitation
+    )
+    sections = {}
+    if spec.spectrum is not None:
+        sections["spectrum"] = spec.spectrum
+    if spec.beam is not None:
+        sections["beam"] = spec.beam
+    return ModelFile(
+        name=spec.name,
+        gravity=gravity,
+        excitations=excitations,
+        configurations=tuple(configurations),
+        source=source,
+        sha256=hashlib.sha256(text.encode()).hexdigest(),
+        base_dir=base_dir or Path.cwd(),
+        sections=sections,
+    )
+
+
+def load_model(path: str | Path) -> ModelFile:
+    """Read and validate a model file.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The TOML model file.
+
+    Returns
+    -------
+    ModelFile
+
+    Raises
+    ------
+    FreestandError
+        If the file cannot be read, is not TOML or has an invalid field.
+    """
+    path = Path(path)
+    try:
+        raw = path.read_bytes()
+    except OSError as error:
+        raise FreestandError(
+            f"cannot be read ({error.strerror}); check the path", source=str(path)
+        ) from None
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError:
+        raise FreestandError("is not UTF-8 text; save it as UTF-8 TOML", source=str(path)) from None
+    model = load_model_text(text, source=str(path), base_dir=path.resolve().parent)
+    return ModelFile(
+        name=model.name,
+        gravity=model.gravity,
+        excitations=model.excitations,
+        configurations=model.configurations,
+        source=model.source,
+        sha256=hashlib.sha256(raw).hexdigest(),
+        base_dir=model.base_dir,
+        sections=model.sections,
+    )

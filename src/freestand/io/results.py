@@ -1,0 +1,76 @@
+"""Results as JSON-ready documents (``--json`` output, reports)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from freestand.core.screening import BlockState, InitialMotion
+
+
+def _sense(sense: int) -> str:
+    return "+" if sense > 0 else "-"
+
+
+def block_state_document(state: BlockState) -> dict:
+    """One block's state: motion, accelerations [m/s^2, rad/s^2], base forces [N]."""
+    return {
+        "name": state.name,
+        "motion": state.motion.value,
+        "pivot": state.pivot,
+        "slide_direction": state.slide_direction,
+        "acceleration": {
+            "x": state.acceleration_x,
+            "z": state.acceleration_z,
+            "angular": state.angular_acceleration,
+        },
+        "base": {
+            "left": state.base_normal_left,
+            "right": state.base_normal_right,
+            "friction": state.base_tangential,
+        },
+    }
+
+
+def initial_motion_document(case: InitialMotion) -> dict:
+    """One screening case (configuration, excitation, sense) as a dict."""
+    document = {
+        "configuration": case.configuration,
+        "excitation": case.excitation,
+        "sense": _sense(case.sense),
+        "horizontal": case.horizontal,
+        "vertical": case.vertical,
+        "status": case.status,
+        "ambiguous": case.ambiguous,
+        "paper_case": case.paper_case,
+        "blocks": [block_state_document(state) for state in case.blocks],
+    }
+    if len(case.alternatives) > 1:
+        document["alternatives"] = [
+            [block_state_document(state) for state in alternative]
+            for alternative in case.alternatives
+        ]
+    if case.diagnostics is not None:
+        document["diagnostics"] = {
+            "modes_tried": case.diagnostics.modes_tried,
+            "singular_modes": case.diagnostics.singular_modes,
+            "kinetic_only_modes": case.diagnostics.kinetic_only_modes,
+            "relaxed": case.diagnostics.relaxed,
+            "rule": case.diagnostics.rule,
+        }
+    return document
+
+
+def screening_document(model_name: str, cases: Sequence[InitialMotion], gravity: float) -> dict:
+    """The ``freestand screen --json`` document.
+
+    Conventions: ``sense`` is the sense of the horizontal inertial force along
+    x; accelerations are relative to the support in the global frame (x
+    right, z up, angular counter-clockwise); ``base`` holds the forces on the
+    block from the body below: normal forces at its left and right contact [N]
+    and the total tangential force [N], +x positive.
+    """
+    return {
+        "model": model_name,
+        "gravity": gravity,
+        "cases": [initial_motion_document(case) for case in cases],
+    }
