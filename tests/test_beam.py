@@ -220,8 +220,13 @@ def test_exact_agrees_with_fine_finite_elements(beam, fraction):
     ],
 )
 def test_bad_beam_data_is_rejected(changes, field):
-    data = {"span": 9.8, "youngs_modulus": 2.1e11, "second_moment": 0.014, "mass": 1.0,
-            "load_mass": 1.0} | changes
+    data = {
+        "span": 9.8,
+        "youngs_modulus": 2.1e11,
+        "second_moment": 0.014,
+        "mass": 1.0,
+        "load_mass": 1.0,
+    } | changes
     with pytest.raises(FreestandError) as info:
         SimplySupportedBeam(**data)
     assert info.value.field == field
@@ -247,8 +252,12 @@ def test_sweep_adds_the_parking_ends_and_mid_span():
 
 def test_jump_check_bookkeeping():
     sweep = frequency_sweep(CRANE, points=99)
-    spectrum = Spectrum(np.array([1.0, 11.0, 11.5, 100.0]), np.array([2.0, 12.0, 12.0, 2.0]),
-                        direction="horizontal", label="test")
+    spectrum = Spectrum(
+        np.array([1.0, 11.0, 11.5, 100.0]),
+        np.array([2.0, 12.0, 12.0, 2.0]),
+        direction="horizontal",
+        label="test",
+    )
     check = jump_check(sweep, spectrum, 9.81, parking=(1.33, 8.47), basis="exact")
     assert check.notes and "vertical" in check.notes[0]
     assert not check.considered[0] and check.verdict[0] == "not parked"

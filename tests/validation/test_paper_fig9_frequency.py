@@ -121,7 +121,7 @@ def test_cart_may_jump_when_parked_near_mid_span(bridge, vertical_stand_in):
     assert check.status == "jump possible"
     assert SPAN / 2 in check.positions_at_risk
     assert check.minimum_margin <= 1e-9 * 9.81
-    (first, last), = check.risk_intervals
+    ((first, last),) = check.risk_intervals
     # Dunkerley's frequency is 12 Hz (end of the plateau) at about 3 m from a support.
     assert first == pytest.approx(3.0, abs=0.06)
     assert last == pytest.approx(SPAN - 3.0, abs=0.06)

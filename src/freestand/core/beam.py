@@ -361,9 +361,7 @@ def _exact_angular_frequency_squared(beam: SimplySupportedBeam, a: float, modes:
     stiffness = beam.bending_stiffness
     load_mass = beam.load_mass
     rotary = beam.effective_rotary_inertia
-    omega1_sq = (
-        math.pi**4 * stiffness / (beam.mass * span**3) if beam.mass > 0 else math.inf
-    )
+    omega1_sq = math.pi**4 * stiffness / (beam.mass * span**3) if beam.mass > 0 else math.inf
     if load_mass == 0 and rotary == 0:
         return omega1_sq
     n = np.arange(1, modes + 1, dtype=float)
@@ -492,8 +490,9 @@ def _finite_element_single(beam: SimplySupportedBeam, a: float, elements: int) -
     stiffness = np.zeros((2 * count, 2 * count))
     mass = np.zeros_like(stiffness)
     for e in range(count - 1):
-        k_e, m_e = _hermite_matrices(nodes[e + 1] - nodes[e], beam.bending_stiffness,
-                                     beam.mass_per_length)
+        k_e, m_e = _hermite_matrices(
+            nodes[e + 1] - nodes[e], beam.bending_stiffness, beam.mass_per_length
+        )
         block = slice(2 * e, 2 * e + 4)
         stiffness[block, block] += k_e
         mass[block, block] += m_e
@@ -502,10 +501,15 @@ def _finite_element_single(beam: SimplySupportedBeam, a: float, elements: int) -
     e = min(int(np.searchsorted(nodes, a, side="right")) - 1, count - 2)
     h = nodes[e + 1] - nodes[e]
     t = (a - nodes[e]) / h
-    shape = np.array([1 - 3 * t**2 + 2 * t**3, h * (t - 2 * t**2 + t**3), 3 * t**2 - 2 * t**3,
-                      h * (t**3 - t**2)])
-    slope = np.array([6 * t**2 - 6 * t, h * (1 - 4 * t + 3 * t**2), 6 * t - 6 * t**2,
-                      h * (3 * t**2 - 2 * t)]) / h
+    shape = np.array(
+        [1 - 3 * t**2 + 2 * t**3, h * (t - 2 * t**2 + t**3), 3 * t**2 - 2 * t**3, h * (t**3 - t**2)]
+    )
+    slope = (
+        np.array(
+            [6 * t**2 - 6 * t, h * (1 - 4 * t + 3 * t**2), 6 * t - 6 * t**2, h * (3 * t**2 - 2 * t)]
+        )
+        / h
+    )
     block = slice(2 * e, 2 * e + 4)
     mass[block, block] += beam.load_mass * np.outer(shape, shape)
     mass[block, block] += beam.effective_rotary_inertia * np.outer(slope, slope)
@@ -806,8 +810,9 @@ def jump_check(
     elif basis == "exact":
         low = high = sweep.exact
     else:
-        low, high = np.minimum(sweep.dunkerley, sweep.exact), np.maximum(
-            sweep.dunkerley, sweep.exact
+        low, high = (
+            np.minimum(sweep.dunkerley, sweep.exact),
+            np.maximum(sweep.dunkerley, sweep.exact),
         )
     acceleration = np.array(
         [_band_maximum(vertical_spectrum, lo, hi) for lo, hi in zip(low, high, strict=True)]

@@ -94,7 +94,7 @@ def parse_beam_section(data: dict, *, source: str, gravity: float = 9.81) -> Bea
     for key in data:
         if key not in known:
             raise FreestandError(
-                f"unknown key {key!r}; the [beam] section takes {', '.join(sorted(known))}",
+                f"unknown key {key!r}; remove it or give one of {', '.join(sorted(known))}",
                 source=source,
                 field=f"beam.{key}",
             )
@@ -152,8 +152,9 @@ def _parse_parking(
         raise FreestandError(f"missing; {fix}", source=source, field=field_name)
     raw = data["parking"]
     if isinstance(raw, str) or not isinstance(raw, list | tuple) or len(raw) != 2:
-        raise FreestandError(f"{raw!r} is not a pair of lengths; {fix}", source=source,
-                             field=field_name)
+        raise FreestandError(
+            f"{raw!r} is not a pair of lengths; {fix}", source=source, field=field_name
+        )
     first, last = (
         to_si(item, "length", field=f"{field_name}[{i}]", source=source, gravity=gravity)
         for i, item in enumerate(raw)

@@ -30,7 +30,7 @@ def plot_frequency_sweep(
         ``jump`` when not given.
     jump : JumpCheck, optional
         A jump check on the same positions: positions where the cart may jump
-        are marked on the lower curve.
+        are marked on the lower curve (a thick red stretch).
     vertical_spectrum : Spectrum, optional
         The vertical spectrum of the check: the frequencies at which it
         reaches ``g`` (``jump.gravity``, else 9.81 m/s^2) are shaded.
@@ -81,13 +81,16 @@ def _mark_jump(axes, sweep: FrequencySweep, jump: JumpCheck) -> None:
     ):
         raise ValueError("the jump check was made on other positions than the sweep")
     if jump.at_risk.any():
+        lower = np.minimum(sweep.dunkerley, sweep.exact)
         axes.plot(
-            jump.position[jump.at_risk],
-            np.minimum(sweep.dunkerley, sweep.exact)[jump.at_risk],
-            ls="none",
-            marker="x",
-            markersize=5,
+            jump.position,
+            np.where(jump.at_risk, lower, np.nan),
             color="C3",
+            lw=6.0,
+            alpha=0.45,
+            marker="o",
+            markersize=3.0,
+            solid_capstyle="round",
             label="cart may jump (S_a >= g)",
         )
 
@@ -99,8 +102,9 @@ def _shade_reaching_band(axes, spectrum: Spectrum, gravity: float, top: float) -
     edges = np.flatnonzero(np.diff(np.concatenate([[0], reaching.astype(int), [0]])))
     label = "spectrum reaches g"
     for start, stop in zip(edges[::2], edges[1::2], strict=True):
-        axes.axhspan(frequency[start], frequency[stop - 1], color="C3", alpha=0.12, zorder=0,
-                     label=label)
+        axes.axhspan(
+            frequency[start], frequency[stop - 1], color="C3", alpha=0.12, zorder=0, label=label
+        )
         label = None
 
 
