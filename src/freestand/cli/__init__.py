@@ -24,9 +24,10 @@ app = typer.Typer(
 
 
 def _register() -> None:
-    from freestand.cli import screen
+    from freestand.cli import frequency, screen
 
     screen.register(app)
+    frequency.register(app)
 
 
 _register()

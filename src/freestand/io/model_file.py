@@ -23,7 +23,10 @@ from typing import Any
 from pydantic import BaseModel, ConfigDict, ValidationError, field_validator, model_validator
 
 from freestand.core.model import Block, Excitation, Friction, Sliding, Stack
+from freestand.core.spectra import Spectrum
 from freestand.errors import FreestandError
+from freestand.io.beam_section import BeamSection, parse_beam_section
+from freestand.io.spectrum_input import parse_spectrum_sections
 from freestand.io.units import to_si
 
 Quantity = float | int | str
@@ -45,9 +48,11 @@ class ModelFile:
         File name the model was read from (``"<string>"`` for text).
     sha256 : str
         Hash of the file's bytes.
-    sections : dict
-        Further top-level sections (``spectrum``, ``beam``...) as read, for
-        the checks that use them.
+    spectra : dict of str to Spectrum
+        The ``[[spectrum]]`` tables, by name.
+    beam : BeamSection or None
+        The ``[beam]`` table: the bridge as a simply supported beam and the
+        cart's parking range (paper section 6).
     """
 
     name: str
@@ -57,7 +62,12 @@ class ModelFile:
     source: str = "<string>"
     sha256: str = ""
     base_dir: Path = field(default_factory=Path.cwd)
-    sections: dict = field(default_factory=dict)
+    spectra: dict = field(default_factory=dict)
+    beam: BeamSection | None = None
+
+    def spectrum(self, direction: str) -> Spectrum | None:
+        """The model's first spectrum for ``direction`` ("horizontal"/"vertical"), if any."""
+        return next((s for s in self.spectra.values() if s.direction == direction), None)
 
     def configuration(self, name: str) -> Stack:
         """The configuration called ``name``, or a FreestandError listing the names."""
@@ -535,11 +545,15 @@ def load_model_text(
         Excitation(name=e.name, horizontal=float(e.horizontal), vertical=float(e.vertical))
         for e in spec.excitation
     )
-    sections = {}
-    if spec.spectrum is not None:
-        sections["spectrum"] = spec.spectrum
-    if spec.beam is not None:
-        sections["beam"] = spec.beam
+    base_dir = base_dir or Path.cwd()
+    spectra = (
+        parse_spectrum_sections(spec.spectrum, source=source, base_dir=base_dir, gravity=gravity)
+        if spec.spectrum is not None
+        else {}
+    )
+    beam = (
+        parse_beam_section(spec.beam, source=source, gravity=gravity) if spec.beam is not None else None
+    )
     return ModelFile(
         name=spec.name,
         gravity=gravity,
@@ -547,8 +561,9 @@ def load_model_text(
         configurations=tuple(configurations),
         source=source,
         sha256=hashlib.sha256(text.encode()).hexdigest(),
-        base_dir=base_dir or Path.cwd(),
-        sections=sections,
+        base_dir=base_dir,
+        spectra=spectra,
+        beam=beam,
     )
 
 
@@ -589,5 +604,6 @@ def load_model(path: str | Path) -> ModelFile:
         source=model.source,
         sha256=hashlib.sha256(raw).hexdigest(),
         base_dir=model.base_dir,
-        sections=model.sections,
+        spectra=model.spectra,
+        beam=model.beam,
     )

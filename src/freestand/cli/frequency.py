@@ -1,0 +1,132 @@
+"""``freestand frequency``: vertical frequency of the bridge and the jump check (paper section 6)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import typer
+from rich.table import Table
+
+from freestand.cli.common import console, parse_numbers, resolve_spectrum
+from freestand.core.beam import frequency_sweep, jump_check
+from freestand.errors import FreestandError
+from freestand.io.model_file import load_model
+
+
+def frequency(
+    model_file: Path = typer.Argument(..., help="Model file (TOML) with a [beam] section."),
+    positions: str = typer.Option(
+        None, "--positions", help="Cart positions from the left support [m], e.g. 1.33,4.9."
+    ),
+    spectrum: str = typer.Option(
+        None,
+        "--spectrum",
+        help="Vertical spectrum: a model spectrum's name, a CSV file, or "
+        "'rg1.60:pga=0.3g,damping=5%,direction=vertical' / 'en1998:ag=...,direction=vertical'. "
+        "Default: the model's vertical spectrum.",
+    ),
+    plot: Path = typer.Option(None, "--plot", help="Folder to write the Fig. 9 analogue to (PNG, SVG)."),
+    as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
+) -> None:
+    """Lowest vertical natural frequency against the cart's position, and whether the cart may jump."""
+    model = load_model(model_file)
+    if model.beam is None:
+        raise FreestandError(
+            "has no [beam] section; add span, youngs_modulus, second_moment, mass, load_mass "
+            "and parking (see the README)",
+            source=model.source,
+        )
+    beam, parking = model.beam.beam, model.beam.parking
+    values = parse_numbers(positions, "--positions", "m")
+    if values is not None:
+        for value in values:
+            if not 0 <= value <= beam.span:
+                raise FreestandError(
+                    f"position {value} m is outside the span 0 .. {beam.span} m; give positions "
+                    "measured from the left support",
+                    source="--positions",
+                )
+        sweep = frequency_sweep(beam, np.array(values), parking=parking)
+    else:
+        sweep = frequency_sweep(beam, parking=parking)
+    vertical = resolve_spectrum(spectrum, model, "vertical")
+    check = jump_check(sweep, vertical, model.gravity, parking=parking) if vertical else None
+
+    if plot is not None:
+        from freestand.plot.frequency import plot_frequency_sweep, save_frequency_figure
+
+        plot.mkdir(parents=True, exist_ok=True)
+        figure = plot_frequency_sweep(sweep, parking=parking, jump=check, vertical_spectrum=vertical)
+        written = save_frequency_figure(figure, plot / "fig9_frequency")
+    else:
+        written = []
+
+    if as_json:
+        rows = []
+        for k, position in enumerate(sweep.position):
+            row = {
+                "position": float(position),
+                "dunkerley": float(sweep.dunkerley[k]),
+                "exact": float(sweep.exact[k]),
+            }
+            if check is not None:
+                row.update(
+                    spectral_acceleration=float(check.spectral_acceleration[k]),
+                    ratio_to_g=float(check.ratio[k]),
+                    verdict=str(check.verdict[k]),
+                )
+            rows.append(row)
+        document = {"model": model.name, "parking": list(parking), "positions": rows}
+        if check is not None:
+            document["jump_check"] = {
+                "spectrum": check.spectrum_label,
+                "basis": check.basis,
+                "status": check.status,
+                "positions_at_risk": [float(p) for p in check.positions_at_risk],
+                "risk_intervals": [list(run) for run in check.risk_intervals],
+                "minimum_margin": check.minimum_margin,
+                "minimum_margin_position": check.minimum_margin_position,
+                "notes": list(check.notes),
+            }
+        document["figures"] = [str(path) for path in written]
+        typer.echo(json.dumps(document, indent=2))
+        return
+
+    out = console()
+    out.print(f"[bold]{model.name}[/]: lowest vertical natural frequency of the bridge (paper section 6)")
+    table = Table(title="Frequency against the cart's position (paper Fig. 9)")
+    for header in ("position [m]", "Dunkerley [Hz]", "exact [Hz]", "S_a,v [m/s^2]", "S_a,v / g", "verdict"):
+        table.add_column(header, justify="right" if "[" in header or "/" in header else "left")
+    step = max(1, len(sweep.position) // 25) if values is None else 1
+    for k in range(0, len(sweep.position), step):
+        cells = [f"{sweep.position[k]:.2f}", f"{sweep.dunkerley[k]:.2f}", f"{sweep.exact[k]:.2f}"]
+        if check is not None:
+            cells += [f"{check.spectral_acceleration[k]:.2f}", f"{check.ratio[k]:.2f}", str(check.verdict[k])]
+        else:
+            cells += ["", "", "no vertical spectrum"]
+        table.add_row(*cells, style="red" if check is not None and check.at_risk[k] else None)
+    out.print(table)
+    low, high = sweep.frequency_range(parking, method="dunkerley")
+    exact_low, exact_high = sweep.frequency_range(parking, method="exact")
+    out.print(
+        f"Parking range {parking[0]:g}-{parking[1]:g} m: Dunkerley {low:.1f}-{high:.1f} Hz, "
+        f"exact {exact_low:.1f}-{exact_high:.1f} Hz (Dunkerley is a lower bound)."
+    )
+    if check is not None:
+        runs = ", ".join(f"{a:.2f}-{b:.2f} m" for a, b in check.risk_intervals) or "none"
+        out.print(f"Vertical spectrum: {check.spectrum_label}")
+        out.print(
+            f"Verdict: [bold]{check.status}[/]; positions at risk: {runs}; smallest margin "
+            f"g - S_a = {check.minimum_margin:.2f} m/s^2 at {check.minimum_margin_position:.2f} m."
+        )
+        for note in check.notes:
+            out.print(f"[yellow]note:[/] {note}")
+    for path in written:
+        out.print(f"wrote {path}")
+
+
+def register(app: typer.Typer) -> None:
+    """Add the command of this module to ``app``."""
+    app.command("frequency")(frequency)
