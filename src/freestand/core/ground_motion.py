@@ -1,0 +1,694 @@
+"""Ground-motion records: support accelerations sampled at a uniform time step.
+
+A :class:`GroundMotion` holds the horizontal support acceleration and,
+optionally, the vertical one, sampled at t_i = i dt. Between samples the
+acceleration is taken to vary linearly (the piecewise-linear representation
+on which the exact response-spectrum recursion and the sliding solver rest).
+Before t = 0 and after the last sample the support is at rest: the record is
+followed by zero samples, so its last value ramps to zero over one step.
+
+Sign conventions (the same as :class:`freestand.core.model.Excitation`):
+
+- ``horizontal``: support acceleration along +x [m/s^2];
+- ``vertical``: *downward* support acceleration [m/s^2], so that a block of
+  mass m on the support has the apparent weight m (g - a_v) (paper section 2).
+  Instruments record vertical motion positive upward; the record readers in
+  :mod:`freestand.io.records` change the sign when they load such a component.
+
+The module also builds the analytic pulses (rectangular, half-sine, one-sine,
+one-cosine) as sampled records, and a deterministic synthetic record for tests
+and demonstrations.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+
+def _frozen_array(values, name: str) -> np.ndarray:
+    array = np.array(values, dtype=float, copy=True)
+    if array.ndim != 1:
+        raise ValueError(f"{name} must be a 1-D array")
+    array.flags.writeable = False
+    return array
+
+
+@dataclass(frozen=True)
+class GroundMotion:
+    """A support-acceleration record at a uniform time step.
+
+    Parameters
+    ----------
+    dt : float
+        Time step [s], positive.
+    horizontal : numpy.ndarray
+        Horizontal support acceleration a_h(t_i) [m/s^2] at t_i = i dt, at
+        least two samples, all finite.
+    vertical : numpy.ndarray or None, optional
+        Downward support acceleration a_v(t_i) [m/s^2] (positive down: the
+        weight becomes m (g - a_v)), same length as ``horizontal``; ``None``
+        when the record has no vertical component.
+    name : str, optional
+        Record name used in labels.
+    metadata : dict, optional
+        Free-form provenance (source file, header lines, scale factor...).
+    """
+
+    dt: float
+    horizontal: np.ndarray
+    vertical: np.ndarray | None = None
+    name: str = ""
+    metadata: dict = field(default_factory=dict, compare=False)
+
+    def __post_init__(self) -> None:
+        dt = float(self.dt)
+        if not (dt > 0 and math.isfinite(dt)):
+            raise ValueError(f"dt must be positive and finite, got {self.dt!r}")
+        horizontal = _frozen_array(self.horizontal, "horizontal")
+        if horizontal.size < 2:
+            raise ValueError("a record needs at least two samples")
+        if not np.all(np.isfinite(horizontal)):
+            raise ValueError("the horizontal acceleration contains non-finite values")
+        object.__setattr__(self, "dt", dt)
+        object.__setattr__(self, "horizontal", horizontal)
+        if self.vertical is not None:
+            vertical = _frozen_array(self.vertical, "vertical")
+            if vertical.shape != horizontal.shape:
+                raise ValueError(
+                    f"vertical has {vertical.size} samples, horizontal {horizontal.size}; "
+                    "they must have the same length (see combine_components)"
+                )
+            if not np.all(np.isfinite(vertical)):
+                raise ValueError("the vertical acceleration contains non-finite values")
+            object.__setattr__(self, "vertical", vertical)
+
+    # ------------------------------------------------------------------ basics
+    @property
+    def n_samples(self) -> int:
+        """Number of samples [-]."""
+        return int(self.horizontal.size)
+
+    @property
+    def time(self) -> np.ndarray:
+        """Sample times t_i = i dt [s]."""
+        return np.arange(self.n_samples) * self.dt
+
+    @property
+    def duration(self) -> float:
+        """Time of the last sample, (n - 1) dt [s]."""
+        return (self.n_samples - 1) * self.dt
+
+    def component(self, name: str) -> np.ndarray:
+        """The ``"horizontal"`` or ``"vertical"`` acceleration array [m/s^2]."""
+        if name == "horizontal":
+            return self.horizontal
+        if name == "vertical":
+            if self.vertical is None:
+                raise ValueError(f"record {self.name!r} has no vertical component")
+            return self.vertical
+        raise ValueError(f"component must be 'horizontal' or 'vertical', got {name!r}")
+
+    # ------------------------------------------------------------- peak values
+    @property
+    def peak_horizontal(self) -> float:
+        """Peak horizontal ground acceleration max |a_h| [m/s^2]."""
+        return float(np.max(np.abs(self.horizontal)))
+
+    @property
+    def peak_vertical(self) -> float | None:
+        """Peak vertical ground acceleration max |a_v| [m/s^2], None without one."""
+        return None if self.vertical is None else float(np.max(np.abs(self.vertical)))
+
+    @property
+    def peak_downward(self) -> float | None:
+        """Largest downward support acceleration max(a_v, 0) [m/s^2], None without one."""
+        return None if self.vertical is None else float(max(np.max(self.vertical), 0.0))
+
+    def velocity(self, component: str = "horizontal") -> np.ndarray:
+        """Support velocity at the samples [m/s], from rest, exact for linear segments.
+
+        v_{i+1} = v_i + (a_i + a_{i+1}) dt / 2. No baseline correction.
+        """
+        a = self.component(component)
+        v = np.zeros_like(a)
+        v[1:] = np.cumsum(0.5 * (a[:-1] + a[1:]) * self.dt)
+        return v
+
+    def displacement(self, component: str = "horizontal") -> np.ndarray:
+        """Support displacement at the samples [m], from rest, exact for linear segments.
+
+        d_{i+1} = d_i + v_i dt + (2 a_i + a_{i+1}) dt^2 / 6. No baseline correction.
+        """
+        a = self.component(component)
+        v = self.velocity(component)
+        d = np.zeros_like(a)
+        d[1:] = np.cumsum(v[:-1] * self.dt + (2.0 * a[:-1] + a[1:]) * self.dt**2 / 6.0)
+        return d
+
+    @property
+    def peak_horizontal_velocity(self) -> float:
+        """Peak horizontal ground velocity [m/s] (no baseline correction)."""
+        return float(np.max(np.abs(self.velocity("horizontal"))))
+
+    @property
+    def peak_horizontal_displacement(self) -> float:
+        """Peak horizontal ground displacement [m] (no baseline correction)."""
+        return float(np.max(np.abs(self.displacement("horizontal"))))
+
+    # ----------------------------------------------------------- interpolation
+    def _at(self, values: np.ndarray, t) -> np.ndarray | float:
+        times = np.arange(values.size + 1) * self.dt
+        padded = np.append(values, 0.0)
+        t_arr = np.asarray(t, dtype=float)
+        out = np.interp(t_arr, times, padded, left=0.0, right=0.0)
+        return float(out) if np.ndim(t) == 0 else out
+
+    def horizontal_at(self, t) -> np.ndarray | float:
+        """Horizontal acceleration [m/s^2] at times ``t`` [s] (linear interpolation).
+
+        Zero before t = 0; after the last sample it ramps to zero over one step.
+        """
+        return self._at(self.horizontal, t)
+
+    def vertical_at(self, t) -> np.ndarray | float:
+        """Downward acceleration [m/s^2] at times ``t`` [s] (linear interpolation).
+
+        Zero without a vertical component, before t = 0 and (after a one-step
+        ramp) after the record.
+        """
+        if self.vertical is None:
+            t_arr = np.zeros_like(np.asarray(t, dtype=float))
+            return float(t_arr) if np.ndim(t) == 0 else t_arr
+        return self._at(self.vertical, t)
+
+    # ------------------------------------------------------------ new records
+    def _replace(self, **changes) -> GroundMotion:
+        values = {
+            "dt": self.dt,
+            "horizontal": self.horizontal,
+            "vertical": self.vertical,
+            "name": self.name,
+            "metadata": dict(self.metadata),
+        }
+        values.update(changes)
+        return GroundMotion(**values)
+
+    def scaled(self, factor: float) -> GroundMotion:
+        """Both components multiplied by ``factor`` [-]; metadata records the factor."""
+        if not math.isfinite(factor):
+            raise ValueError(f"scale factor must be finite, got {factor!r}")
+        metadata = dict(self.metadata)
+        metadata["scale_factor"] = metadata.get("scale_factor", 1.0) * factor
+        return self._replace(
+            horizontal=self.horizontal * factor,
+            vertical=None if self.vertical is None else self.vertical * factor,
+            metadata=metadata,
+        )
+
+    def scaled_to_peak(self, target: float, component: str = "horizontal") -> GroundMotion:
+        """Scale both components so that the peak of ``component`` is ``target`` [m/s^2].
+
+        Parameters
+        ----------
+        target : float
+            Peak ground acceleration wanted [m/s^2], non-negative.
+        component : str, optional
+            ``"horizontal"`` (default) or ``"vertical"``: the component whose peak
+            is matched; the other is scaled by the same factor.
+        """
+        if not (target >= 0 and math.isfinite(target)):
+            raise ValueError(f"target peak must be non-negative and finite, got {target!r}")
+        peak = float(np.max(np.abs(self.component(component))))
+        if peak == 0.0:
+            raise ValueError(f"record {self.name!r} is all zero in {component}; cannot scale it")
+        return self.scaled(target / peak)
+
+    def scaled_to_spectral(
+        self,
+        target: float,
+        frequency: float,
+        damping: float = 0.05,
+        component: str = "horizontal",
+    ) -> GroundMotion:
+        """Scale both components so that the pseudo-acceleration at one frequency is ``target``.
+
+        Parameters
+        ----------
+        target : float
+            Spectral pseudo-acceleration wanted [m/s^2], non-negative.
+        frequency : float
+            Oscillator natural frequency [Hz].
+        damping : float, optional
+            Damping ratio [-] (default 0.05).
+        component : str, optional
+            Component whose spectrum is matched (default ``"horizontal"``).
+
+        Notes
+        -----
+        The response of a linear oscillator is linear in the record, so one
+        factor target / PSA(f) matches it exactly (PSA by
+        :func:`freestand.core.response_spectrum.spectral_response`).
+        """
+        from freestand.core.response_spectrum import spectral_response
+
+        if not (target >= 0 and math.isfinite(target)):
+            raise ValueError(f"target spectral value must be non-negative, got {target!r}")
+        psa = float(
+            spectral_response(
+                self, None, [frequency], damping, component=component
+            ).pseudo_acceleration[0]
+        )
+        if psa == 0.0:
+            raise ValueError(f"record {self.name!r} has zero response at {frequency} Hz")
+        return self.scaled(target / psa)
+
+    def with_vertical(self, vertical: np.ndarray | None) -> GroundMotion:
+        """The same record with the downward acceleration ``vertical`` [m/s^2] (or none)."""
+        return self._replace(vertical=vertical)
+
+    def with_trailing_zeros(self, total_duration: float) -> GroundMotion:
+        """The record followed by zero samples up to ``total_duration`` [s] (if longer)."""
+        n_total = int(round(total_duration / self.dt)) + 1
+        extra = max(0, n_total - self.n_samples)
+        if extra == 0:
+            return self
+        return self._replace(
+            horizontal=np.concatenate([self.horizontal, np.zeros(extra)]),
+            vertical=None
+            if self.vertical is None
+            else np.concatenate([self.vertical, np.zeros(extra)]),
+        )
+
+
+def resample(acceleration: np.ndarray, dt: float, new_dt: float) -> np.ndarray:
+    """Linear interpolation of a record onto the step ``new_dt`` [s], same end time.
+
+    Exact for the piecewise-linear record when ``dt`` is a whole multiple of
+    ``new_dt``. Samples run from 0 to the last multiple of ``new_dt`` not after
+    the record's end.
+    """
+    acceleration = np.asarray(acceleration, dtype=float)
+    end = (acceleration.size - 1) * dt
+    n_new = int(math.floor(end / new_dt + 1e-9)) + 1
+    return np.interp(np.arange(n_new) * new_dt, np.arange(acceleration.size) * dt, acceleration)
+
+
+def combine_components(
+    horizontal: np.ndarray,
+    horizontal_dt: float,
+    vertical: np.ndarray,
+    vertical_dt: float,
+    *,
+    name: str = "",
+    metadata: dict | None = None,
+) -> GroundMotion:
+    """One record from a horizontal and a vertical component sampled separately.
+
+    Parameters
+    ----------
+    horizontal : numpy.ndarray
+        Horizontal acceleration [m/s^2] at steps of ``horizontal_dt`` [s].
+    horizontal_dt : float
+        Its time step [s].
+    vertical : numpy.ndarray
+        Downward acceleration [m/s^2] at steps of ``vertical_dt`` [s].
+    vertical_dt : float
+        Its time step [s].
+    name : str, optional
+        Name of the combined record.
+    metadata : dict, optional
+        Provenance; the rule applied is added under ``"combination"``.
+
+    Returns
+    -------
+    GroundMotion
+        Rule: the common step is the smaller of the two; a component with a
+        coarser step is linearly interpolated onto it (exact when its step is
+        a whole multiple of the finer one); the shorter component is followed
+        by zeros (support at rest) up to the length of the longer one.
+    """
+    common_dt = min(horizontal_dt, vertical_dt)
+    rule = []
+    h = np.asarray(horizontal, dtype=float)
+    v = np.asarray(vertical, dtype=float)
+    if not math.isclose(horizontal_dt, common_dt, rel_tol=1e-9):
+        h = resample(h, horizontal_dt, common_dt)
+        rule.append(f"horizontal resampled from dt={horizontal_dt:g} s to {common_dt:g} s")
+    if not math.isclose(vertical_dt, common_dt, rel_tol=1e-9):
+        v = resample(v, vertical_dt, common_dt)
+        rule.append(f"vertical resampled from dt={vertical_dt:g} s to {common_dt:g} s")
+    n = max(h.size, v.size)
+    if h.size < n:
+        rule.append(f"horizontal padded with {n - h.size} zeros")
+        h = np.concatenate([h, np.zeros(n - h.size)])
+    if v.size < n:
+        rule.append(f"vertical padded with {n - v.size} zeros")
+        v = np.concatenate([v, np.zeros(n - v.size)])
+    metadata = dict(metadata or {})
+    metadata["combination"] = "; ".join(rule) if rule else "same step and length"
+    return GroundMotion(common_dt, h, v, name=name, metadata=metadata)
+
+
+# ---------------------------------------------------------------- pulses
+
+
+def _pulse_times(dt: float, pulse_duration: float, total_duration: float | None):
+    if not (dt > 0 and math.isfinite(dt)):
+        raise ValueError(f"dt must be positive, got {dt!r}")
+    if not (pulse_duration > 0 and math.isfinite(pulse_duration)):
+        raise ValueError(f"pulse duration must be positive, got {pulse_duration!r}")
+    total = pulse_duration if total_duration is None else float(total_duration)
+    if total < pulse_duration * (1 - 1e-12):
+        raise ValueError(f"total duration {total} s is shorter than the pulse ({pulse_duration} s)")
+    n = int(round(total / dt)) + 1
+    n = max(n, 2)
+    t = np.arange(n) * dt
+    inside = t <= pulse_duration * (1 + 1e-12) + 1e-12 * dt
+    return t, inside
+
+
+def _pulse_period(frequency, duration, cycles: float, kind: str) -> tuple[float, float]:
+    """(frequency [Hz], pulse duration [s]) from either one; ``cycles`` of the sine."""
+    if (frequency is None) == (duration is None):
+        raise ValueError(f"{kind}: give exactly one of frequency [Hz] or duration [s]")
+    if frequency is not None:
+        if not (frequency > 0 and math.isfinite(frequency)):
+            raise ValueError(f"{kind}: frequency must be positive, got {frequency!r}")
+        return float(frequency), cycles / float(frequency)
+    if not (duration > 0 and math.isfinite(duration)):
+        raise ValueError(f"{kind}: duration must be positive, got {duration!r}")
+    return cycles / float(duration), float(duration)
+
+
+def rectangular_pulse(
+    amplitude: float,
+    duration: float,
+    dt: float,
+    total_duration: float | None = None,
+    *,
+    name: str | None = None,
+) -> GroundMotion:
+    """A rectangular acceleration pulse as a sampled record.
+
+    Parameters
+    ----------
+    amplitude : float
+        Pulse acceleration a_p [m/s^2] (sign gives the direction).
+    duration : float
+        Pulse duration t_1 [s].
+    dt : float
+        Time step [s].
+    total_duration : float, optional
+        Record length [s], the pulse followed by zeros (default: the pulse).
+    name : str, optional
+        Record name.
+
+    Returns
+    -------
+    GroundMotion
+        a(t_i) = a_p for t_i <= t_1, 0 after (Housner 1963). With linear
+        interpolation the end of the pulse is a ramp over one step, so the
+        sampled pulse carries the impulse a_p (t_1' + dt / 2) with t_1' the
+        last sample time not after t_1: choose a small ``dt`` against t_1.
+    """
+    t, inside = _pulse_times(dt, duration, total_duration)
+    a = np.where(inside, float(amplitude), 0.0)
+    return GroundMotion(
+        dt,
+        a,
+        name=name or f"rectangular pulse {amplitude:g} m/s^2, {duration:g} s",
+        metadata={"pulse": "rectangular", "amplitude": amplitude, "pulse_duration": duration},
+    )
+
+
+def half_sine_pulse(
+    amplitude: float,
+    *,
+    frequency: float | None = None,
+    duration: float | None = None,
+    dt: float,
+    total_duration: float | None = None,
+    name: str | None = None,
+) -> GroundMotion:
+    """A half-sine pulse a_p sin(2 pi f t), 0 <= t <= 1 / (2 f), as a sampled record.
+
+    Parameters
+    ----------
+    amplitude : float
+        Peak acceleration a_p [m/s^2].
+    frequency : float, optional
+        Frequency f of the sine [Hz]; or give ``duration`` = 1 / (2 f) [s].
+    duration : float, optional
+        Pulse duration [s].
+    dt : float
+        Time step [s].
+    total_duration : float, optional
+        Record length [s] with trailing zeros (default: the pulse).
+    name : str, optional
+        Record name.
+
+    Notes
+    -----
+    Housner (1963); Makris and Roussos (2000), Geotechnique 50(3).
+    """
+    f, tp = _pulse_period(frequency, duration, 0.5, "half-sine pulse")
+    t, inside = _pulse_times(dt, tp, total_duration)
+    a = np.where(inside, amplitude * np.sin(2.0 * np.pi * f * t), 0.0)
+    return GroundMotion(
+        dt,
+        a,
+        name=name or f"half-sine pulse {amplitude:g} m/s^2, {f:g} Hz",
+        metadata={"pulse": "half-sine", "amplitude": amplitude, "frequency": f},
+    )
+
+
+def one_sine_pulse(
+    amplitude: float,
+    *,
+    frequency: float | None = None,
+    duration: float | None = None,
+    dt: float,
+    total_duration: float | None = None,
+    name: str | None = None,
+) -> GroundMotion:
+    """A one-sine (type A) pulse a_p sin(2 pi f t), 0 <= t <= 1 / f, as a sampled record.
+
+    Parameters
+    ----------
+    amplitude : float
+        Peak acceleration a_p [m/s^2].
+    frequency : float, optional
+        Pulse frequency f [Hz]; or give ``duration`` = 1 / f [s].
+    duration : float, optional
+        Pulse duration [s].
+    dt : float
+        Time step [s].
+    total_duration : float, optional
+        Record length [s] with trailing zeros (default: the pulse).
+    name : str, optional
+        Record name.
+
+    Notes
+    -----
+    Zhang and Makris (2001), J. Eng. Mech. 127(5), type-A pulse.
+    """
+    f, tp = _pulse_period(frequency, duration, 1.0, "one-sine pulse")
+    t, inside = _pulse_times(dt, tp, total_duration)
+    a = np.where(inside, amplitude * np.sin(2.0 * np.pi * f * t), 0.0)
+    return GroundMotion(
+        dt,
+        a,
+        name=name or f"one-sine pulse {amplitude:g} m/s^2, {f:g} Hz",
+        metadata={"pulse": "one-sine", "amplitude": amplitude, "frequency": f},
+    )
+
+
+def one_cosine_pulse(
+    amplitude: float,
+    *,
+    frequency: float | None = None,
+    duration: float | None = None,
+    dt: float,
+    total_duration: float | None = None,
+    name: str | None = None,
+) -> GroundMotion:
+    """A one-cosine (type B) pulse a_p cos(2 pi f t), 0 <= t <= 1 / f, as a sampled record.
+
+    Parameters
+    ----------
+    amplitude : float
+        Peak acceleration a_p [m/s^2].
+    frequency : float, optional
+        Pulse frequency f [Hz]; or give ``duration`` = 1 / f [s].
+    duration : float, optional
+        Pulse duration [s].
+    dt : float
+        Time step [s].
+    total_duration : float, optional
+        Record length [s] with trailing zeros (default: the pulse).
+    name : str, optional
+        Record name.
+
+    Notes
+    -----
+    Zhang and Makris (2001), J. Eng. Mech. 127(5), type-B pulse. The record
+    starts at a_p (a step at t = 0) and ends at a_p, after which it ramps to
+    zero over one step.
+    """
+    f, tp = _pulse_period(frequency, duration, 1.0, "one-cosine pulse")
+    t, inside = _pulse_times(dt, tp, total_duration)
+    a = np.where(inside, amplitude * np.cos(2.0 * np.pi * f * t), 0.0)
+    return GroundMotion(
+        dt,
+        a,
+        name=name or f"one-cosine pulse {amplitude:g} m/s^2, {f:g} Hz",
+        metadata={"pulse": "one-cosine", "amplitude": amplitude, "frequency": f},
+    )
+
+
+# ------------------------------------------------------- synthetic record
+
+
+def synthetic_acceleration(
+    *,
+    duration: float,
+    dt: float,
+    peak: float,
+    seed: int,
+    ground_frequency: float,
+    ground_damping: float = 0.6,
+    rise_time: float = 1.5,
+    strong_end: float = 6.0,
+    decay_rate: float = 0.5,
+    highpass_frequency: float = 0.2,
+) -> np.ndarray:
+    """A deterministic synthetic accelerogram [m/s^2] (filtered noise with an envelope).
+
+    Parameters
+    ----------
+    duration : float
+        Record length [s].
+    dt : float
+        Time step [s].
+    peak : float
+        Peak acceleration of the result [m/s^2].
+    seed : int
+        Seed of :func:`numpy.random.default_rng`; the same seed gives the same record.
+    ground_frequency : float
+        Kanai-Tajimi ground frequency f_g [Hz].
+    ground_damping : float, optional
+        Kanai-Tajimi ground damping zeta_g [-] (default 0.6).
+    rise_time, strong_end : float, optional
+        Envelope: (t / rise_time)^2 up to ``rise_time`` [s], 1 until
+        ``strong_end`` [s] (defaults 1.5 s, 6 s) ...
+    decay_rate : float, optional
+        ... then exp(-decay_rate (t - strong_end)) [1/s] (default 0.5).
+    highpass_frequency : float, optional
+        Corner of the zero-phase 4th-order Butterworth high-pass [Hz] that
+        removes the drift of velocity and displacement (default 0.2 Hz).
+
+    Returns
+    -------
+    numpy.ndarray
+        Accelerations at t_i = i dt, peak |a| = ``peak``.
+
+    Notes
+    -----
+    Procedure: (1) standard normal white noise from ``default_rng(seed)``;
+    (2) Kanai-Tajimi filter: the absolute acceleration of an oscillator
+    (f_g, zeta_g) on that noise (Kanai 1957; Tajimi 1960), computed with the
+    exact recursion of :func:`freestand.core.response_spectrum.oscillator_response`;
+    (3) multiplication by the envelope of Jennings, Housner and Tsai (1968);
+    (4) zero-phase Butterworth high-pass; (5) baseline correction: subtract
+    envelope (c0 + c1 t / T) with c0, c1 such that the final ground velocity and
+    displacement are zero; (6) scaling to ``peak``.
+    It imitates the character of a strong-motion record; it is not a recorded
+    earthquake.
+    """
+    from scipy.signal import butter, sosfiltfilt
+
+    from freestand.core.response_spectrum import oscillator_response
+
+    n = int(round(duration / dt)) + 1
+    t = np.arange(n) * dt
+    noise = np.random.default_rng(seed).standard_normal(n)
+    filtered = oscillator_response(noise, ground_frequency, ground_damping, dt)
+    a = filtered.absolute_acceleration
+    envelope = np.where(
+        t < rise_time,
+        (t / rise_time) ** 2,
+        np.where(t <= strong_end, 1.0, np.exp(-decay_rate * (t - strong_end))),
+    )
+    a = a * envelope
+    sos = butter(4, highpass_frequency, btype="highpass", fs=1.0 / dt, output="sos")
+    a = sosfiltfilt(sos, a)
+    # (5) baseline: subtract envelope * (c0 + c1 t) so that the support ends at
+    # rest where it started (final velocity and displacement zero)
+    basis = [envelope, envelope * t / t[-1]]
+    ends = np.array([_final_velocity_displacement(b, dt) for b in basis]).T
+    c = np.linalg.solve(ends, _final_velocity_displacement(a, dt))
+    a = a - c[0] * basis[0] - c[1] * basis[1]
+    return a * (peak / np.max(np.abs(a)))
+
+
+def _final_velocity_displacement(a: np.ndarray, dt: float) -> np.ndarray:
+    """Final velocity and displacement from rest of a piecewise-linear record."""
+    v = np.concatenate([[0.0], np.cumsum(0.5 * (a[:-1] + a[1:]) * dt)])
+    d_end = np.sum(v[:-1] * dt + (2.0 * a[:-1] + a[1:]) * dt**2 / 6.0)
+    return np.array([v[-1], d_end])
+
+
+def synthetic_ground_motion(
+    *,
+    duration: float = 15.0,
+    dt: float = 0.005,
+    horizontal_peak: float = 0.25 * 9.81,
+    vertical_peak: float | None = 0.25 * 9.81 * 2.0 / 3.0,
+    seed: int = 20240601,
+    horizontal_frequency: float = 2.5,
+    vertical_frequency: float = 6.0,
+) -> GroundMotion:
+    """The synthetic example record shipped with freestand (see :func:`synthetic_acceleration`).
+
+    Parameters
+    ----------
+    duration : float, optional
+        Record length [s] (default 15 s).
+    dt : float, optional
+        Time step [s] (default 0.005 s).
+    horizontal_peak : float, optional
+        Horizontal peak acceleration [m/s^2] (default 0.25 g with g = 9.81).
+    vertical_peak : float or None, optional
+        Vertical peak acceleration [m/s^2] (default 2/3 of the horizontal);
+        None for no vertical component.
+    seed : int, optional
+        Seed of the horizontal noise; the vertical uses ``seed + 1``.
+    horizontal_frequency, vertical_frequency : float, optional
+        Kanai-Tajimi ground frequencies [Hz] (defaults 2.5 Hz and 6 Hz).
+    """
+    horizontal = synthetic_acceleration(
+        duration=duration,
+        dt=dt,
+        peak=horizontal_peak,
+        seed=seed,
+        ground_frequency=horizontal_frequency,
+    )
+    vertical = None
+    if vertical_peak is not None:
+        vertical = synthetic_acceleration(
+            duration=duration,
+            dt=dt,
+            peak=vertical_peak,
+            seed=seed + 1,
+            ground_frequency=vertical_frequency,
+        )
+    return GroundMotion(
+        dt,
+        horizontal,
+        vertical,
+        name=f"synthetic (seed {seed})",
+        metadata={"synthetic": True, "seed": seed},
+    )

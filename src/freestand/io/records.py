@@ -1,0 +1,714 @@
+"""Reading ground-motion records: PEER NGA ``.AT2``, CSV and single-column files.
+
+Formats (details in ``docs/records.md``):
+
+- **PEER ``.AT2``** (PEER NGA strong-motion database): four header lines --
+  title (``PEER NGA STRONG MOTION DATABASE RECORD``, older files
+  ``PEER STRONG MOTION DATABASE RECORD``), event/date/station/component, units
+  (``ACCELERATION TIME SERIES IN UNITS OF G``), and the sample count and step
+  (``NPTS=  16396, DT=   0.005 SEC``) -- then the accelerations, several per
+  line. NPTS and DT are found by their keywords, in either order and with any
+  spacing; the older form ``  4000   0.0050   NPTS, DT`` is read too. Values
+  are in g unless the units line names another acceleration unit.
+- **CSV**: a header row naming each column with its unit in brackets, then one
+  row per sample: ``time [s], acceleration [g]`` (or ``horizontal [m/s^2]``),
+  optionally a third column ``vertical [g]``. Time must be uniform; lines
+  starting with ``#`` are comments.
+- **single column**: one acceleration per line, no time; the step and the unit
+  are given by the caller. Lines starting with ``#`` are comments.
+
+Units: ``g`` (the model's gravitational acceleration), ``m/s^2``, ``cm/s^2``,
+``gal`` (= cm/s^2), ``mm/s^2``; for CSV time ``s`` or ``ms``.
+
+Vertical components are recorded positive upward; freestand's ``vertical`` is
+the downward support acceleration (weight m (g - a_v)), so the readers change
+the sign unless told ``vertical_positive="down"``.
+
+Every problem raises :class:`freestand.errors.FreestandError` naming the file,
+what is wrong and how to fix it.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from freestand.core.ground_motion import GroundMotion, combine_components
+from freestand.errors import FreestandError
+from freestand.io.units import to_si
+
+ACCELERATION_UNITS_HELP = "g, m/s^2, cm/s^2, gal or mm/s^2"
+
+#: Largest relative deviation of a CSV time step from the mean step.
+TIME_STEP_TOLERANCE = 1e-3
+
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eEdD][-+]?\d+)?"
+_NPTS_KEY = re.compile(r"\bNPTS\s*[=:]\s*(" + _NUMBER + r")", re.IGNORECASE)
+_DT_KEY = re.compile(r"\bDT\s*[=:]\s*(" + _NUMBER + r")\s*([A-Za-z]*)", re.IGNORECASE)
+_OLD_NPTS_DT = re.compile(
+    r"^\s*(" + _NUMBER + r")[\s,]+(" + _NUMBER + r")[\s,]+NPTS\s*,?\s*DT", re.IGNORECASE
+)
+_NUMBER_DIGITS = re.compile(r"\d")
+
+
+@dataclass(frozen=True)
+class RecordComponent:
+    """One acceleration component read from a file.
+
+    Parameters
+    ----------
+    acceleration : numpy.ndarray
+        Accelerations [m/s^2] at t_i = i dt, as signed in the file.
+    dt : float
+        Time step [s].
+    source : str
+        File it was read from.
+    header : tuple of str
+        Header lines (AT2) or column names (CSV).
+    unit : str
+        Unit found in the file or given.
+    start_time : float
+        Time of the first sample in the file [s] (CSV); the record starts at 0.
+    """
+
+    acceleration: np.ndarray
+    dt: float
+    source: str
+    header: tuple[str, ...] = ()
+    unit: str = ""
+    start_time: float = 0.0
+
+
+# ------------------------------------------------------------------ helpers
+
+
+def _read_lines(path: Path) -> list[str]:
+    try:
+        text = path.read_text(encoding="utf-8", errors="replace")
+    except FileNotFoundError:
+        raise FreestandError(
+            "file not found; check the path of the record", source=str(path)
+        ) from None
+    except IsADirectoryError:
+        raise FreestandError("is a directory, not a record file", source=str(path)) from None
+    lines = text.splitlines()
+    if not any(line.strip() for line in lines):
+        raise FreestandError(
+            "the record file is empty; give a file with a header and acceleration values",
+            source=str(path),
+        )
+    return lines
+
+
+def _parse_float(token: str, source: str, where: str) -> float:
+    try:
+        return float(token.replace("D", "E").replace("d", "e"))
+    except ValueError:
+        raise FreestandError(
+            f"{where}: cannot read {token!r} as a number; the record must hold numbers only "
+            "after its header",
+            source=source,
+        ) from None
+
+
+def _unit_factor(unit: str, quantity: str, *, source: str, field: str, gravity: float) -> float:
+    """SI factor of an acceleration or time unit written in a record file."""
+    text = unit.strip()
+    normalised = text.lower().replace("sec", "s").replace(" ", "")
+    normalised = re.sub(r"s\*\*2|s2$", "s^2", normalised)
+    normalised = normalised.replace("/s/s", "/s^2")
+    if quantity == "acceleration":
+        if normalised in ("gal", "gals"):
+            normalised = "cm/s^2"
+        if normalised in ("g", "gs", "ofg"):
+            normalised = "g"
+        accepted = ACCELERATION_UNITS_HELP
+    else:
+        accepted = "s or ms"
+    if not normalised:
+        raise FreestandError(
+            f"no unit given; write the unit in brackets, e.g. [{accepted.split(',')[0]}] "
+            f"(accepted: {accepted})",
+            source=source,
+            field=field,
+        )
+    try:
+        factor = to_si(f"1 {normalised}", quantity, field=field, source=source, gravity=gravity)
+    except FreestandError:
+        raise FreestandError(
+            f"unit {unit!r} is not a unit of {quantity}; use one of: {accepted}",
+            source=source,
+            field=field,
+        ) from None
+    if not factor > 0:
+        raise FreestandError(f"unit {unit!r} is not usable; use one of: {accepted}", source=source)
+    return factor
+
+
+def _check_finite(values: np.ndarray, line_numbers: list[int], source: str, what: str) -> None:
+    bad = np.flatnonzero(~np.isfinite(values))
+    if bad.size:
+        first = int(bad[0])
+        raise FreestandError(
+            f"{what} value number {first + 1} (line {line_numbers[first]}) is {values[first]!r}; "
+            f"{bad.size} value(s) are not finite numbers. Replace missing values (NaN) with "
+            "valid accelerations or cut the record before them",
+            source=source,
+        )
+
+
+# ---------------------------------------------------------------------- AT2
+
+
+def _parse_npts_dt(line: str) -> tuple[str, str, str] | None:
+    """(NPTS text, DT text, DT unit) found by keyword, or None."""
+    npts_match = _NPTS_KEY.search(line)
+    dt_match = _DT_KEY.search(line)
+    if npts_match and dt_match:
+        return npts_match.group(1), dt_match.group(1), dt_match.group(2)
+    old = _OLD_NPTS_DT.search(line)
+    if old:
+        return old.group(1), old.group(2), "s"
+    return None
+
+
+def read_at2_component(path: str | Path, *, gravity: float = 9.81) -> RecordComponent:
+    """Read the accelerations of a PEER ``.AT2`` file.
+
+    Parameters
+    ----------
+    path : str or Path
+        The ``.AT2`` file.
+    gravity : float, optional
+        g [m/s^2] used to convert values in g (default 9.81).
+
+    Returns
+    -------
+    RecordComponent
+        Accelerations [m/s^2] with the sign of the file, the step [s] and the
+        header lines.
+
+    Raises
+    ------
+    FreestandError
+        Empty file, no NPTS/DT line, non-acceleration or unknown units,
+        non-numeric or non-finite values, or a value count other than NPTS.
+    """
+    path = Path(path)
+    source = str(path)
+    lines = _read_lines(path)
+    header_end = None
+    parsed = None
+    for index, line in enumerate(lines[:12]):
+        if "NPTS" in line.upper():
+            header_end = index
+            parsed = _parse_npts_dt(line)
+            break
+    if header_end is None or parsed is None:
+        raise FreestandError(
+            "no 'NPTS=..., DT=...' line in the first lines of the header; a PEER .AT2 file "
+            "has four header lines, the fourth like 'NPTS=  16396, DT=   0.005 SEC' "
+            "(or give a CSV or single-column file instead)",
+            source=source,
+        )
+    header = tuple(lines[: header_end + 1])
+    npts_text, dt_text, dt_unit = parsed
+    npts_value = _parse_float(npts_text, source, "NPTS")
+    if not (npts_value == int(npts_value) and npts_value >= 2):
+        raise FreestandError(
+            f"NPTS={npts_text} is not a whole number of at least 2; fix the header line "
+            f"{header_end + 1}",
+            source=source,
+        )
+    npts = int(npts_value)
+    dt = _parse_float(dt_text, source, "DT")
+    dt_unit = dt_unit.strip().lower()
+    if dt_unit in ("ms", "msec"):
+        dt *= 1e-3
+    elif dt_unit not in ("", "s", "sec", "secs", "second", "seconds"):
+        raise FreestandError(
+            f"DT unit {dt_unit!r} on header line {header_end + 1} is not a time unit; "
+            "write 'DT= 0.005 SEC'",
+            source=source,
+        )
+    if not (dt > 0 and math.isfinite(dt)):
+        raise FreestandError(
+            f"DT={dt_text} is not a positive time step; fix header line {header_end + 1}",
+            source=source,
+        )
+
+    unit = "g"
+    unit_note = "assumed (no units line)"
+    for line in header[:-1]:
+        upper = line.upper()
+        if re.search(r"\b(VELOCITY|DISPLACEMENT)\b", upper) and "TIME SERIES" in upper:
+            kind = "velocity" if "VELOCITY" in upper else "displacement"
+            raise FreestandError(
+                f"the header says this is a {kind} time series ({line.strip()!r}); "
+                "give the acceleration record (.AT2), not the .VT2/.DT2 file",
+                source=source,
+            )
+        match = re.search(r"UNITS?\s+OF\s+(.+?)\s*$", line, re.IGNORECASE)
+        if match:
+            unit = match.group(1).strip().rstrip(".")
+            unit_note = "from header"
+    factor = _unit_factor(unit, "acceleration", source=source, field="units", gravity=gravity)
+
+    values: list[float] = []
+    line_numbers: list[int] = []
+    for number, line in enumerate(lines[header_end + 1 :], start=header_end + 2):
+        for token in line.replace(",", " ").split():
+            values.append(_parse_float(token, source, f"line {number}"))
+            line_numbers.append(number)
+    if not values:
+        raise FreestandError(
+            "the header is there but no acceleration values follow; the file is truncated",
+            source=source,
+        )
+    acceleration = np.asarray(values, dtype=float)
+    _check_finite(acceleration, line_numbers, source, "acceleration")
+    if acceleration.size != npts:
+        raise FreestandError(
+            f"the header says NPTS={npts} but the file holds {acceleration.size} values; "
+            "the file is truncated or the header is wrong -- fix NPTS or restore the values",
+            source=source,
+        )
+    return RecordComponent(
+        acceleration=acceleration * factor,
+        dt=dt,
+        source=source,
+        header=header,
+        unit=f"{unit} ({unit_note})",
+    )
+
+
+def read_at2(path: str | Path, *, gravity: float = 9.81, name: str | None = None) -> GroundMotion:
+    """Read a PEER NGA ``.AT2`` file as a horizontal record.
+
+    Parameters
+    ----------
+    path : str or Path
+        The ``.AT2`` file (values in g unless its units line says otherwise).
+    gravity : float, optional
+        g [m/s^2] for the conversion from g (default 9.81).
+    name : str, optional
+        Record name (default: the file name).
+
+    Returns
+    -------
+    GroundMotion
+        The file's accelerations [m/s^2] as the horizontal component.
+    """
+    component = read_at2_component(path, gravity=gravity)
+    return _motion_from(component, name)
+
+
+# ---------------------------------------------------------------------- CSV
+
+_HEADER_CELL = re.compile(r"^\s*([A-Za-z_ ]+?)\s*[\[(]\s*([^\])]*)\s*[\])]\s*$")
+
+
+def _read_csv_columns(path: Path, gravity: float):
+    source = str(path)
+    lines = _read_lines(path)
+    rows = [
+        (number, line)
+        for number, line in enumerate(lines, start=1)
+        if line.strip() and not line.lstrip().startswith("#")
+    ]
+    if not rows:
+        raise FreestandError("the record file holds only comments", source=source)
+    header_number, header_line = rows[0]
+    cells = next(csv.reader([header_line]))
+    fix = (
+        "the first row must name the columns with units, e.g. "
+        "'time [s], acceleration [g]' or 'time [s], horizontal [m/s^2], vertical [m/s^2]'"
+    )
+    names = []
+    units = []
+    for cell in cells:
+        match = _HEADER_CELL.match(cell)
+        if not match:
+            raise FreestandError(
+                f"header cell {cell.strip()!r} (line {header_number}) has no unit in brackets; "
+                + fix,
+                source=source,
+            )
+        names.append(match.group(1).strip().lower())
+        units.append(match.group(2).strip())
+    if len(names) not in (2, 3) or names[0] != "time":
+        raise FreestandError(f"columns {cells!r} are not understood; " + fix, source=source)
+    if names[1] not in ("acceleration", "horizontal"):
+        raise FreestandError(
+            f"second column is {names[1]!r}; name it 'acceleration' or 'horizontal'; " + fix,
+            source=source,
+        )
+    if len(names) == 3 and names[2] != "vertical":
+        raise FreestandError(
+            f"third column is {names[2]!r}; only a 'vertical' column may follow; " + fix,
+            source=source,
+        )
+    time_factor = _unit_factor(units[0], "time", source=source, field=cells[0].strip(), gravity=1)
+    acc_factors = [
+        _unit_factor(u, "acceleration", source=source, field=c.strip(), gravity=gravity)
+        for u, c in zip(units[1:], cells[1:], strict=True)
+    ]
+    data = []
+    line_numbers = []
+    for number, line in rows[1:]:
+        row = next(csv.reader([line]))
+        if len(row) != len(names):
+            raise FreestandError(
+                f"line {number} has {len(row)} values, the header {len(names)} columns; "
+                "every row needs one value per column",
+                source=source,
+            )
+        data.append([_parse_float(cell.strip(), source, f"line {number}") for cell in row])
+        line_numbers.append(number)
+    if len(data) < 2:
+        raise FreestandError(
+            f"the file holds {len(data)} data row(s); a record needs at least two samples",
+            source=source,
+        )
+    table = np.asarray(data, dtype=float)
+    for column in range(table.shape[1]):
+        _check_finite(table[:, column], line_numbers, source, f"column {cells[column].strip()!r}")
+    time = table[:, 0] * time_factor
+    steps = np.diff(time)
+    if np.any(steps <= 0):
+        bad = int(np.flatnonzero(steps <= 0)[0])
+        raise FreestandError(
+            f"time does not increase at line {line_numbers[bad + 1]} "
+            f"({table[bad, 0]!r} then {table[bad + 1, 0]!r}); sort the rows by time and "
+            "remove duplicates",
+            source=source,
+        )
+    dt = (time[-1] - time[0]) / (time.size - 1)
+    deviation = np.abs(steps - dt)
+    if np.max(deviation) > TIME_STEP_TOLERANCE * dt:
+        bad = int(np.argmax(deviation))
+        raise FreestandError(
+            f"time is not uniformly spaced: the step at line {line_numbers[bad + 1]} is "
+            f"{steps[bad]:.6g} s against a mean step of {dt:.6g} s; resample the record to a "
+            "uniform time step (freestand integrates piecewise-linear records at a fixed step)",
+            source=source,
+        )
+    columns = [table[:, i + 1] * f for i, f in enumerate(acc_factors)]
+    return dt, time[0], columns, tuple(cells), units
+
+
+def read_csv_record(
+    path: str | Path,
+    *,
+    gravity: float = 9.81,
+    name: str | None = None,
+    vertical_positive: str = "up",
+) -> GroundMotion:
+    """Read a CSV record with a header row naming columns and units.
+
+    Parameters
+    ----------
+    path : str or Path
+        CSV file: ``time [s], acceleration [g]`` (or ``horizontal [unit]``),
+        optionally ``vertical [unit]``; units g, m/s^2, cm/s^2, gal, mm/s^2;
+        time in s or ms, uniformly spaced (within 0.1 % of the mean step).
+    gravity : float, optional
+        g [m/s^2] for values in g (default 9.81).
+    name : str, optional
+        Record name (default: the file name).
+    vertical_positive : str, optional
+        ``"up"`` (default, as instruments record) or ``"down"``: the sense of
+        the vertical column; it is stored as downward acceleration.
+
+    Returns
+    -------
+    GroundMotion
+        The record; a time offset of the first row is kept in
+        ``metadata["start_time"]`` and the record starts at t = 0.
+    """
+    path = Path(path)
+    sign = _vertical_sign(vertical_positive)
+    dt, start, columns, header, units = _read_csv_columns(path, gravity)
+    vertical = columns[1] * sign if len(columns) > 1 else None
+    return GroundMotion(
+        dt,
+        columns[0],
+        vertical,
+        name=name or path.name,
+        metadata={
+            "source": str(path),
+            "format": "csv",
+            "header": header,
+            "units": tuple(units),
+            "start_time": float(start),
+        },
+    )
+
+
+# -------------------------------------------------------------- single column
+
+
+def read_single_column_component(
+    path: str | Path, dt: float, unit: str, *, gravity: float = 9.81
+) -> RecordComponent:
+    """Read a file of one acceleration per line (see :func:`read_single_column`)."""
+    path = Path(path)
+    source = str(path)
+    if dt is None or unit is None:
+        raise FreestandError(
+            "a single-column record holds no time step or unit; give both, e.g. "
+            "dt=0.01 and unit='g' (command line: --dt 0.01 --unit g)",
+            source=source,
+        )
+    try:
+        dt = float(dt)
+    except (TypeError, ValueError):
+        raise FreestandError(f"dt={dt!r} is not a number of seconds", source=source) from None
+    if not (dt > 0 and math.isfinite(dt)):
+        raise FreestandError(f"dt={dt!r} must be a positive time step [s]", source=source)
+    factor = _unit_factor(str(unit), "acceleration", source=source, field="unit", gravity=gravity)
+    lines = _read_lines(path)
+    values = []
+    line_numbers = []
+    for number, line in enumerate(lines, start=1):
+        text = line.strip().rstrip(",")
+        if not text or text.startswith("#"):
+            continue
+        tokens = text.replace(",", " ").split()
+        if len(tokens) != 1:
+            raise FreestandError(
+                f"line {number} holds {len(tokens)} values; a single-column record holds one "
+                "acceleration per line (for time and acceleration use a CSV file with a header "
+                "'time [s], acceleration [g]')",
+                source=source,
+            )
+        values.append(_parse_float(tokens[0], source, f"line {number}"))
+        line_numbers.append(number)
+    if len(values) < 2:
+        raise FreestandError(
+            f"the file holds {len(values)} value(s); a record needs at least two samples",
+            source=source,
+        )
+    acceleration = np.asarray(values, dtype=float)
+    _check_finite(acceleration, line_numbers, source, "acceleration")
+    return RecordComponent(acceleration * factor, dt, source, (), str(unit))
+
+
+def read_single_column(
+    path: str | Path,
+    dt: float,
+    unit: str,
+    *,
+    gravity: float = 9.81,
+    name: str | None = None,
+) -> GroundMotion:
+    """Read a plain file of accelerations, one per line, as a horizontal record.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file; blank lines and lines starting with ``#`` are skipped.
+    dt : float
+        Time step [s].
+    unit : str
+        Unit of the values: g, m/s^2, cm/s^2, gal or mm/s^2.
+    gravity : float, optional
+        g [m/s^2] for values in g (default 9.81).
+    name : str, optional
+        Record name (default: the file name).
+    """
+    return _motion_from(read_single_column_component(path, dt, unit, gravity=gravity), name)
+
+
+# ------------------------------------------------------------------ dispatch
+
+
+def _vertical_sign(vertical_positive: str) -> float:
+    if vertical_positive == "up":
+        return -1.0
+    if vertical_positive == "down":
+        return 1.0
+    raise FreestandError(
+        f"vertical_positive={vertical_positive!r}; give 'up' (as instruments record) or 'down'",
+        field="vertical_positive",
+    )
+
+
+def _motion_from(component: RecordComponent, name: str | None) -> GroundMotion:
+    return GroundMotion(
+        component.dt,
+        component.acceleration,
+        name=name or Path(component.source).name,
+        metadata={
+            "source": component.source,
+            "header": component.header,
+            "unit": component.unit,
+        },
+    )
+
+
+def _read_component(path: Path, dt, unit, gravity) -> tuple[RecordComponent, np.ndarray | None]:
+    """One file by its extension; returns the (first) component and a CSV vertical column."""
+    suffix = path.suffix.lower()
+    source = str(path)
+    if suffix == ".at2":
+        component = read_at2_component(path, gravity=gravity)
+        if unit is not None:
+            raise FreestandError(
+                f"unit={unit!r} given, but an .AT2 file states its unit in its header; "
+                "leave the unit out",
+                source=source,
+            )
+        if dt is not None and not math.isclose(float(dt), component.dt, rel_tol=1e-9):
+            raise FreestandError(
+                f"dt={dt!r} given, but the header says DT={component.dt!r}; leave dt out",
+                source=source,
+            )
+        return component, None
+    if suffix == ".csv":
+        if dt is not None or unit is not None:
+            raise FreestandError(
+                "a CSV record holds its time column and units in its header; do not give "
+                "dt or unit",
+                source=source,
+            )
+        step, start, columns, header, units = _read_csv_columns(path, gravity)
+        component = RecordComponent(columns[0], step, source, header, units[1], float(start))
+        return component, (columns[1] if len(columns) > 1 else None)
+    return read_single_column_component(path, dt, unit, gravity=gravity), None
+
+
+def load_record(
+    path: str | Path,
+    *,
+    dt: float | None = None,
+    unit: str | None = None,
+    gravity: float = 9.81,
+    vertical: str | Path | None = None,
+    vertical_positive: str = "up",
+    name: str | None = None,
+) -> GroundMotion:
+    """Read a record by its file type, with an optional vertical component.
+
+    Parameters
+    ----------
+    path : str or Path
+        Horizontal record: ``.AT2`` (PEER), ``.csv`` (header with units) or
+        any other extension as a single-column file.
+    dt : float, optional
+        Time step [s]; needed for single-column files only.
+    unit : str, optional
+        Acceleration unit (g, m/s^2, cm/s^2, gal, mm/s^2); needed for
+        single-column files only.
+    gravity : float, optional
+        g [m/s^2] that the unit g stands for (default 9.81).
+    vertical : str or Path, optional
+        A second file with the vertical component (any of the three formats;
+        ``dt`` and ``unit`` apply to it as well). Not allowed when the CSV
+        already has a vertical column.
+    vertical_positive : str, optional
+        Sense of the vertical values in the files: ``"up"`` (default, as
+        recorded) or ``"down"``. freestand stores downward acceleration.
+    name : str, optional
+        Record name (default: the file name).
+
+    Returns
+    -------
+    GroundMotion
+        Horizontal [m/s^2] and, if given, downward vertical [m/s^2]
+        acceleration. Components with different steps or lengths are combined
+        by :func:`freestand.core.ground_motion.combine_components` (finer step,
+        linear interpolation, zeros after the shorter one).
+    """
+    path = Path(path)
+    sign = _vertical_sign(vertical_positive)
+    component, csv_vertical = _read_component(path, dt, unit, gravity)
+    metadata = {
+        "source": str(path),
+        "header": component.header,
+        "unit": component.unit,
+        "start_time": component.start_time,
+        "vertical_positive_in_file": vertical_positive,
+    }
+    record_name = name or path.name
+    if vertical is not None and csv_vertical is not None:
+        raise FreestandError(
+            "the CSV already has a vertical column and a vertical file was given too; "
+            "give only one of them",
+            source=str(path),
+        )
+    if csv_vertical is not None:
+        return GroundMotion(
+            component.dt, component.acceleration, sign * csv_vertical, record_name, metadata
+        )
+    if vertical is None:
+        return GroundMotion(component.dt, component.acceleration, None, record_name, metadata)
+    vertical_path = Path(vertical)
+    vertical_component, extra = _read_component(vertical_path, dt, unit, gravity)
+    if extra is not None:
+        raise FreestandError(
+            "the vertical file has two acceleration columns; give a file with one component",
+            source=str(vertical_path),
+        )
+    metadata["vertical_source"] = str(vertical_path)
+    metadata["vertical_header"] = vertical_component.header
+    return combine_components(
+        component.acceleration,
+        component.dt,
+        sign * vertical_component.acceleration,
+        vertical_component.dt,
+        name=record_name,
+        metadata=metadata,
+    )
+
+
+# -------------------------------------------------------------------- writing
+
+
+def write_at2(
+    path: str | Path,
+    motion: GroundMotion,
+    *,
+    component: str = "horizontal",
+    title: str = "PEER NGA STRONG MOTION DATABASE RECORD",
+    description: str = "",
+    gravity: float = 9.81,
+    values_per_line: int = 5,
+) -> None:
+    """Write one component of a record as a PEER ``.AT2`` file (values in g).
+
+    Parameters
+    ----------
+    path : str or Path
+        File to write.
+    motion : GroundMotion
+        The record.
+    component : str, optional
+        ``"horizontal"`` or ``"vertical"``; the vertical is written positive
+        upward, as recorded (the sign of freestand's downward value changed).
+    title : str, optional
+        Header line 1.
+    description : str, optional
+        Header line 2 (event, date, station, component).
+    gravity : float, optional
+        g [m/s^2] for the conversion to g.
+    values_per_line : int, optional
+        Values per data line (default 5).
+    """
+    values = motion.component(component) / gravity
+    if component == "vertical":
+        values = -values
+    lines = [
+        title,
+        description or motion.name,
+        "ACCELERATION TIME SERIES IN UNITS OF G",
+        f"NPTS= {values.size:7d}, DT= {motion.dt:.10g} SEC",
+    ]
+    for start in range(0, values.size, values_per_line):
+        lines.append("".join(f"{x:15.7E}" for x in values[start : start + values_per_line]))
+    Path(path).write_text("\n".join(lines) + "\n", encoding="ascii")
