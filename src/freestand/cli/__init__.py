@@ -39,9 +39,10 @@ def main(argv: list[str] | None = None) -> int:
         app(args=argv, prog_name="freestand", standalone_mode=False)
     except FreestandError as error:
         from rich.console import Console
+        from rich.markup import escape
 
         Console(stderr=True, highlight=False, soft_wrap=True).print(
-            f"[bold red]error:[/] {error}", markup=True
+            f"[bold red]error:[/] {escape(str(error))}", markup=True
         )
         return 2
     except typer.Exit as exit_:

@@ -1,4 +1,4 @@
-"""``freestand frequency``: vertical frequency of the bridge and the jump check (paper section 6)."""
+"""``freestand frequency``: vertical frequency of the bridge, jump check (paper section 6)."""
 
 from __future__ import annotations
 
@@ -27,10 +27,12 @@ def frequency(
         "'rg1.60:pga=0.3g,damping=5%,direction=vertical' / 'en1998:ag=...,direction=vertical'. "
         "Default: the model's vertical spectrum.",
     ),
-    plot: Path = typer.Option(None, "--plot", help="Folder to write the Fig. 9 analogue to (PNG, SVG)."),
+    plot: Path = typer.Option(
+        None, "--plot", help="Folder to write the Fig. 9 analogue to (PNG, SVG)."
+    ),
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
-    """Lowest vertical natural frequency against the cart's position, and whether the cart may jump."""
+    """Lowest vertical frequency against the cart's position, and whether the cart may jump."""
     model = load_model(model_file)
     if model.beam is None:
         raise FreestandError(
@@ -48,9 +50,8 @@ def frequency(
                     "measured from the left support",
                     source="--positions",
                 )
-        sweep = frequency_sweep(beam, np.array(values), parking=parking)
-    else:
-        sweep = frequency_sweep(beam, parking=parking)
+    full_sweep = frequency_sweep(beam, parking=parking)
+    sweep = full_sweep if values is None else frequency_sweep(beam, np.array(values))
     vertical = resolve_spectrum(spectrum, model, "vertical")
     check = jump_check(sweep, vertical, model.gravity, parking=parking) if vertical else None
 
@@ -58,7 +59,12 @@ def frequency(
         from freestand.plot.frequency import plot_frequency_sweep, save_frequency_figure
 
         plot.mkdir(parents=True, exist_ok=True)
-        figure = plot_frequency_sweep(sweep, parking=parking, jump=check, vertical_spectrum=vertical)
+        full_check = (
+            jump_check(full_sweep, vertical, model.gravity, parking=parking) if vertical else None
+        )
+        figure = plot_frequency_sweep(
+            full_sweep, parking=parking, jump=full_check, vertical_spectrum=vertical
+        )
         written = save_frequency_figure(figure, plot / "fig9_frequency")
     else:
         written = []
@@ -95,21 +101,34 @@ def frequency(
         return
 
     out = console()
-    out.print(f"[bold]{model.name}[/]: lowest vertical natural frequency of the bridge (paper section 6)")
+    out.print(
+        f"[bold]{model.name}[/]: lowest vertical natural frequency of the bridge (paper section 6)"
+    )
     table = Table(title="Frequency against the cart's position (paper Fig. 9)")
-    for header in ("position [m]", "Dunkerley [Hz]", "exact [Hz]", "S_a,v [m/s^2]", "S_a,v / g", "verdict"):
+    for header in (
+        "position [m]",
+        "Dunkerley [Hz]",
+        "exact [Hz]",
+        "S_a,v [m/s^2]",
+        "S_a,v / g",
+        "verdict",
+    ):
         table.add_column(header, justify="right" if "[" in header or "/" in header else "left")
     step = max(1, len(sweep.position) // 25) if values is None else 1
     for k in range(0, len(sweep.position), step):
         cells = [f"{sweep.position[k]:.2f}", f"{sweep.dunkerley[k]:.2f}", f"{sweep.exact[k]:.2f}"]
         if check is not None:
-            cells += [f"{check.spectral_acceleration[k]:.2f}", f"{check.ratio[k]:.2f}", str(check.verdict[k])]
+            cells += [
+                f"{check.spectral_acceleration[k]:.2f}",
+                f"{check.ratio[k]:.2f}",
+                str(check.verdict[k]),
+            ]
         else:
             cells += ["", "", "no vertical spectrum"]
         table.add_row(*cells, style="red" if check is not None and check.at_risk[k] else None)
     out.print(table)
-    low, high = sweep.frequency_range(parking, method="dunkerley")
-    exact_low, exact_high = sweep.frequency_range(parking, method="exact")
+    low, high = full_sweep.frequency_range(parking, method="dunkerley")
+    exact_low, exact_high = full_sweep.frequency_range(parking, method="exact")
     out.print(
         f"Parking range {parking[0]:g}-{parking[1]:g} m: Dunkerley {low:.1f}-{high:.1f} Hz, "
         f"exact {exact_low:.1f}-{exact_high:.1f} Hz (Dunkerley is a lower bound)."

@@ -157,7 +157,15 @@ def en1998_spectral_acceleration(
     return np.where(
         t <= t_b,
         design_acceleration * soil_factor * (1 + t / t_b * (plateau * eta - 1)),
-        np.where(t <= t_c, top, np.where(t <= t_d, top * t_c / np.maximum(t, 1e-300), top * t_c * t_d / np.maximum(t, 1e-300) ** 2)),
+        np.where(
+            t <= t_c,
+            top,
+            np.where(
+                t <= t_d,
+                top * t_c / np.maximum(t, 1e-300),
+                top * t_c * t_d / np.maximum(t, 1e-300) ** 2,
+            ),
+        ),
     )
 
 
@@ -217,8 +225,14 @@ def en1998_spectrum(
     eta = en1998_damping_correction(damping)
     frequency = np.geomspace(lowest_frequency, highest_frequency, points)
     corners = np.array([1 / t_d, 1 / t_c, 1 / t_b])
-    frequency = np.unique(np.concatenate([frequency, corners[(corners > lowest_frequency) & (corners < highest_frequency)]]))
-    values = en1998_spectral_acceleration(1 / frequency, acceleration, soil, (t_b, t_c, t_d), plateau, eta)
+    frequency = np.unique(
+        np.concatenate(
+            [frequency, corners[(corners > lowest_frequency) & (corners < highest_frequency)]]
+        )
+    )
+    values = en1998_spectral_acceleration(
+        1 / frequency, acceleration, soil, (t_b, t_c, t_d), plateau, eta
+    )
     label = (
         f"EN 1998-1 Type {spectrum_type} {direction}"
         + (f", ground {ground}" if direction == "horizontal" else "")
@@ -260,7 +274,10 @@ def crane_stand_in_spectra() -> tuple[Spectrum, Spectrum]:
         amplified,
         damping=0.05,
         direction="horizontal",
-        label="crane stand-in for the paper's Fig. 4/5 (horizontal, 5 %): 2.70 m/s^2 rigid, 10.31 m/s^2 at 2.5 Hz",
+        label=(
+            "crane stand-in for the paper's Fig. 4/5 (horizontal, 5 %): "
+            "2.70 m/s^2 rigid, 10.31 m/s^2 at 2.5 Hz"
+        ),
         metadata={"stand_in": True},
     )
     g = 9.81
@@ -269,7 +286,10 @@ def crane_stand_in_spectra() -> tuple[Spectrum, Spectrum]:
         np.array([0.004 * g, 0.10 * g, 0.75 * g, 1.0 * g, 1.0 * g, 2.35, 2.35]),
         damping=0.05,
         direction="vertical",
-        label="crane stand-in for the paper's Fig. 4/5 (vertical, 5 %): 2.35 m/s^2 rigid, about g at 8-12 Hz",
+        label=(
+            "crane stand-in for the paper's Fig. 4/5 (vertical, 5 %): "
+            "2.35 m/s^2 rigid, about g at 8-12 Hz"
+        ),
         metadata={"stand_in": True},
     )
     return horizontal, vertical

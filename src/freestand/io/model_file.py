@@ -552,7 +552,9 @@ def load_model_text(
         else {}
     )
     beam = (
-        parse_beam_section(spec.beam, source=source, gravity=gravity) if spec.beam is not None else None
+        parse_beam_section(spec.beam, source=source, gravity=gravity)
+        if spec.beam is not None
+        else None
     )
     return ModelFile(
         name=spec.name,

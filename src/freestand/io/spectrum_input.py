@@ -44,11 +44,13 @@ def _damping(value, *, field: str, source: str) -> float:
             return float(value.strip()[:-1]) / 100.0
         except ValueError:
             pass
-        raise FreestandError(f"{value!r} is not a percentage; write e.g. \"5 %\"", source=source, field=field)
+        raise FreestandError(
+            f'{value!r} is not a percentage; write e.g. "5 %"', source=source, field=field
+        )
     result = to_si(value, "dimensionless", field=field, source=source)
     if not 0 <= result < 1:
         raise FreestandError(
-            f"{value!r} is not a fraction of critical damping; give e.g. 0.05 or \"5 %\"",
+            f'{value!r} is not a fraction of critical damping; give e.g. 0.05 or "5 %"',
             source=source,
             field=field,
         )
@@ -58,7 +60,9 @@ def _damping(value, *, field: str, source: str) -> float:
 def _direction(value, *, field: str, source: str) -> str:
     if value not in ("horizontal", "vertical"):
         raise FreestandError(
-            f"{value!r} is not a direction; use \"horizontal\" or \"vertical\"", source=source, field=field
+            f'{value!r} is not a direction; use "horizontal" or "vertical"',
+            source=source,
+            field=field,
         )
     return value
 
@@ -127,10 +131,19 @@ def read_spectrum_csv(
     try:
         lines = path.read_text(encoding="utf-8").splitlines()
     except OSError as error:
-        raise FreestandError(f"cannot be read ({error.strerror}); check the path", source=source) from None
-    rows = [row for row in csv.reader(line for line in lines if line.strip() and not line.lstrip().startswith("#"))]
+        raise FreestandError(
+            f"cannot be read ({error.strerror}); check the path", source=source
+        ) from None
+    rows = [
+        row
+        for row in csv.reader(
+            line for line in lines if line.strip() and not line.lstrip().startswith("#")
+        )
+    ]
     if not rows:
-        raise FreestandError("holds no data; expected a header row and frequency rows", source=source)
+        raise FreestandError(
+            "holds no data; expected a header row and frequency rows", source=source
+        )
     header = rows[0]
     units = []
     for column, expected in zip(header[:2], ("frequency", "acceleration"), strict=False):
@@ -143,9 +156,13 @@ def read_spectrum_csv(
             )
         units.append(match.group(2).strip())
     if len(header) < 2:
-        raise FreestandError("needs two columns: frequency [Hz], acceleration [m/s^2]", source=source)
+        raise FreestandError(
+            "needs two columns: frequency [Hz], acceleration [m/s^2]", source=source
+        )
     frequency_factor = to_si(f"1 {units[0]}", "frequency", field="header", source=source)
-    acceleration_factor = to_si(f"1 {units[1]}", "acceleration", field="header", source=source, gravity=gravity)
+    acceleration_factor = to_si(
+        f"1 {units[1]}", "acceleration", field="header", source=source, gravity=gravity
+    )
     frequency, acceleration = [], []
     for number, row in enumerate(rows[1:], start=2):
         try:
@@ -171,7 +188,9 @@ def spectrum_from_settings(
 ) -> Spectrum:
     """Build a spectrum of ``kind`` from a dict of settings (model section or option)."""
     settings = dict(settings)
-    direction = _direction(settings.pop("direction", "horizontal"), field=f"{field}.direction", source=source)
+    direction = _direction(
+        settings.pop("direction", "horizontal"), field=f"{field}.direction", source=source
+    )
     damping = _damping(settings.pop("damping", 0.05), field=f"{field}.damping", source=source)
     allowed = {
         "csv": {"file"},
@@ -196,7 +215,9 @@ def spectrum_from_settings(
 
     def need(key: str):
         if key not in settings:
-            raise FreestandError(f"is missing for a {kind} spectrum", source=source, field=f"{field}.{key}")
+            raise FreestandError(
+                f"is missing for a {kind} spectrum", source=source, field=f"{field}.{key}"
+            )
         return settings[key]
 
     try:
@@ -209,17 +230,33 @@ def spectrum_from_settings(
                 gravity=gravity,
             )
         if kind == "rg1.60":
-            pga = to_si(need("pga"), "acceleration", field=f"{field}.pga", source=source, gravity=gravity)
+            pga = to_si(
+                need("pga"), "acceleration", field=f"{field}.pga", source=source, gravity=gravity
+            )
             return rg160_spectrum(pga, damping, direction, gravity)
         if kind == "en1998":
-            ag = to_si(need("ag"), "acceleration", field=f"{field}.ag", source=source, gravity=gravity)
+            ag = to_si(
+                need("ag"), "acceleration", field=f"{field}.ag", source=source, gravity=gravity
+            )
             spectrum_type = int(settings.get("type", 1))
-            importance = to_si(settings.get("importance", 1.0), "dimensionless", field=f"{field}.importance", source=source)
+            importance = to_si(
+                settings.get("importance", 1.0),
+                "dimensionless",
+                field=f"{field}.importance",
+                source=source,
+            )
             return en1998_spectrum(
-                ag, str(settings.get("ground", "A")).upper(), spectrum_type, damping, direction, importance
+                ag,
+                str(settings.get("ground", "A")).upper(),
+                spectrum_type,
+                damping,
+                direction,
+                importance,
             )
         unit = settings.get("unit", "m/s^2")
-        factor = to_si(f"1 {unit}", "acceleration", field=f"{field}.unit", source=source, gravity=gravity)
+        factor = to_si(
+            f"1 {unit}", "acceleration", field=f"{field}.unit", source=source, gravity=gravity
+        )
         frequency = need("frequency")
         acceleration = need("acceleration")
         if not isinstance(frequency, list) or not isinstance(acceleration, list):
@@ -229,9 +266,12 @@ def spectrum_from_settings(
         return _checked(
             [to_si(f, "frequency", field=f"{field}.frequency", source=source) for f in frequency],
             [
-                to_si(a, "acceleration", field=f"{field}.acceleration", source=source, gravity=gravity)
+                to_si(
+                    a, "acceleration", field=f"{field}.acceleration", source=source, gravity=gravity
+                )
                 if isinstance(a, str)
-                else factor * to_si(a, "dimensionless", field=f"{field}.acceleration", source=source)
+                else factor
+                * to_si(a, "dimensionless", field=f"{field}.acceleration", source=source)
                 for a in acceleration
             ],
             source=source,
@@ -258,10 +298,14 @@ def parse_spectrum_sections(
         section = dict(section)
         name = section.pop("name", None)
         if not isinstance(name, str) or not name:
-            raise FreestandError("needs a name, e.g. name = \"horizontal\"", source=source, field=f"{field}.name")
+            raise FreestandError(
+                'needs a name, e.g. name = "horizontal"', source=source, field=f"{field}.name"
+            )
         field = f"{field} ({name!r})"
         if name in result:
-            raise FreestandError("repeats a spectrum name; give each its own", source=source, field=field)
+            raise FreestandError(
+                "repeats a spectrum name; give each its own", source=source, field=field
+            )
         kind = section.pop("kind", None)
         if kind is None:
             raise FreestandError(
@@ -293,7 +337,9 @@ def parse_spectrum_option(
             if not sep:
                 raise FreestandError(f"{item!r} is not key=value", source=source)
             settings[key.strip()] = value.strip()
-        return spectrum_from_settings(kind, settings, source=source, field=kind, base_dir=base_dir, gravity=gravity)
+        return spectrum_from_settings(
+            kind, settings, source=source, field=kind, base_dir=base_dir, gravity=gravity
+        )
     end = text.lower().find(".csv")
     if end >= 0:
         path, options = Path(text[: end + 4]), text[end + 4 :].lstrip(":")
@@ -301,7 +347,9 @@ def parse_spectrum_option(
         for item in filter(None, (part.strip() for part in options.split(","))):
             key, _, value = item.partition("=")
             settings[key.strip()] = value.strip()
-        return spectrum_from_settings("csv", settings, source=source, field="csv", base_dir=Path.cwd(), gravity=gravity)
+        return spectrum_from_settings(
+            "csv", settings, source=source, field="csv", base_dir=Path.cwd(), gravity=gravity
+        )
     known = ", ".join(repr(name) for name in model_spectra) or "none in the model"
     raise FreestandError(
         f"{text!r} is neither a spectrum of the model ({known}), a CSV file, nor "

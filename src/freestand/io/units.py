@@ -27,7 +27,7 @@ QUANTITIES: dict[str, tuple[str, str]] = {
     "dimensionless": ("", "0.25"),
 }
 
-_G_TOKEN = re.compile(r"(?<![A-Za-z_0-9])g(?![A-Za-z_0-9])")
+_G_TOKEN = re.compile(r"(?<![A-Za-z_])g(?![A-Za-z_0-9])")
 
 
 @functools.lru_cache(maxsize=1)
@@ -83,7 +83,13 @@ def to_si(
     elif isinstance(value, str):
         text = value.strip()
         if quantity == "acceleration":
-            text = _G_TOKEN.sub(f"({gravity!r} m/s^2)", text)
+            text = _G_TOKEN.sub(
+                lambda match: (
+                    ("* " if text[: match.start()].rstrip()[-1:].isdigit() else "")
+                    + f"({gravity!r} m/s^2)"
+                ),
+                text,
+            )
         ureg = _registry()
         try:
             parsed = ureg.parse_expression(text)
