@@ -24,9 +24,10 @@ app = typer.Typer(
 
 
 def _register() -> None:
-    from freestand.cli import screen
+    from freestand.cli import maps, screen
 
     screen.register(app)
+    maps.register(app)
 
 
 _register()
