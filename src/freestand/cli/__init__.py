@@ -24,10 +24,11 @@ app = typer.Typer(
 
 
 def _register() -> None:
-    from freestand.cli import frequency, screen
+    from freestand.cli import frequency, maps, screen
 
     screen.register(app)
     frequency.register(app)
+    maps.register(app)
 
 
 _register()

@@ -1,0 +1,397 @@
+"""``freestand map`` and ``freestand sample``."""
+
+from __future__ import annotations
+
+import contextlib
+import csv
+import json
+from pathlib import Path
+
+import numpy as np
+import typer
+from rich.console import Console
+from rich.markup import escape
+from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+from rich.table import Table
+
+from freestand.core.batch import MOTIONS, STATUS_NAMES
+from freestand.core.mode_map import ModeMap, mode_map, model_points
+from freestand.core.sampling import INTERVALS, monte_carlo
+from freestand.errors import FreestandError
+from freestand.io.model_file import load_model
+from freestand.io.parameters import check_parameters, parse_axis, parse_variation
+
+_SENSES = {"+": (1,), "-": (-1,), "both": (1, -1)}
+
+
+def _senses(value: str) -> tuple[int, ...]:
+    if value not in _SENSES:
+        raise FreestandError(f"{value!r} is not a sense; use +, - or both", source="option --sense")
+    return _SENSES[value]
+
+
+@contextlib.contextmanager
+def _progress(total: int, description: str, quiet: bool):
+    """A rich progress bar on stderr; yields the callback that advances it."""
+    if quiet:
+        yield None
+        return
+    console = Console(stderr=True)
+    with Progress(
+        TextColumn("{task.description}"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeElapsedColumn(),
+        console=console,
+        transient=True,
+        disable=not console.is_terminal,
+    ) as bar:
+        task = bar.add_task(description, total=total)
+        yield lambda done: bar.advance(task, done)
+
+
+def _sense_word(sense: int) -> str:
+    return "+" if sense > 0 else "-"
+
+
+def _map_csv(maps: list[ModeMap], path: Path) -> None:
+    names = maps[0].result.names
+    with path.open("w", newline="") as handle:
+        writer = csv.writer(handle)
+        header = ["sense", maps[0].x.parameter.label, maps[0].y.parameter.label, "status"]
+        header += ["region", "admissible_states"]
+        for name in names:
+            header += [f"{name}.motion", f"{name}.pivot", f"{name}.slide_direction"]
+        writer.writerow(header)
+        for m in maps:
+            result = m.result
+            grid_x, grid_y = np.meshgrid(m.x_values, m.y_values)
+            codes = m.codes.ravel()
+            for k in range(result.count):
+                row = [
+                    _sense_word(m.sense),
+                    f"{grid_x.flat[k]:.6g}",
+                    f"{grid_y.flat[k]:.6g}",
+                    STATUS_NAMES[result.status[k]],
+                    m.labels[int(codes[k])],
+                    int(result.admissible_count[k]),
+                ]
+                for b in range(len(names)):
+                    motion = int(result.motion[k, b])
+                    row += [
+                        MOTIONS[motion].value if motion >= 0 else "",
+                        {-1: "left", 1: "right"}.get(int(result.pivot[k, b]), ""),
+                        int(result.slide_direction[k, b]),
+                    ]
+                writer.writerow(row)
+
+
+def map_command(
+    model_file: Path = typer.Argument(..., help="Model file (TOML).", show_default=False),
+    configuration: str = typer.Option(
+        None, "--configuration", "-c", help="Configuration to map (default: the first)."
+    ),
+    x: str = typer.Option(
+        "horizontal=0:12", "--x", help="x axis NAME=START:STOP, e.g. horizontal=0:12."
+    ),
+    y: str = typer.Option(
+        "vertical=-3:10", "--y", help="y axis NAME=START:STOP, e.g. friction.static=0.1:0.5."
+    ),
+    n: int = typer.Option(400, "--n", help="Grid nodes per axis."),
+    excitation: str = typer.Option(
+        None,
+        "--excitation",
+        "-e",
+        help="Excitation for the components not on an axis (default: the first).",
+    ),
+    sense: str = typer.Option("both", "--sense", help="Sense of the inertial force: +, - or both."),
+    plot: Path = typer.Option(None, "--plot", help="Write the map figure (.png, .pdf, .svg)."),
+    csv_path: Path = typer.Option(None, "--csv", help="Write every grid node to a CSV file."),
+    as_json: bool = typer.Option(False, "--json", help="Write a JSON summary to stdout."),
+) -> None:
+    """Mode map: the initial motion of every block over a grid of two parameters."""
+    model = load_model(model_file)
+    stack = model.configuration(configuration) if configuration else model.configurations[0]
+    if excitation:
+        matches = [e for e in model.excitations if e.name == excitation]
+        if not matches:
+            known = ", ".join(repr(e.name) for e in model.excitations)
+            raise FreestandError(
+                f"no excitation named {excitation!r}; choose one of {known}",
+                source="option --excitation",
+            )
+        nominal = matches[0]
+    else:
+        nominal = model.excitations[0]
+    if not 2 <= n <= 5000:
+        raise FreestandError(f"{n} nodes per axis is out of range; give 2 to 5000", source="--n")
+    x_axis = parse_axis(x, "--x", model.gravity)
+    y_axis = parse_axis(y, "--y", model.gravity)
+    check_parameters([(x_axis.parameter, x), (y_axis.parameter, y)], [stack], "--x/--y")
+    senses = _senses(sense)
+    maps = []
+    with _progress(n * n * len(senses), "mapping", as_json) as advance:
+        for s in senses:
+            maps.append(mode_map(stack, x_axis, y_axis, nominal, s, n, model.gravity, advance))
+    points = [model_points(m, stack, model.excitations) for m in maps]
+    if plot:
+        from freestand.plot.maps import plot_mode_maps
+
+        plot_mode_maps(maps, plot, points, title=f"{model.name}: initial motion")
+    if csv_path:
+        _map_csv(maps, csv_path)
+    if as_json:
+        document = {
+            "model": model.name,
+            "configuration": stack.name,
+            "excitation": nominal.name,
+            "x": {"parameter": x_axis.parameter.label, "start": x_axis.start, "stop": x_axis.stop},
+            "y": {"parameter": y_axis.parameter.label, "start": y_axis.start, "stop": y_axis.stop},
+            "nodes": n,
+            "maps": [
+                {
+                    "sense": _sense_word(m.sense),
+                    "regions": {label: float(f) for label, f in m.fractions().items()},
+                    "ambiguous_nodes": int(m.ambiguous.sum()),
+                    "points": [
+                        {"excitation": name, "x": px, "y": py, "region": m.label_at(px, py)}
+                        for name, px, py in pts
+                    ],
+                }
+                for m, pts in zip(maps, points, strict=True)
+            ],
+        }
+        typer.echo(json.dumps(document, indent=2))
+        return
+    console = Console()
+    console.print(
+        f"[bold]{escape(model.name)}[/] / {escape(stack.name)}: {n} x {n} nodes, "
+        + escape(
+            f"{x_axis.title} {x_axis.start:g}..{x_axis.stop:g}, "
+            f"{y_axis.title} {y_axis.start:g}..{y_axis.stop:g} "
+            f"(other inputs from excitation {nominal.name!r})"
+        )
+    )
+    for m, pts in zip(maps, points, strict=True):
+        table = Table(title=f"sense {_sense_word(m.sense)}: share of the map")
+        table.add_column("region")
+        table.add_column("share", justify="right")
+        for label, share in m.fractions().items():
+            table.add_row(label, f"{100 * share:.1f} %")
+        console.print(table)
+        if m.ambiguous.any():
+            console.print(
+                f"[yellow]{int(m.ambiguous.sum())} node(s) ambiguous[/] (several admissible "
+                "states; the rule's choice is shown)"
+            )
+        for name, px, py in pts:
+            console.print(f"  {name} ({px:g}, {py:g}): {m.label_at(px, py)}")
+    for path in (plot, csv_path):
+        if path:
+            console.print(f"wrote {path}")
+
+
+def sample_command(
+    model_file: Path = typer.Argument(..., help="Model file (TOML).", show_default=False),
+    vary: list[str] = typer.Option(
+        None,
+        "--vary",
+        help='Uncertain input NAME=DISTRIBUTION, e.g. "friction.static=uniform(0.15,0.35)" '
+        "(repeatable; += adds to, *= scales the model's value).",
+    ),
+    n: int = typer.Option(100000, "--n", help="Samples per case."),
+    seed: int = typer.Option(0, "--seed", help="Random seed."),
+    configuration: list[str] = typer.Option(
+        None, "--configuration", "-c", help="Only this configuration (repeatable)."
+    ),
+    excitation: list[str] = typer.Option(
+        None, "--excitation", "-e", help="Only this excitation (repeatable)."
+    ),
+    sense: str = typer.Option("both", "--sense", help="Sense of the inertial force: +, - or both."),
+    confidence: float = typer.Option(0.95, "--confidence", help="Confidence level."),
+    interval: str = typer.Option(
+        "wilson", "--interval", help="Confidence interval: wilson or clopper-pearson."
+    ),
+    samples_path: Path = typer.Option(
+        None, "--samples", help="Write every sample and its motions (.csv, or .parquet)."
+    ),
+    as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
+) -> None:
+    """Monte Carlo over uncertain inputs: probability of each initial motion."""
+    model = load_model(model_file)
+    stacks = (
+        [model.configuration(name) for name in configuration]
+        if configuration
+        else list(model.configurations)
+    )
+    if excitation:
+        known = {e.name: e for e in model.excitations}
+        for name in excitation:
+            if name not in known:
+                raise FreestandError(
+                    f"no excitation named {name!r}; choose one of "
+                    + ", ".join(repr(e) for e in known),
+                    source="option --excitation",
+                )
+        excitations = [known[name] for name in excitation]
+    else:
+        excitations = list(model.excitations)
+    if n < 1:
+        raise FreestandError(f"{n} samples: give at least 1", source="option --n")
+    if not 0 < confidence < 1:
+        raise FreestandError(
+            f"{confidence} is not a confidence level; give a number between 0 and 1, e.g. 0.95",
+            source="option --confidence",
+        )
+    if interval not in INTERVALS:
+        raise FreestandError(
+            f"{interval!r} is not an interval; use {' or '.join(INTERVALS)}",
+            source="option --interval",
+        )
+    if samples_path and samples_path.suffix.lower() not in (".csv", ".parquet"):
+        raise FreestandError(
+            f"{str(samples_path)!r} has no .csv or .parquet suffix; name the file e.g. samples.csv",
+            source="option --samples",
+        )
+    variations = [parse_variation(text, "--vary", model.gravity) for text in vary or []]
+    check_parameters(
+        [(v.parameter, text) for v, text in zip(variations, vary or [], strict=True)],
+        stacks,
+        "--vary",
+    )
+    senses = _senses(sense)
+    total = n * len(stacks) * len(excitations) * len(senses)
+    with _progress(total, "sampling", as_json) as advance:
+        sweep = monte_carlo(
+            stacks,
+            excitations,
+            variations,
+            n,
+            seed,
+            model.gravity,
+            senses,
+            confidence,
+            interval,
+            advance,
+        )
+    if samples_path:
+        _write_samples(sweep, samples_path)
+    if as_json:
+        typer.echo(json.dumps(_sweep_document(model.name, sweep), indent=2))
+        return
+    console = Console()
+    if not console.is_terminal:
+        console = Console(width=120)
+    console.print(
+        f"[bold]{model.name}[/]: {n} samples per case, seed {seed}, "
+        f"{int(100 * confidence)} % {interval} intervals"
+    )
+    for variation in variations:
+        console.print(f"  {variation.describe()}")
+    table = Table(title="Probability of each initial motion")
+    for header in ("configuration", "excitation", "sense", "block", "motion"):
+        table.add_column(header)
+    table.add_column("probability", justify="right")
+    table.add_column("interval", justify="right")
+    for case in sweep.cases:
+        for item in case.motions:
+            table.add_row(
+                case.configuration,
+                case.excitation,
+                _sense_word(case.sense),
+                item.block,
+                item.outcome,
+                f"{item.probability:.4f}",
+                f"{item.low:.4f} - {item.high:.4f}",
+            )
+    console.print(table)
+    for case in sweep.cases:
+        flags = [f"{s.outcome} {s.probability:.4f}" for s in case.statuses if s.outcome != "unique"]
+        if case.invalid:
+            flags.append(f"{case.invalid} invalid sample(s) left out")
+        if flags:
+            console.print(
+                f"[yellow]{case.configuration} / {case.excitation} / "
+                f"{_sense_word(case.sense)}:[/] " + ", ".join(flags)
+            )
+    if samples_path:
+        console.print(f"wrote {samples_path}")
+
+
+def _sweep_document(model_name: str, sweep) -> dict:
+    def probability(item):
+        return {
+            "outcome": item.outcome,
+            "block": item.block,
+            "count": item.count,
+            "total": item.total,
+            "probability": item.probability,
+            "interval": [item.low, item.high],
+        }
+
+    return {
+        "model": model_name,
+        "seed": sweep.seed,
+        "confidence": sweep.confidence,
+        "interval": sweep.interval,
+        "variations": [v.describe() for v in sweep.variations],
+        "cases": [
+            {
+                "configuration": case.configuration,
+                "excitation": case.excitation,
+                "sense": _sense_word(case.sense),
+                "samples": case.samples,
+                "invalid": case.invalid,
+                "motions": [probability(item) for item in case.motions],
+                "states": [probability(item) for item in case.states],
+                "statuses": [probability(item) for item in case.statuses],
+            }
+            for case in sweep.cases
+        ],
+    }
+
+
+def _sample_columns(sweep) -> dict[str, np.ndarray]:
+    columns: dict[str, list] = {}
+    n = len(sweep.samples[0]) if sweep.samples else sweep.cases[0].samples
+    for case in sweep.cases:
+        result = case.result
+        columns.setdefault("configuration", []).append(np.full(n, case.configuration, dtype=object))
+        columns.setdefault("excitation", []).append(np.full(n, case.excitation, dtype=object))
+        columns.setdefault("sense", []).append(np.full(n, _sense_word(case.sense), dtype=object))
+        columns.setdefault("sample", []).append(np.arange(n))
+        for variation, values in zip(sweep.variations, sweep.samples, strict=True):
+            columns.setdefault(variation.parameter.label, []).append(values)
+        columns.setdefault("status", []).append(np.array(STATUS_NAMES, dtype=object)[result.status])
+        motion_names = np.array([m.value for m in MOTIONS] + [""], dtype=object)
+        for b, name in enumerate(result.names):
+            columns.setdefault(f"{name}.motion", []).append(motion_names[result.motion[:, b]])
+            columns.setdefault(f"{name}.slide_direction", []).append(result.slide_direction[:, b])
+    return {key: np.concatenate(parts) for key, parts in columns.items()}
+
+
+def _write_samples(sweep, path: Path) -> None:
+    columns = _sample_columns(sweep)
+    if path.suffix.lower() == ".parquet":
+        try:
+            import pyarrow as pa
+            import pyarrow.parquet as pq
+        except ImportError:
+            raise FreestandError(
+                "writing Parquet needs pyarrow, which is not installed; install it or "
+                "write a .csv file instead",
+                source="option --samples",
+            ) from None
+        pq.write_table(pa.table({k: list(v) for k, v in columns.items()}), path)
+        return
+    keys = list(columns)
+    with path.open("w", newline="") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(keys)
+        writer.writerows(zip(*(columns[k] for k in keys), strict=True))
+
+
+def register(app: typer.Typer) -> None:
+    """Add the commands of this module to ``app``."""
+    app.command("map")(map_command)
+    app.command("sample")(sample_command)
