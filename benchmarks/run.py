@@ -1,0 +1,30 @@
+"""Run every benchmark script in this folder and print its figures.
+
+Usage: ``make bench`` (or ``python benchmarks/run.py [NAME ...]``).
+Benchmarks are kept apart from the tests: they print timings, they never
+assert them.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+
+
+def main(names: list[str]) -> int:
+    scripts = sorted(p for p in HERE.glob("*.py") if p.name != "run.py")
+    if names:
+        scripts = [p for p in scripts if p.stem in names]
+    status = 0
+    for script in scripts:
+        print(f"=== {script.stem}", flush=True)
+        result = subprocess.run([sys.executable, str(script)], check=False)
+        status = status or result.returncode
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
