@@ -881,9 +881,9 @@ class MinimumAmplitudeResult:
     ----------
     kind : str
         Pulse kind (see :class:`Pulse`).
-    frequency : numpy.ndarray
-        Pulse frequencies f [Hz].
-    amplitude : numpy.ndarray
+    frequency : numpy.ndarray or float
+        Pulse frequencies f [Hz] (floats throughout for a scalar frequency).
+    amplitude : numpy.ndarray or float
         Lowest overturning amplitude at each frequency [m/s^2]; ``inf`` where
         none was found up to the search limit.
     found : numpy.ndarray
@@ -984,11 +984,21 @@ def exact_minimum_overturning_amplitude(
     status = np.empty(f.size, dtype=np.int64)
     _min_amplitude_many(par, kind, omegas, a_lo, a_hi, scan_ratio, rel_tol, h, result, status)
     shape = np.shape(frequency)
+    found = status == 0
+    if not shape:
+        return MinimumAmplitudeResult(
+            kind=pulse_kind,
+            frequency=float(f[0]),
+            amplitude=float(result[0]),
+            found=bool(found[0]),
+            search_limit=float(a_hi[0]),
+            rel_tol=rel_tol,
+        )
     return MinimumAmplitudeResult(
         kind=pulse_kind,
-        frequency=f.reshape(shape) if shape else f,
-        amplitude=result.reshape(shape) if shape else result,
-        found=(status == 0).reshape(shape) if shape else status == 0,
-        search_limit=a_hi.reshape(shape) if shape else a_hi,
+        frequency=f.reshape(shape),
+        amplitude=result.reshape(shape),
+        found=found.reshape(shape),
+        search_limit=a_hi.reshape(shape),
         rel_tol=rel_tol,
     )
