@@ -1,0 +1,1004 @@
+"""Exact nonlinear rocking of a rigid block with impacts (numba-compiled).
+
+The block of :class:`freestand.core.rocking.RockingBlock` rocks about ``pivot``
+(rotation theta > 0) or about ``other_pivot`` (theta < 0). About the pivot of
+side s = sgn(theta), with b_s, h_s, R_s, alpha_s, I_s its geometry and
+inertia, the equation of motion is the equation of Zhang and Makris (2001,
+eqs. 10-12) generalised to two different pivots:
+
+    I_s theta'' = m R_s [ -s g' sin(alpha_s - s theta) + u''(t) cos(alpha_s - s theta) ],
+
+with g' = g - a_v the effective gravity and u''(t) the support acceleration
+counted positive when its inertial force points from the centre of gravity
+towards ``pivot`` (Zhang and Makris's sign is the opposite, theta -> -theta).
+Rocking starts from rest when u'' > g' tan(alpha_+) (about ``pivot``) or
+u'' < -g' tan(alpha_-) (about ``other_pivot``). When theta returns to zero the
+block impacts on the other pivot; the angular velocity is multiplied by the
+ratio from conservation of angular momentum about the new pivot (Housner 1963,
+eq. 4; :meth:`RockingBlock.restitution_onto`).
+
+Integration: classical fourth-order Runge-Kutta with a fixed step, steps cut to
+land exactly on the end of the pulse (and on the samples of a record), and the
+instants of impact and of the start of rocking located exactly (regula falsi
+on the Runge-Kutta step map, bisection on the excitation).
+
+Overturning: while the excitation acts, the block has overturned only when it
+lies on its side (s theta >= pi/2); passing |theta| = alpha is not enough, as
+the rest of the pulse may bring it back. Once the excitation has ended the
+motion is free and the outcome follows from energy: the block overturns if it
+reaches the position of no return (s theta = alpha_s) with energy to spare,
+possibly after an impact (impacts only remove energy).
+
+References
+----------
+.. [1] G. W. Housner, Bull. Seismol. Soc. Am. 53(2), 403-417, 1963.
+.. [2] J. Zhang and N. Makris, "Rocking response of free-standing blocks under
+   cycloidal pulses", J. Eng. Mech. 127(5), 473-483, 2001.
+.. [3] N. Makris and Y. Roussos, Geotechnique 50(3), 243-262, 2000.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numba as nb
+import numpy as np
+
+from freestand.core.rocking import RockingBlock
+from freestand.errors import FreestandError
+
+#: Pulse kinds and their integer codes in the compiled code.
+PULSE_KINDS = {"rectangular": 0, "half-sine": 1, "one-sine": 2, "one-cosine": 3}
+_RECORD = 4
+_NONE = 5
+
+#: Default time step as a fraction of the shortest time scale (1/p, pulse length / 400).
+_STEPS_PER_PULSE = 400.0
+_STEP_TIMES_P = 0.02
+
+_HALF_PI = 0.5 * math.pi
+
+
+# ------------------------------------------------------------------------------------
+# compiled kernels
+# ------------------------------------------------------------------------------------
+@nb.njit(cache=True)
+def _accel(kind, exc, rec, t, in_pulse):
+    """Support acceleration [m/s^2] at time t (zero once the excitation has ended)."""
+    if not in_pulse:
+        return 0.0
+    amp = exc[0]
+    w = exc[1]
+    if kind == 0:
+        return amp
+    if kind == 1 or kind == 2:
+        return amp * math.sin(w * t)
+    if kind == 3:
+        return amp * math.cos(w * t)
+    if kind == 4:
+        dt = exc[3]
+        n = rec.shape[0]
+        x = t / dt
+        i = int(math.floor(x))
+        if i < 0:
+            i = 0
+        if i > n - 2:
+            i = n - 2
+        frac = x - i
+        return rec[i] + frac * (rec[i + 1] - rec[i])
+    return 0.0
+
+
+@nb.njit(cache=True)
+def _rhs(par, side, theta, a):
+    """Angular acceleration [rad/s^2] on ``side`` (+1 pivot, -1 other pivot)."""
+    g = par[0]
+    if side > 0:
+        k = par[1]
+        al = par[2]
+    else:
+        k = par[5]
+        al = par[6]
+    phi = al - side * theta
+    return k * (-side * g * math.sin(phi) + a * math.cos(phi))
+
+
+@nb.njit(cache=True)
+def _rk4(par, kind, exc, rec, side, t, theta, omega, h, in_pulse):
+    a0 = _accel(kind, exc, rec, t, in_pulse)
+    am = _accel(kind, exc, rec, t + 0.5 * h, in_pulse)
+    a1 = _accel(kind, exc, rec, t + h, in_pulse)
+    k1t = omega
+    k1w = _rhs(par, side, theta, a0)
+    k2t = omega + 0.5 * h * k1w
+    k2w = _rhs(par, side, theta + 0.5 * h * k1t, am)
+    k3t = omega + 0.5 * h * k2w
+    k3w = _rhs(par, side, theta + 0.5 * h * k2t, am)
+    k4t = omega + h * k3w
+    k4w = _rhs(par, side, theta + h * k3t, a1)
+    th = theta + h / 6.0 * (k1t + 2.0 * k2t + 2.0 * k3t + k4t)
+    om = omega + h / 6.0 * (k1w + 2.0 * k2w + 2.0 * k3w + k4w)
+    return th, om
+
+
+@nb.njit(cache=True)
+def _side_params(par, side):
+    if side > 0:
+        return par[2], par[3], par[4]
+    return par[6], par[7], par[8]
+
+
+@nb.njit(cache=True)
+def _free_decision(par, theta, omega):
+    """Outcome of free rocking (no excitation) from (theta, omega).
+
+    Returns (overturned, margin); margin is the largest ratio of the kinetic
+    energy at theta = 0 on a side to the energy barrier of that side (>= 1 means
+    overturning).
+    """
+    g = par[0]
+    if theta > 0.0:
+        s = 1
+    elif theta < 0.0:
+        s = -1
+    elif omega > 0.0:
+        s = 1
+    elif omega < 0.0:
+        s = -1
+    else:
+        return False, 0.0
+    al, R, J = _side_params(par, s)
+    phi = s * theta
+    v = s * omega
+    e_top = g * R
+    e_rest = g * R * math.cos(al)
+    energy = 0.5 * J * v * v + g * R * math.cos(al - phi)
+    margin = (energy - e_rest) / (e_top - e_rest)
+    if phi >= al:
+        if v >= 0.0 or energy <= e_top:
+            return True, max(margin, 1.0)
+    elif v > 0.0 and energy > e_top:
+        return True, margin
+    ke0 = energy - e_rest
+    if ke0 < 0.0:
+        ke0 = 0.0
+    w0 = math.sqrt(2.0 * ke0 / J)
+    # at most two more impacts matter: each impact removes energy
+    for _ in range(2):
+        e = par[9] if s > 0 else par[10]
+        if e <= 0.0:
+            return False, margin
+        w0 = e * w0
+        s = -s
+        al, R, J = _side_params(par, s)
+        ratio = 0.5 * J * w0 * w0 / (g * R * (1.0 - math.cos(al)))
+        if ratio > margin:
+            margin = ratio
+        if ratio > 1.0:
+            return True, margin
+    return False, margin
+
+
+@nb.njit(cache=True)
+def _simulate(
+    par,
+    kind,
+    exc,
+    rec,
+    theta0,
+    omega0,
+    t_stop,
+    h_max,
+    decide,
+    hist_t,
+    hist_th,
+    hist_om,
+    imp_log,
+    out,
+):
+    """Integrate the rocking motion; see :func:`simulate` for the meaning.
+
+    out: [overturned, t_overturned, max|theta|, impacts, margin, rocked,
+    theta, omega, t, n_history, uplift time, status]; status 0 rest,
+    1 rocking, 2 overturned, 3 decided safe after the excitation.
+    """
+    g = par[0]
+    thr_p = g * math.tan(par[2])
+    thr_m = g * math.tan(par[6])
+    dur = exc[2]
+    rec_dt = exc[3]
+    t = 0.0
+    theta = theta0
+    omega = omega0
+    in_pulse = kind != 5 and dur > 0.0
+    resting = theta == 0.0 and omega == 0.0
+    side = 1
+    if theta < 0.0 or (theta == 0.0 and omega < 0.0):
+        side = -1
+    n_hist = 0
+    n_hist_max = hist_t.shape[0]
+    n_imp = 0
+    n_imp_max = imp_log.shape[0]
+    max_abs = abs(theta)
+    rocked = not resting
+    t_uplift = 0.0 if rocked else math.nan
+    overturned = False
+    t_over = math.nan
+    margin = 0.0
+    status = 0
+    tiny_w = 1e-12 * math.sqrt(max(par[1], par[5]) * g)
+    if n_hist < n_hist_max:
+        hist_t[n_hist] = t
+        hist_th[n_hist] = theta
+        hist_om[n_hist] = omega
+        n_hist += 1
+    while True:
+        if in_pulse and t >= dur * (1.0 - 1e-13):
+            in_pulse = False
+            t = dur
+        if decide and not in_pulse:
+            if resting:
+                status = 0
+                margin = 0.0
+            else:
+                overturned, margin = _free_decision(par, theta, omega)
+                status = 2 if overturned else 3
+                if overturned:
+                    t_over = math.nan
+            break
+        if t >= t_stop * (1.0 - 1e-13):
+            status = 0 if resting else 1
+            break
+        t_target = t_stop
+        if in_pulse and dur < t_target:
+            t_target = dur
+        h = min(h_max, t_target - t)
+        if kind == 4 and in_pulse:
+            node = (math.floor(t / rec_dt * (1.0 + 1e-13)) + 1.0) * rec_dt
+            if node - t < 1e-9 * rec_dt:
+                node += rec_dt
+            if node - t < h:
+                h = node - t
+        if h <= 0.0:
+            h = t_target - t
+            if h <= 0.0:
+                t = t_target
+                continue
+        if resting:
+            a_now = _accel(kind, exc, rec, t, in_pulse)
+            if a_now > thr_p or a_now < -thr_m:
+                side = 1 if a_now > thr_p else -1
+                resting = False
+                if not rocked:
+                    rocked = True
+                    t_uplift = t
+                continue
+            a_end = _accel(kind, exc, rec, t + h, in_pulse)
+            if a_end > thr_p or a_end < -thr_m:
+                lo = t
+                hi = t + h
+                for _ in range(200):
+                    mid = 0.5 * (lo + hi)
+                    if mid <= lo or mid >= hi:
+                        break
+                    am = _accel(kind, exc, rec, mid, in_pulse)
+                    if am > thr_p or am < -thr_m:
+                        hi = mid
+                    else:
+                        lo = mid
+                t = hi
+                a_on = _accel(kind, exc, rec, t, in_pulse)
+                side = 1 if a_on > 0.0 else -1
+                resting = False
+                if not rocked:
+                    rocked = True
+                    t_uplift = t
+                continue
+            t = t + h
+            continue
+        th1, om1 = _rk4(par, kind, exc, rec, side, t, theta, omega, h, in_pulse)
+        if side * th1 < 0.0:
+            # impact within the step: find the first zero of theta in (0, h]
+            lo = 0.0
+            if side * theta <= 0.0:
+                # starting at theta = 0 (just after an impact or uplift): find a
+                # point inside the step where the block is off its base
+                acc0 = _rhs(par, side, theta, _accel(kind, exc, rec, t, in_pulse))
+                guess = h
+                if side * acc0 < 0.0 and omega != 0.0:
+                    guess = min(h, -2.0 * omega / acc0)
+                found = False
+                trial = 0.5 * guess
+                for _ in range(60):
+                    tht, _omt = _rk4(par, kind, exc, rec, side, t, theta, omega, trial, in_pulse)
+                    if side * tht > 0.0:
+                        found = True
+                        break
+                    trial *= 0.5
+                if not found:
+                    # flight too short to resolve: the block settles on its base
+                    resting = True
+                    theta = 0.0
+                    omega = 0.0
+                    continue
+                lo = trial
+            hi = h
+            th_lo, _w = _rk4(par, kind, exc, rec, side, t, theta, omega, lo, in_pulse)
+            if lo == 0.0:
+                th_lo = theta
+            th_hi = th1
+            side_lo = 0
+            tau = hi
+            for _ in range(100):
+                tau = (lo * th_hi - hi * th_lo) / (th_hi - th_lo)
+                if not (lo < tau < hi):
+                    tau = 0.5 * (lo + hi)
+                th_t, _w = _rk4(par, kind, exc, rec, side, t, theta, omega, tau, in_pulse)
+                if th_t == 0.0 or hi - lo < 1e-15 * h:
+                    break
+                if side * th_t > 0.0:
+                    lo = tau
+                    th_lo = th_t
+                    if side_lo == 1:
+                        th_hi *= 0.5
+                    side_lo = 1
+                else:
+                    hi = tau
+                    th_hi = th_t
+                    if side_lo == -1:
+                        th_lo *= 0.5
+                    side_lo = -1
+                if abs(th_t) < 1e-16:
+                    break
+            _th, w_before = _rk4(par, kind, exc, rec, side, t, theta, omega, tau, in_pulse)
+            e = par[9] if side > 0 else par[10]
+            w_after = e * w_before if e > 0.0 else 0.0
+            t = t + tau
+            if n_imp < n_imp_max:
+                imp_log[n_imp, 0] = t
+                imp_log[n_imp, 1] = w_before
+                imp_log[n_imp, 2] = w_after
+            n_imp += 1
+            theta = 0.0
+            side = -side
+            omega = w_after
+            if abs(omega) <= tiny_w:
+                omega = 0.0
+                resting = True
+        else:
+            t = t + h
+            theta = th1
+            omega = om1
+        if abs(theta) > max_abs:
+            max_abs = abs(theta)
+        if n_hist < n_hist_max:
+            hist_t[n_hist] = t
+            hist_th[n_hist] = theta
+            hist_om[n_hist] = omega
+            n_hist += 1
+        if side * theta >= _HALF_PI:
+            overturned = True
+            t_over = t
+            margin = 2.0
+            status = 2
+            break
+    out[0] = 1.0 if overturned else 0.0
+    out[1] = t_over
+    out[2] = max_abs
+    out[3] = n_imp
+    out[4] = margin
+    out[5] = 1.0 if rocked else 0.0
+    out[6] = theta
+    out[7] = omega
+    out[8] = t
+    out[9] = n_hist
+    out[10] = t_uplift
+    out[11] = status
+
+
+@nb.njit(cache=True)
+def _outcome(par, kind, exc, rec, h_max):
+    """(overturned, margin) for one excitation (decide mode, no history)."""
+    ht = np.empty(0)
+    hth = np.empty(0)
+    hom = np.empty(0)
+    imp = np.empty((0, 3))
+    out = np.empty(12)
+    _simulate(par, kind, exc, rec, 0.0, 0.0, exc[2], h_max, True, ht, hth, hom, imp, out)
+    return out[0] > 0.5, out[4]
+
+
+@nb.njit(cache=True)
+def _pulse_exc(kind, amp, omega):
+    exc = np.zeros(4)
+    exc[0] = amp
+    exc[1] = omega
+    if kind == 1:
+        exc[2] = math.pi / omega
+    else:
+        exc[2] = 2.0 * math.pi / omega
+    return exc
+
+
+@nb.njit(cache=True)
+def _bisect_amplitude(par, kind, omega, rec, lo, hi, rel_tol, h_max):
+    """Bisect between a safe amplitude lo and an overturning amplitude hi."""
+    for _ in range(200):
+        if hi - lo <= rel_tol * hi:
+            break
+        mid = 0.5 * (lo + hi)
+        ov, _m = _outcome(par, kind, _pulse_exc(kind, mid, omega), rec, h_max)
+        if ov:
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
+@nb.njit(cache=True)
+def _min_amplitude_one(par, kind, omega, a_lo, a_hi, ratio, rel_tol, h_max):
+    """Lowest overturning amplitude of a pulse at angular frequency omega.
+
+    March up in amplitude by ``ratio`` from ``a_lo`` (no rocking); at the
+    first overturning amplitude bisect back. Between grid points, a local
+    maximum of the overturning margin is refined by golden-section search so
+    that a narrow overturning band below the first grid crossing is not
+    missed. Returns (amplitude, status): status 0 found, 1 none up to a_hi.
+    """
+    rec = np.empty(0)
+    a_pp = a_lo
+    m_pp = -1.0
+    a_p = a_lo
+    _ov, m_p = _outcome(par, kind, _pulse_exc(kind, a_lo, omega), rec, h_max)
+    a = a_lo * ratio
+    gr = 0.5 * (math.sqrt(5.0) - 1.0)
+    while a <= a_hi * ratio:
+        ov, m = _outcome(par, kind, _pulse_exc(kind, a, omega), rec, h_max)
+        # a local maximum of the margin at the previous grid point
+        if m_p > 0.2 and m_p > m_pp and m_p >= m:
+            x0 = a_pp
+            x3 = a
+            x1 = x3 - gr * (x3 - x0)
+            x2 = x0 + gr * (x3 - x0)
+            o1, f1 = _outcome(par, kind, _pulse_exc(kind, x1, omega), rec, h_max)
+            o2, f2 = _outcome(par, kind, _pulse_exc(kind, x2, omega), rec, h_max)
+            hit = -1.0
+            if o1:
+                hit = x1
+            elif o2:
+                hit = x2
+            it = 0
+            while hit < 0.0 and it < 40 and (x3 - x0) > 1e-9 * x3:
+                if f1 >= f2:
+                    x3 = x2
+                    x2 = x1
+                    f2 = f1
+                    x1 = x3 - gr * (x3 - x0)
+                    o1, f1 = _outcome(par, kind, _pulse_exc(kind, x1, omega), rec, h_max)
+                    if o1:
+                        hit = x1
+                else:
+                    x0 = x1
+                    x1 = x2
+                    f1 = f2
+                    x2 = x0 + gr * (x3 - x0)
+                    o2, f2 = _outcome(par, kind, _pulse_exc(kind, x2, omega), rec, h_max)
+                    if o2:
+                        hit = x2
+                it += 1
+            if hit > 0.0:
+                return _bisect_amplitude(par, kind, omega, rec, a_pp, hit, rel_tol, h_max), 0
+        if ov:
+            return _bisect_amplitude(par, kind, omega, rec, a_p, a, rel_tol, h_max), 0
+        a_pp = a_p
+        m_pp = m_p
+        a_p = a
+        m_p = m
+        a = a * ratio
+    return math.inf, 1
+
+
+@nb.njit(cache=True, parallel=True)
+def _min_amplitude_many(par, kind, omegas, a_lo, a_his, ratio, rel_tol, h_maxs, result, status):
+    for i in nb.prange(omegas.shape[0]):
+        a, s = _min_amplitude_one(par, kind, omegas[i], a_lo, a_his[i], ratio, rel_tol, h_maxs[i])
+        result[i] = a
+        status[i] = s
+
+
+@nb.njit(cache=True)
+def _rect_overturns(par, amp, duration, h_max):
+    exc = np.zeros(4)
+    exc[0] = amp
+    exc[2] = duration
+    ov, _m = _outcome(par, 0, exc, np.empty(0), h_max)
+    return ov
+
+
+@nb.njit(cache=True, parallel=True)
+def _rect_duration_many(par, amps, t_guess, h_p, rel_tol, result):
+    thr = par[0] * math.tan(par[2])
+    for i in nb.prange(amps.shape[0]):
+        amp = amps[i]
+        if not amp > thr:
+            result[i] = math.inf
+            continue
+        lo = 0.0
+        hi = t_guess[i]
+        found = False
+        for _ in range(80):
+            h = min(hi / _STEPS_PER_PULSE, h_p)
+            if _rect_overturns(par, amp, hi, h):
+                found = True
+                break
+            lo = hi
+            hi = 2.0 * hi
+        if not found:
+            result[i] = math.inf
+            continue
+        for _ in range(200):
+            if hi - lo <= rel_tol * hi:
+                break
+            mid = 0.5 * (lo + hi)
+            h = min(mid / _STEPS_PER_PULSE, h_p)
+            if _rect_overturns(par, amp, mid, h):
+                hi = mid
+            else:
+                lo = mid
+        result[i] = hi
+
+
+# ------------------------------------------------------------------------------------
+# Python API
+# ------------------------------------------------------------------------------------
+def block_parameters(block: RockingBlock) -> np.ndarray:
+    """Flat parameter vector of ``block`` for the compiled kernels.
+
+    [g', mR/I and alpha, R, I/m about ``pivot``, the same about
+    ``other_pivot``, restitution onto the other pivot, onto ``pivot``].
+    """
+    plus = block.about("pivot")
+    minus = block.about("other")
+    m = block.mass
+    return np.array(
+        [
+            block.effective_gravity,
+            m * plus.R / plus.inertia_about_pivot,
+            plus.alpha,
+            plus.R,
+            plus.inertia_about_pivot / m,
+            m * minus.R / minus.inertia_about_pivot,
+            minus.alpha,
+            minus.R,
+            minus.inertia_about_pivot / m,
+            block.restitution_onto("other"),
+            block.restitution_onto("pivot"),
+        ]
+    )
+
+
+@dataclass(frozen=True)
+class Pulse:
+    """A single acceleration pulse of the support.
+
+    Parameters
+    ----------
+    kind : str
+        ``"rectangular"`` (a for 0 <= t <= duration), ``"half-sine"``
+        (a sin(omega t), 0 <= t <= pi/omega), ``"one-sine"`` (Zhang and Makris
+        2001 type A, a sin(omega t), 0 <= t <= 2 pi/omega) or ``"one-cosine"``
+        (type B, a cos(omega t), 0 <= t <= 2 pi/omega).
+    amplitude : float
+        Peak acceleration a [m/s^2]; positive tips the block over ``pivot``.
+    frequency : float, optional
+        f = omega / (2 pi) [Hz] of the sine (not for ``"rectangular"``).
+    duration : float, optional
+        Duration [s] of a rectangular pulse.
+    """
+
+    kind: str
+    amplitude: float
+    frequency: float | None = None
+    duration: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.kind not in PULSE_KINDS:
+            raise FreestandError(
+                f"unknown pulse kind {self.kind!r}; use one of {', '.join(PULSE_KINDS)}",
+                field="pulse",
+            )
+        if self.kind == "rectangular":
+            if self.duration is None or not self.duration > 0:
+                raise FreestandError(
+                    f"a rectangular pulse needs a positive duration, got {self.duration!r}",
+                    field="duration",
+                )
+        elif self.frequency is None or not self.frequency > 0:
+            raise FreestandError(
+                f"a {self.kind} pulse needs a positive frequency [Hz], got {self.frequency!r}",
+                field="frequency",
+            )
+
+    @property
+    def omega(self) -> float:
+        """Angular frequency [rad/s] (0 for a rectangular pulse)."""
+        return 0.0 if self.kind == "rectangular" else 2 * math.pi * float(self.frequency)
+
+    @property
+    def length(self) -> float:
+        """Time the pulse lasts [s]."""
+        if self.kind == "rectangular":
+            return float(self.duration)
+        if self.kind == "half-sine":
+            return math.pi / self.omega
+        return 2 * math.pi / self.omega
+
+
+@dataclass(frozen=True)
+class SampledAcceleration:
+    """A support acceleration record, linear between uniformly spaced samples.
+
+    Parameters
+    ----------
+    values : numpy.ndarray
+        Acceleration samples [m/s^2] at t = 0, dt, 2 dt, ...; positive tips the
+        block over ``pivot``. Zero after the last sample.
+    dt : float
+        Sample spacing [s].
+    """
+
+    values: np.ndarray
+    dt: float
+
+    def __post_init__(self) -> None:
+        v = np.ascontiguousarray(self.values, dtype=float)
+        if v.ndim != 1 or v.size < 2 or not np.all(np.isfinite(v)):
+            raise ValueError("values must be a finite 1-D array of at least two samples")
+        if not self.dt > 0:
+            raise ValueError(f"dt must be positive, got {self.dt!r}")
+        object.__setattr__(self, "values", v)
+
+    @property
+    def length(self) -> float:
+        """Duration of the record [s]."""
+        return (self.values.size - 1) * self.dt
+
+
+@dataclass(frozen=True)
+class RockingResult:
+    """What happened to a block under one excitation.
+
+    Parameters
+    ----------
+    overturned : bool
+        Whether the block overturned.
+    status : str
+        ``"rest"`` (at rest at the end), ``"rocking"`` (still rocking at the
+        end of the simulated time), ``"overturned"`` or ``"safe"`` (decided
+        from energy once the excitation had ended, without further
+        integration).
+    time_overturned : float
+        Time the block came to lie on its side, |theta| = pi/2 [s]; NaN if it
+        did not overturn or if the outcome was decided from energy.
+    time_uplift : float
+        Time rocking started [s]; NaN if it never did.
+    rocked : bool
+        Whether the block left its rest position.
+    max_abs_rotation : float
+        Largest |theta| reached [rad].
+    impacts : int
+        Number of impacts.
+    margin : float
+        Largest ratio, after the excitation, of the kinetic energy at
+        theta = 0 to the energy barrier of the side it rocks on [-]; >= 1 for
+        overturning, 2 when the block came to lie on its side.
+    final_time, final_rotation, final_angular_velocity : float
+        State at the end [s, rad, rad/s].
+    time, rotation, angular_velocity : numpy.ndarray or None
+        History at every step [s, rad, rad/s] if requested.
+    impact_log : numpy.ndarray or None
+        One row per impact: time [s], angular velocity before and after
+        [rad/s] (if a history was requested).
+    """
+
+    overturned: bool
+    status: str
+    time_overturned: float
+    time_uplift: float
+    rocked: bool
+    max_abs_rotation: float
+    impacts: int
+    margin: float
+    final_time: float
+    final_rotation: float
+    final_angular_velocity: float
+    time: np.ndarray | None = None
+    rotation: np.ndarray | None = None
+    angular_velocity: np.ndarray | None = None
+    impact_log: np.ndarray | None = None
+
+
+_STATUS = {0: "rest", 1: "rocking", 2: "overturned", 3: "safe"}
+
+
+def _excitation_arrays(excitation) -> tuple[int, np.ndarray, np.ndarray]:
+    if excitation is None:
+        return _NONE, np.zeros(4), np.empty(0)
+    if isinstance(excitation, Pulse):
+        exc = np.array([excitation.amplitude, excitation.omega, excitation.length, 0.0])
+        return PULSE_KINDS[excitation.kind], exc, np.empty(0)
+    if isinstance(excitation, SampledAcceleration):
+        exc = np.array([0.0, 0.0, excitation.length, excitation.dt])
+        return _RECORD, exc, excitation.values
+    raise TypeError(f"excitation must be a Pulse, a SampledAcceleration or None, not {excitation!r}")
+
+
+def default_step(block: RockingBlock, excitation=None) -> float:
+    """Default fixed time step [s]: 0.02 / p and 1/400 of a pulse, whichever is smaller."""
+    p = max(block.about("pivot").p, block.about("other").p)
+    h = _STEP_TIMES_P / p
+    if isinstance(excitation, Pulse):
+        h = min(h, excitation.length / _STEPS_PER_PULSE)
+    if isinstance(excitation, SampledAcceleration):
+        h = min(h, excitation.dt / 4.0)
+    return h
+
+
+def simulate(
+    block: RockingBlock,
+    excitation: Pulse | SampledAcceleration | None,
+    *,
+    t_end: float | None = None,
+    theta0: float = 0.0,
+    omega0: float = 0.0,
+    history: bool = False,
+    max_step: float | None = None,
+    decide: bool = False,
+    max_history: int = 2_000_000,
+    max_impact_log: int = 100_000,
+) -> RockingResult:
+    """Rocking response of ``block`` to a support acceleration.
+
+    Parameters
+    ----------
+    block : RockingBlock
+        The block.
+    excitation : Pulse or SampledAcceleration or None
+        Support acceleration (zero after its end); None for free rocking.
+    t_end : float, optional
+        End of the simulation [s]; by default the end of the excitation plus
+        ten periods 2 pi / p of free rocking.
+    theta0, omega0 : float, optional
+        Initial rotation [rad] and angular velocity [rad/s].
+    history : bool, optional
+        Keep the state at every step and a log of impacts.
+    max_step : float, optional
+        Time step [s] (default :func:`default_step`).
+    decide : bool, optional
+        Stop as soon as the excitation has ended and decide the outcome from
+        energy (faster; no time of overturning).
+
+    Returns
+    -------
+    RockingResult
+    """
+    kind, exc, rec = _excitation_arrays(excitation)
+    par = block_parameters(block)
+    length = exc[2] if excitation is not None else 0.0
+    if t_end is None:
+        t_end = length + 10 * 2 * math.pi / block.p
+    if not t_end > 0:
+        raise ValueError(f"t_end must be positive, got {t_end!r}")
+    h = default_step(block, excitation) if max_step is None else float(max_step)
+    n_hist = max_history if history else 0
+    ht = np.empty(n_hist)
+    hth = np.empty(n_hist)
+    hom = np.empty(n_hist)
+    imp = np.empty((max_impact_log if history else 0, 3))
+    out = np.empty(12)
+    _simulate(
+        par, kind, exc, rec, float(theta0), float(omega0), float(t_end), h, decide,
+        ht, hth, hom, imp, out,
+    )  # fmt: skip
+    n = int(out[9])
+    n_imp = int(out[3])
+    return RockingResult(
+        overturned=bool(out[0] > 0.5),
+        status=_STATUS[int(out[11])],
+        time_overturned=float(out[1]),
+        time_uplift=float(out[10]),
+        rocked=bool(out[5] > 0.5),
+        max_abs_rotation=float(out[2]),
+        impacts=n_imp,
+        margin=float(out[4]),
+        final_time=float(out[8]),
+        final_rotation=float(out[6]),
+        final_angular_velocity=float(out[7]),
+        time=ht[:n].copy() if history else None,
+        rotation=hth[:n].copy() if history else None,
+        angular_velocity=hom[:n].copy() if history else None,
+        impact_log=imp[: min(n_imp, imp.shape[0])].copy() if history else None,
+    )
+
+
+def rocking_energy(block: RockingBlock, rotation, angular_velocity) -> np.ndarray:
+    """Mechanical energy of the rocking block about its current pivot [J].
+
+    E = 1/2 I_s omega^2 + m g' R_s cos(alpha_s - s theta), s = sgn(theta),
+    the potential measured from the pivot level (constant between impacts under
+    free rocking).
+    """
+    th = np.asarray(rotation, dtype=float)
+    om = np.asarray(angular_velocity, dtype=float)
+    plus, minus = block.about("pivot"), block.about("other")
+    pos = th >= 0
+    inertia = np.where(pos, plus.inertia_about_pivot, minus.inertia_about_pivot)
+    R = np.where(pos, plus.R, minus.R)
+    al = np.where(pos, plus.alpha, minus.alpha)
+    s = np.where(pos, 1.0, -1.0)
+    return 0.5 * inertia * om**2 + block.mass * block.effective_gravity * R * np.cos(al - s * th)
+
+
+def exact_rectangular_duration(
+    block: RockingBlock, amplitude: np.ndarray | float, *, rel_tol: float = 1e-7
+) -> np.ndarray | float:
+    """Shortest rectangular pulse of amplitude a that overturns the block, exact.
+
+    Parameters
+    ----------
+    block : RockingBlock
+        The block; the pulse tips it over ``pivot``.
+    amplitude : float or array_like
+        Pulse acceleration a [m/s^2].
+    rel_tol : float, optional
+        Relative tolerance of the bisection on the duration [-].
+
+    Returns
+    -------
+    float or numpy.ndarray
+        Duration t1 [s] from the nonlinear equation of motion (the energy at
+        the end of the pulse grows with its duration, so bisection applies);
+        ``inf`` where a <= g' tan(alpha) (the block does not uplift).
+        Compare :meth:`RockingBlock.housner_rectangular_duration` (paper
+        Fig. 6).
+    """
+    a = np.atleast_1d(np.asarray(amplitude, dtype=float)).ravel()
+    par = block_parameters(block)
+    guess = np.asarray(block.housner_rectangular_duration(a), dtype=float)
+    guess = np.where(np.isfinite(guess) & (guess > 0), guess, 1.0 / block.p)
+    h_p = _STEP_TIMES_P / max(block.about("pivot").p, block.about("other").p)
+    result = np.empty(a.size)
+    _rect_duration_many(par, a, guess, h_p, rel_tol, result)
+    return float(result[0]) if np.ndim(amplitude) == 0 else result.reshape(np.shape(amplitude))
+
+
+@dataclass(frozen=True)
+class MinimumAmplitudeResult:
+    """Lowest overturning amplitudes of a pulse kind, against frequency.
+
+    Parameters
+    ----------
+    kind : str
+        Pulse kind (see :class:`Pulse`).
+    frequency : numpy.ndarray or float
+        Pulse frequencies f [Hz] (floats throughout for a scalar frequency).
+    amplitude : numpy.ndarray or float
+        Lowest overturning amplitude at each frequency [m/s^2]; ``inf`` where
+        none was found up to the search limit.
+    found : numpy.ndarray
+        Whether an overturning amplitude was found (bool).
+    search_limit : numpy.ndarray
+        Largest amplitude tried at each frequency [m/s^2].
+    rel_tol : float
+        Relative width of the final bisection bracket [-].
+    """
+
+    kind: str
+    frequency: np.ndarray
+    amplitude: np.ndarray
+    found: np.ndarray
+    search_limit: np.ndarray
+    rel_tol: float
+
+
+def exact_minimum_overturning_amplitude(
+    block: RockingBlock,
+    pulse_kind: str,
+    frequency: np.ndarray | float,
+    *,
+    scan_ratio: float | None = None,
+    rel_tol: float = 1e-7,
+    max_factor: float | None = None,
+    step_scale: float = 1.0,
+) -> MinimumAmplitudeResult:
+    """Lowest amplitude of a pulse that overturns the block, from the exact equation.
+
+    Parameters
+    ----------
+    block : RockingBlock
+        The block; positive pulses tip it over ``pivot``.
+    pulse_kind : str
+        ``"half-sine"``, ``"one-sine"`` or ``"one-cosine"``.
+    frequency : float or array_like
+        Pulse frequencies f = omega / (2 pi) [Hz].
+    scan_ratio : float, optional
+        Ratio between successive amplitudes of the scan [-]; by default 1.002
+        for the half-sine and 1.0005 for the one-sine and one-cosine pulses,
+        whose overturning amplitudes break into narrow bands for long pulses
+        (omega / p < 1). Bands narrower than the ratio can be missed unless the
+        margin refinement catches them.
+    rel_tol : float, optional
+        Relative tolerance of the final bisection [-].
+    max_factor : float, optional
+        The scan stops at max_factor times Housner's half-sine amplitude (by
+        default 10 for the half-sine, 40 for the others, at least 20 times the
+        uplift threshold).
+    step_scale : float, optional
+        Multiplies the default time step (1/400 of the pulse, 0.02 / p) [-];
+        for convergence checks.
+
+    Returns
+    -------
+    MinimumAmplitudeResult
+
+    Notes
+    -----
+    The amplitudes that overturn need not form one interval (Zhang and Makris
+    2001): a block can overturn after an impact at amplitudes below those at
+    which it overturns without one, and stronger pulses can leave it standing.
+    The scan therefore starts at the uplift threshold (no rocking below),
+    steps up by ``scan_ratio``, refines every local maximum of the
+    overturning margin (:class:`RockingResult`) by golden-section search to
+    catch bands narrower than a step, and bisects to the first overturning
+    amplitude. Frequencies run in parallel (numba prange).
+    """
+    if pulse_kind not in PULSE_KINDS or pulse_kind == "rectangular":
+        raise FreestandError(
+            f"unknown pulse kind {pulse_kind!r} for a minimum-amplitude search; use "
+            "'half-sine', 'one-sine' or 'one-cosine' (rectangular pulses: "
+            "exact_rectangular_duration)",
+            field="pulse",
+        )
+    if scan_ratio is None:
+        scan_ratio = 1.002 if pulse_kind == "half-sine" else 1.0005
+    if not scan_ratio > 1:
+        raise ValueError(f"scan_ratio must exceed 1, got {scan_ratio!r}")
+    f = np.atleast_1d(np.asarray(frequency, dtype=float)).ravel()
+    if np.any(~(f > 0)) or not np.all(np.isfinite(f)):
+        raise ValueError("frequencies must be positive and finite")
+    kind = PULSE_KINDS[pulse_kind]
+    par = block_parameters(block)
+    thr_p = block.about("pivot").uplift_threshold
+    thr_m = block.about("other").uplift_threshold
+    a_lo = thr_p if pulse_kind == "half-sine" else min(thr_p, thr_m)
+    omegas = 2 * np.pi * f
+    if max_factor is None:
+        max_factor = 10.0 if pulse_kind == "half-sine" else 40.0
+    housner = np.asarray(block.housner_half_sine_amplitude(f), dtype=float)
+    a_hi = np.maximum(max_factor * housner, 20.0 * a_lo)
+    p = max(block.about("pivot").p, block.about("other").p)
+    length = np.where(kind == 1, np.pi / omegas, 2 * np.pi / omegas)
+    h = step_scale * np.minimum(length / _STEPS_PER_PULSE, _STEP_TIMES_P / p)
+    result = np.empty(f.size)
+    status = np.empty(f.size, dtype=np.int64)
+    _min_amplitude_many(par, kind, omegas, a_lo, a_hi, scan_ratio, rel_tol, h, result, status)
+    shape = np.shape(frequency)
+    found = status == 0
+    if not shape:
+        return MinimumAmplitudeResult(
+            kind=pulse_kind,
+            frequency=float(f[0]),
+            amplitude=float(result[0]),
+            found=bool(found[0]),
+            search_limit=float(a_hi[0]),
+            rel_tol=rel_tol,
+        )
+    return MinimumAmplitudeResult(
+        kind=pulse_kind,
+        frequency=f.reshape(shape),
+        amplitude=result.reshape(shape),
+        found=found.reshape(shape),
+        search_limit=a_hi.reshape(shape),
+        rel_tol=rel_tol,
+    )
