@@ -109,3 +109,15 @@ def test_crane_stand_in_is_anchored_to_the_paper_values(crane_model):
             assert spectrum.acceleration_at(f) == pytest.approx(
                 builtin.acceleration_at(f), rel=1e-3
             )
+
+
+def test_shipped_stand_in_csv_files_match_the_builder():
+    from pathlib import Path
+
+    from freestand.io.spectrum_input import read_spectrum_csv
+
+    folder = Path(__file__).resolve().parents[2] / "src" / "freestand" / "examples"
+    for builtin, name in zip(crane_stand_in_spectra(), ("horizontal", "vertical"), strict=True):
+        shipped = read_spectrum_csv(folder / f"crane-spectrum-{name}.csv", direction=name)
+        for f in (0.1, 0.25, 1.0, 2.5, 9.0, 20.0, 33.0):
+            assert shipped.acceleration_at(f) == pytest.approx(builtin.acceleration_at(f), rel=1e-5)

@@ -24,11 +24,12 @@ app = typer.Typer(
 
 
 def _register() -> None:
-    from freestand.cli import frequency, maps, screen
+    from freestand.cli import frequency, maps, overturn, screen
 
     screen.register(app)
     frequency.register(app)
     maps.register(app)
+    overturn.register(app)
 
 
 _register()

@@ -1,0 +1,264 @@
+"""``freestand overturn``: overturning of a rocking block (paper section 5, Figs. 6-8)."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import typer
+from rich.table import Table
+
+from freestand.cli.common import console, parse_numbers, resolve_spectrum
+from freestand.core.overturning import check_spectrum, overturning_limits, rectangular_pulse_limits
+from freestand.core.rocking import RockingBlock
+from freestand.core.screening import Motion, initial_motion
+from freestand.errors import FreestandError
+from freestand.io.model_file import load_model
+
+#: Frequencies of the limit curves drawn and compared with a spectrum [Hz].
+CURVE_FREQUENCIES = np.geomspace(0.1, 20.0, 48)
+
+CONCLUSION = (
+    "Housner's half-sine criterion, as the paper applies it, is unconservative (Makris and "
+    "Roussos 2000): a block can overturn in free rocking after the pulse. The corrected "
+    "linearised limit and the exact nonlinear limit are lower, so a pulse of the operating "
+    "amplitude overturns the block up to a higher frequency than the paper's boundary."
+)
+
+
+def _rocking_block(model, configuration: str, block_name: str, pivot: str | None, vertical: bool):
+    stack = model.configuration(configuration)
+    try:
+        index = stack.block_index(block_name)
+    except KeyError:
+        names = ", ".join(repr(b.name) for b in stack.blocks)
+        raise FreestandError(
+            f"no block named {block_name!r} in configuration {configuration!r}; choose one of {names}",
+            source="--block",
+        ) from None
+    if index != len(stack.blocks) - 1:
+        above = stack.blocks[index + 1].name
+        raise FreestandError(
+            f"block {block_name!r} carries {above!r}; the overturning check is for a block with "
+            "nothing on top, resting on a steady body (the paper's cart on the steady bridge)",
+            source="--block",
+        )
+    if pivot is not None and pivot not in ("left", "right"):
+        raise FreestandError(f"{pivot!r} is not a pivot; use 'left' or 'right'", source="--pivot")
+    block = stack.blocks[index]
+    vertical_acceleration = max((e.vertical for e in model.excitations), default=0.0) if vertical else 0.0
+    if pivot is None:
+        pivot = _default_pivot(model, stack, block)
+    rocking = RockingBlock.from_block(
+        block, pivot, gravity=model.gravity, vertical_acceleration=vertical_acceleration
+    )
+    return stack, block, pivot, rocking
+
+
+def _default_pivot(model, stack, block) -> str:
+    """The pivot the block rocks about under the model's excitations, else the easier one."""
+    for excitation in sorted(model.excitations, key=lambda e: -e.horizontal):
+        for sense in (1, -1):
+            case = initial_motion(stack, excitation.horizontal, excitation.vertical, sense, model.gravity)
+            if case.blocks:
+                state = case.block(block.name)
+                if state.motion in (Motion.ROCK, Motion.SLIDE_ROCK):
+                    return state.pivot
+    thresholds = {
+        side: RockingBlock.from_block(block, side, gravity=model.gravity).uplift_threshold
+        for side in ("left", "right")
+    }
+    return min(thresholds, key=thresholds.get)
+
+
+def _finite(value: float) -> float | None:
+    return float(value) if math.isfinite(value) else None
+
+
+def overturn(
+    model_file: Path = typer.Argument(..., help="Model file (TOML)."),
+    configuration: str = typer.Option(..., "--configuration", "-c", help="Configuration name."),
+    block: str = typer.Option(..., "--block", "-b", help="The rocking block (top of its stack)."),
+    pivot: str = typer.Option(
+        None, "--pivot", help="left | right (default: the pivot it rocks about in screening)."
+    ),
+    spectrum: str = typer.Option(
+        None,
+        "--spectrum",
+        help="Horizontal spectrum: a model spectrum's name, a CSV file, 'rg1.60:pga=...' or "
+        "'en1998:ag=...'. Default: the model's horizontal spectrum.",
+    ),
+    amplitudes: str = typer.Option(
+        None, "--amplitudes", help="Rectangular pulse amplitudes [m/s^2] (default: the model's)."
+    ),
+    frequencies: str = typer.Option(
+        None, "--frequencies", help="Half-sine pulse frequencies [Hz] (default: 0.25,0.5,1,2,5)."
+    ),
+    include_vertical: bool = typer.Option(
+        False, "--include-vertical", help="Weight m (g - a_v) with the model's largest a_v."
+    ),
+    plot: Path = typer.Option(None, "--plot", help="Folder for the Figs. 6-8 analogues (PNG, SVG)."),
+    as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
+) -> None:
+    """Rocking properties, overturning limits of pulses, and the response-spectrum check."""
+    model = load_model(model_file)
+    _, _, pivot, rocking = _rocking_block(model, configuration, block, pivot, include_vertical)
+    amplitude_values = parse_numbers(amplitudes, "--amplitudes", "m/s^2") or sorted(
+        {e.horizontal for e in model.excitations}
+    )
+    frequency_values = parse_numbers(frequencies, "--frequencies", "Hz") or [0.25, 0.5, 1.0, 2.0, 5.0]
+    for value in amplitude_values:
+        if not value > 0:
+            raise FreestandError(f"{value} is not a positive amplitude", source="--amplitudes")
+    if any(f <= 0 for f in frequency_values):
+        raise FreestandError("frequencies must be positive", source="--frequencies")
+    operating = max(e.horizontal for e in model.excitations)
+    rectangular = rectangular_pulse_limits(rocking, np.array(amplitude_values), operating_amplitude=operating)
+    requested = np.array(sorted(set(frequency_values)))
+    half_sine = overturning_limits(rocking, requested, kind="half-sine")
+    curves = overturning_limits(rocking, CURVE_FREQUENCIES, kind="half-sine", operating_amplitude=operating)
+    one_sine = overturning_limits(rocking, requested, kind="one-sine")
+    one_cosine = overturning_limits(rocking, requested, kind="one-cosine")
+    horizontal = resolve_spectrum(spectrum, model, "horizontal")
+    checks = check_spectrum(curves, horizontal) if horizontal is not None else {}
+
+    written: list[Path] = []
+    if plot is not None:
+        from freestand.plot.overturning import (
+            plot_pulse_limits,
+            plot_rectangular_pulse,
+            plot_spectrum_check,
+            save_figure,
+        )
+
+        threshold = rocking.uplift_threshold
+        amplitude_grid = np.geomspace(1.02 * threshold, max(4.0 * operating, 3.0 * threshold), 40)
+        curve = rectangular_pulse_limits(rocking, amplitude_grid, operating_amplitude=operating)
+        written += save_figure(plot_rectangular_pulse(curve), plot / "fig6_rectangular_pulse")
+        written += save_figure(plot_pulse_limits(curves), plot / "fig7_half_sine_pulse")
+        if horizontal is not None:
+            figure = plot_spectrum_check(curves, horizontal, checks)
+            written += save_figure(figure, plot / "fig8_spectrum_check")
+
+    properties = {side: rocking.about(side) for side in ("pivot", "other")}
+    if as_json:
+        first = properties["pivot"]
+        document = {
+            "block": block,
+            "configuration": configuration,
+            "pivot": pivot,
+            "R": first.R,
+            "alpha": first.alpha,
+            "p": first.p,
+            "inertia_about_pivot": first.inertia_about_pivot,
+            "uplift_threshold": first.uplift_threshold,
+            "restitution": rocking.restitution,
+            "other_pivot": {
+                "R": properties["other"].R,
+                "alpha": properties["other"].alpha,
+                "p": properties["other"].p,
+                "uplift_threshold": properties["other"].uplift_threshold,
+            },
+            "rectangular": [
+                {"amplitude": float(a), "housner": _finite(h), "exact": _finite(e)}
+                for a, h, e in zip(rectangular.amplitude, rectangular.housner, rectangular.exact, strict=True)
+            ],
+            "half_sine": [
+                {
+                    "frequency": float(f),
+                    "housner": _finite(half_sine.limits["housner"][k]),
+                    "linear": _finite(half_sine.limits["makris-roussos"][k]),
+                    "exact": _finite(half_sine.limits["exact"][k]),
+                }
+                for k, f in enumerate(half_sine.frequency)
+            ],
+            "one_sine": [
+                {"frequency": float(f), "exact": _finite(one_sine.limits["exact"][k])}
+                for k, f in enumerate(one_sine.frequency)
+            ],
+            "one_cosine": [
+                {"frequency": float(f), "exact": _finite(one_cosine.limits["exact"][k])}
+                for k, f in enumerate(one_cosine.frequency)
+            ],
+            "operating_amplitude": operating,
+            "overturns_below_frequency": {k: _finite(v) for k, v in curves.operating_frequency.items()},
+            "spectrum_check": {
+                name: {
+                    "verdict": check.verdict,
+                    "min_ratio": _finite(check.min_ratio),
+                    "frequency": _finite(check.frequency_at_min),
+                    "spectrum": check.spectrum_label,
+                }
+                for name, check in checks.items()
+            },
+            "conclusion": CONCLUSION,
+            "figures": [str(path) for path in written],
+        }
+        typer.echo(json.dumps(document, indent=2))
+        return
+
+    out = console()
+    out.print(f"[bold]{model.name}[/]: overturning of {block!r} in {configuration!r} (paper section 5)")
+    table = Table(title="Rocking properties (Housner 1963)")
+    for header in ("pivot", "R [m]", "alpha [rad]", "I_pivot [kg m^2]", "p [rad/s]", "uplift [m/s^2]"):
+        table.add_column(header, justify="left" if header == "pivot" else "right")
+    for label, side in ((pivot, "pivot"), ("left" if pivot == "right" else "right", "other")):
+        prop = properties[side]
+        table.add_row(
+            label + (" (rocks first)" if side == "pivot" else ""),
+            f"{prop.R:.3f}",
+            f"{prop.alpha:.4f}",
+            f"{prop.inertia_about_pivot:,.0f}",
+            f"{prop.p:.3f}",
+            f"{prop.uplift_threshold:.2f}",
+        )
+    out.print(table)
+    out.print(
+        f"Angular-velocity ratio at impact (restitution): {rocking.restitution:.3f}; "
+        f"Housner's energy ratio r = {rocking.restitution**2:.3f}."
+    )
+    table = Table(title="Rectangular pulse: shortest overturning duration (paper Fig. 6)")
+    for header in ("amplitude [m/s^2]", "Housner [s]", "exact [s]"):
+        table.add_column(header, justify="right")
+    for a, h, e in zip(rectangular.amplitude, rectangular.housner, rectangular.exact, strict=True):
+        table.add_row(f"{a:.2f}", f"{h:.3f}" if math.isfinite(h) else "no overturning", f"{e:.3f}" if math.isfinite(e) else "no overturning")
+    out.print(table)
+    table = Table(title="Pulses: minimum overturning amplitude [m/s^2] (paper Fig. 7)")
+    for header in ("f [Hz]", "half-sine duration [s]", "Housner", "Makris-Roussos", "exact", "one-sine exact", "one-cosine exact"):
+        table.add_column(header, justify="right")
+
+    def cell(value: float) -> str:
+        return f"{value:.2f}" if math.isfinite(value) else "none found"
+
+    for k, f in enumerate(half_sine.frequency):
+        table.add_row(
+            f"{f:g}",
+            f"{0.5 / f:.3f}",
+            cell(half_sine.limits["housner"][k]),
+            cell(half_sine.limits["makris-roussos"][k]),
+            cell(half_sine.limits["exact"][k]),
+            cell(one_sine.limits["exact"][k]),
+            cell(one_cosine.limits["exact"][k]),
+        )
+    out.print(table)
+    out.print(f"A half-sine pulse of {operating:g} m/s^2 overturns the block up to:")
+    for name, value in curves.operating_frequency.items():
+        text = f"{value:.2f} Hz (pulses longer than {0.5 / value:.2f} s)" if math.isfinite(value) else "never in 0.1-20 Hz"
+        out.print(f"  {name:15s} {text}")
+    out.print(CONCLUSION)
+    if checks:
+        table = Table(title=f"Spectrum check (paper Fig. 8): {horizontal.label}")
+        for header in ("limit", "verdict", "min. limit / spectrum", "at [Hz]"):
+            table.add_column(header)
+        for name, check in checks.items():
+            table.add_row(name, check.verdict, f"{check.min_ratio:.2f}", f"{check.frequency_at_min:.2f}")
+        out.print(table)
+    for path in written:
+        out.print(f"wrote {path}")
+
+
+def register(app: typer.Typer) -> None:
+    """Add the command of this module to ``app``."""
+    app.command("overturn")(overturn)
