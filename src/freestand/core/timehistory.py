@@ -55,7 +55,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -341,8 +341,13 @@ class ContactTolerances:
     """
 
     gap: float = 1e-7
-    velocity: float = 1e-6
+    velocity: float = 1e-4
     slide: float = 1e-7
+
+
+def _lower_contact(kin: StackKinematics, interface: int) -> int:
+    """The contact (0 left, 1 right) with the smaller gap: the one whose slip counts."""
+    return 0 if kin.gap[interface, 0] <= kin.gap[interface, 1] else 1
 
 
 def _stop_engaged(sliding: Sliding, slide: float, tolerance: float) -> bool:
@@ -387,7 +392,7 @@ def contact_problem_in_motion(
     -------
     ContactProblem
         With the velocity terms; a contact is active when it touches and does
-        not separate; the slip velocity is that of the left contact (zero
+        not separate; the slip velocity is that of the contact with the smaller gap (zero
         within the tolerance, and always zero where sliding is impossible);
         an end stop is engaged when the block is back at its parking
         position. At rest this is :func:`~freestand.core.screening.contact_problem_at_rest`.
@@ -410,7 +415,7 @@ def contact_problem_in_motion(
             bool(kin.gap[i, c] <= tolerances.gap and kin.gap_velocity[i, c] <= tolerances.velocity)
             for c in range(2)
         )
-        slip = float(kin.slip_velocity[i, 0])
+        slip = float(kin.slip_velocity[i, _lower_contact(kin, i)])
         if abs(slip) <= tolerances.velocity or block.sliding is Sliding.NONE:
             slip = 0.0
         interfaces.append(
@@ -490,7 +495,7 @@ def impact_problem(
         speeds.extend(np.abs(normal_velocity))
         speeds.extend(np.abs(tangential_velocity))
         engaged = _stop_engaged(block.sliding, float(kin.slide[i]), tolerances.slide)
-        slip = float(kin.slip_velocity[i, 0])
+        slip = float(kin.slip_velocity[i, _lower_contact(kin, i)])
         effective = block.sliding
         if effective in (Sliding.NO_LEFT, Sliding.NO_RIGHT) and not engaged:
             effective = Sliding.FREE
@@ -733,9 +738,13 @@ class _Simulation:
         self.max_projection = 0.0
 
     # dynamics of the held mode
-    def evaluate(self, time: float, q: np.ndarray, qd: np.ndarray, held: _Held):
+    def kinematics(self, q, qd, slide):
+        """Kinematics with the accumulated slide of the simulation."""
+        return replace(stack_kinematics(self.stack, q, qd), slide=slide)
+
+    def evaluate(self, time: float, q: np.ndarray, qd: np.ndarray, slide, held: _Held):
         a_h, a_v = self.excitation(time)
-        kin = stack_kinematics(self.stack, q, qd)
+        kin = self.kinematics(q, qd, slide)
         problem = contact_problem_in_motion(
             self.stack, q, qd, -a_h, a_v, self.gravity, self.tol, kinematics=kin
         )
@@ -744,18 +753,30 @@ class _Simulation:
         n = problem.size
         return solution[:n], solution[n:].reshape(-1, 3), kin, problem
 
-    def rk4(self, time, q, qd, h, held, first):
+    @staticmethod
+    def slide_rate(kin: StackKinematics, held: _Held) -> np.ndarray:
+        """Slip velocity at the contact that defines each interface's slide [m/s]."""
+        return np.array(
+            [kin.slip_velocity[i, _reference(mode)] for i, mode in enumerate(held.modes)]
+        )
+
+    def rk4(self, time, q, qd, slide, h, held, first):
+        """One RK4 step of the held mode; ``first`` = (qdd, slide rate) at the start."""
         k1v = qd
-        k1a = first
+        k1a, k1s = first
         k2v = qd + 0.5 * h * k1a
-        k2a = self.evaluate(time + 0.5 * h, q + 0.5 * h * k1v, k2v, held)[0]
+        k2a, _, kin, _ = self.evaluate(time + 0.5 * h, q + 0.5 * h * k1v, k2v, slide, held)
+        k2s = self.slide_rate(kin, held)
         k3v = qd + 0.5 * h * k2a
-        k3a = self.evaluate(time + 0.5 * h, q + 0.5 * h * k2v, k3v, held)[0]
+        k3a, _, kin, _ = self.evaluate(time + 0.5 * h, q + 0.5 * h * k2v, k3v, slide, held)
+        k3s = self.slide_rate(kin, held)
         k4v = qd + h * k3a
-        k4a = self.evaluate(time + h, q + h * k3v, k4v, held)[0]
+        k4a, _, kin, _ = self.evaluate(time + h, q + h * k3v, k4v, slide, held)
+        k4s = self.slide_rate(kin, held)
         q_new = q + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v)
         qd_new = qd + h / 6.0 * (k1a + 2 * k2a + 2 * k3a + k4a)
-        return q_new, qd_new
+        slide_new = slide + h / 6.0 * (k1s + 2 * k2s + 2 * k3s + k4s)
+        return q_new, qd_new, slide_new
 
     def fired(self, kin: StackKinematics, forces, problem, held: _Held) -> list:
         events = []
@@ -779,7 +800,7 @@ class _Simulation:
             if direction and direction * kin.slip_velocity[i, _reference(mode)] < 0.0:
                 events.append(("slip-stop", i, -1))
             slide = kin.slide[i]
-            slip = kin.slip_velocity[i, 0]
+            slip = kin.slip_velocity[i, _reference(mode)]
             if (
                 block.sliding is Sliding.NO_RIGHT
                 and slide > self.tol.slide
@@ -836,7 +857,7 @@ class _Simulation:
                 if kin.gap[i, c] <= self.tol.gap and kin.gap_velocity[i, c] < -self.tol.velocity:
                     return True
             engaged = _stop_engaged(block.sliding, float(kin.slide[i]), self.tol.slide)
-            slip = kin.slip_velocity[i, 0]
+            slip = kin.slip_velocity[i, _lower_contact(kin, i)]
             if engaged and (
                 (block.sliding is Sliding.NO_RIGHT and slip > self.tol.velocity)
                 or (block.sliding is Sliding.NO_LEFT and slip < -self.tol.velocity)
@@ -855,10 +876,10 @@ class _Simulation:
             self.ambiguous += 1
         return qd + result.chosen.acceleration, result.status
 
-    def select(self, time, q, qd):
+    def select(self, time, q, qd, slide):
         """Solve the contact problem at a state; return the mode to hold."""
         a_h, a_v = self.excitation(time)
-        kin = stack_kinematics(self.stack, q, qd)
+        kin = self.kinematics(q, qd, slide)
         problem = contact_problem_in_motion(
             self.stack, q, qd, -a_h, a_v, self.gravity, self.tol, kinematics=kin
         )
@@ -1027,16 +1048,16 @@ def simulate(
         names += ["overturned"] * (count - len(names))
         return tuple(names)
 
-    def settle(time, q, qd):
+    def settle(time, q, qd, slide):
         """Impact if needed, then choose the mode; returns (held, q, qd, status, impacted)."""
-        kin = stack_kinematics(sim.stack, q, qd)
+        kin = sim.kinematics(q, qd, slide)
         impacted = False
         if sim.needs_impact(kin):
             qd_new, status = sim.impact(q, qd, kin)
             if qd_new is None:
                 return None, q, qd, f"impact problem {status}", impacted
             qd, impacted = qd_new, True
-        held, status = sim.select(time, q, qd)
+        held, status = sim.select(time, q, qd, slide)
         if held is None:
             return None, q, qd, f"contact problem {status}", impacted
         q, qd = sim.project(q, qd, held)
@@ -1058,11 +1079,13 @@ def simulate(
     status = "completed"
     message = ""
     time = 0.0
-    held, q, qd, solve_status, _ = settle(time, q, qd)
+    slide = np.zeros(count)
+    held, q, qd, solve_status, _ = settle(time, q, qd, slide)
     if held is None:
         status, message = "failed", f"at t = 0: {solve_status}"
     else:
-        qdd, forces, kin, _ = sim.evaluate(time, q, qd, held)
+        qdd, forces, kin, _ = sim.evaluate(time, q, qd, slide, held)
+        rates = (qdd, sim.slide_rate(kin, held))
         record(time, q, qd, forces, kin)
         events.append(
             TimeHistoryEvent(
@@ -1084,15 +1107,16 @@ def simulate(
         if h <= 1e-3 * time_tolerance:
             h = step
         try:
-            q1, qd1 = sim.rk4(time, q, qd, h, held, qdd)
-            qdd1, forces1, kin1, problem1 = sim.evaluate(time + h, q1, qd1, held)
+            q1, qd1, slide1 = sim.rk4(time, q, qd, slide, h, held, rates)
+            qdd1, forces1, kin1, problem1 = sim.evaluate(time + h, q1, qd1, slide1, held)
         except np.linalg.LinAlgError:
             status, message = "failed", f"singular contact mode at t = {time:.6g} s"
             break
         fired = sim.fired(kin1, forces1, problem1, held)
         if not fired:
             time += h
-            q, qd, qdd = q1, qd1, qdd1
+            q, qd, slide = q1, qd1, slide1
+            rates = (qdd1, sim.slide_rate(kin1, held))
             steps += 1
             closed_gaps = [
                 abs(kin1.gap[i, c])
@@ -1102,7 +1126,8 @@ def simulate(
             ]
             if closed_gaps and max(closed_gaps) > 1e-3 * tolerances.gap:
                 q, qd = sim.project(q, qd, held)
-                qdd, forces1, kin1, _ = sim.evaluate(time, q, qd, held)
+                qdd, forces1, kin1, _ = sim.evaluate(time, q, qd, slide, held)
+                rates = (qdd, sim.slide_rate(kin1, held))
             record(time, q, qd, forces1, kin1)
             if time >= excitation_end:
                 index = sim.overturned_after_excitation(qd, kin1)
@@ -1125,26 +1150,27 @@ def simulate(
                     )
                     if sim.active_count == 0:
                         break
-                    q, qd = q[: 3 * index], qd[: 3 * index]
-                    held, q, qd, solve_status, _ = settle(time, q, qd)
+                    q, qd, slide = q[: 3 * index], qd[: 3 * index], slide[:index]
+                    held, q, qd, solve_status, _ = settle(time, q, qd, slide)
                     if held is None:
                         status, message = "failed", f"at t = {time:.6g} s: {solve_status}"
                         break
-                    qdd = sim.evaluate(time, q, qd, held)[0]
+                    qdd, _, kin, _ = sim.evaluate(time, q, qd, slide, held)
+                    rates = (qdd, sim.slide_rate(kin, held))
             continue
         # locate the earliest event by bisection
         low, high = 0.0, h
-        state = (q1, qd1, forces1, kin1, fired)
+        state = (q1, qd1, slide1, forces1, kin1, fired)
         while high - low > time_tolerance:
             middle = 0.5 * (low + high)
-            qm, qdm = sim.rk4(time, q, qd, middle, held, qdd)
-            _, forces_m, kin_m, problem_m = sim.evaluate(time + middle, qm, qdm, held)
+            qm, qdm, slide_m = sim.rk4(time, q, qd, slide, middle, held, rates)
+            _, forces_m, kin_m, problem_m = sim.evaluate(time + middle, qm, qdm, slide_m, held)
             fired_m = sim.fired(kin_m, forces_m, problem_m, held)
             if fired_m:
-                high, state = middle, (qm, qdm, forces_m, kin_m, fired_m)
+                high, state = middle, (qm, qdm, slide_m, forces_m, kin_m, fired_m)
             else:
                 low = middle
-        q, qd, forces, kin, fired = state
+        q, qd, slide, forces, kin, fired = state
         time += high
         steps += 1
         stalled = stalled + 1 if high <= 2.0 * time_tolerance else 0
@@ -1170,8 +1196,8 @@ def simulate(
                     )
                 )
                 break
-            q, qd = q[: 3 * interface], qd[: 3 * interface]
-        held, q, qd, solve_status, impacted = settle(time, q, qd)
+            q, qd, slide = q[: 3 * interface], qd[: 3 * interface], slide[:interface]
+        held, q, qd, solve_status, impacted = settle(time, q, qd, slide)
         if held is None:
             status, message = "failed", f"at t = {time:.6g} s: {solve_status}"
             break
@@ -1193,7 +1219,8 @@ def simulate(
             status, message = "failed", f"more than {max_events} events by t = {time:.6g} s"
             break
         try:
-            qdd, forces, kin, _ = sim.evaluate(time, q, qd, held)
+            qdd, forces, kin, _ = sim.evaluate(time, q, qd, slide, held)
+            rates = (qdd, sim.slide_rate(kin, held))
         except np.linalg.LinAlgError:
             status, message = "failed", f"singular contact mode at t = {time:.6g} s"
             break
