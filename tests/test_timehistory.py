@@ -108,9 +108,17 @@ def test_at_rest_reproduces_the_screening_problem_exactly(crane_model, inertial,
         assert moving.force_scale == rest.force_scale
         assert moving.acceleration_scale == rest.acceleration_scale
         for a, b in zip(moving.interfaces, rest.interfaces, strict=True):
-            for name in ("normal_jacobian", "normal_bias", "tangential_jacobian", "tangential_bias"):
+            for name in (
+                "normal_jacobian",
+                "normal_bias",
+                "tangential_jacobian",
+                "tangential_bias",
+            ):
                 assert np.array_equal(getattr(a, name), getattr(b, name)), name
-            assert (a.static_friction, a.kinetic_friction) == (b.static_friction, b.kinetic_friction)
+            assert (a.static_friction, a.kinetic_friction) == (
+                b.static_friction,
+                b.kinetic_friction,
+            )
             assert (a.sliding, a.active, a.slip_velocity, a.stop_engaged) == (
                 b.sliding,
                 b.active,
