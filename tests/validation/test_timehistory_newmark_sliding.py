@@ -20,8 +20,6 @@ step for that step, so the slide converges linearly with the step (tested).
 
 from __future__ import annotations
 
-import math
-
 import pytest
 
 from freestand.core.model import Block, Friction, Stack
