@@ -786,7 +786,11 @@ class _Simulation:
             for c in range(2):
                 if closed[c] and forces[i, c] < -self.force_event:
                     events.append(("lift-off", i, c))
-                if not closed[c] and kin.gap[i, c] < -self.gap_event:
+                if (
+                    not closed[c]
+                    and kin.gap[i, c] < -self.gap_event
+                    and kin.gap_velocity[i, c] < 0.0
+                ):
                     events.append(("impact", i, c))
             interface = problem.interfaces[i]
             sliding = interface.effective_sliding()
@@ -855,7 +859,10 @@ class _Simulation:
     def needs_impact(self, kin: StackKinematics) -> bool:
         for i, block in enumerate(self.stack.blocks):
             for c in range(2):
-                if kin.gap[i, c] <= self.tol.gap and kin.gap_velocity[i, c] < -self.tol.velocity:
+                approach = kin.gap_velocity[i, c]
+                if kin.gap[i, c] <= self.tol.gap and approach < -self.tol.velocity:
+                    return True
+                if kin.gap[i, c] < -self.gap_event and approach < 0.0:
                     return True
             engaged = _stop_engaged(block.sliding, float(kin.slide[i]), self.tol.slide)
             slip = kin.slip_velocity[i, _lower_contact(kin, i)]
