@@ -882,7 +882,25 @@ class _Simulation:
             return None, result.status
         if result.ambiguous:
             self.ambiguous += 1
+        # An engaged end stop must stop the slide into it: among the admissible
+        # states prefer (in the solver's order) one that does.
+        for solution in result.admissible:
+            after = qd + solution.acceleration
+            if not self.into_stop(replace(stack_kinematics(self.stack, q, after), slide=kin.slide)):
+                return after, result.status
         return qd + result.chosen.acceleration, result.status
+
+    def into_stop(self, kin: StackKinematics) -> bool:
+        """Whether a block at its engaged end stop still slides into it."""
+        for i, block in enumerate(self.stack.blocks):
+            if not _stop_engaged(block.sliding, float(kin.slide[i]), self.tol.slide):
+                continue
+            slip = kin.slip_velocity[i, _lower_contact(kin, i)]
+            if (block.sliding is Sliding.NO_RIGHT and slip > self.tol.velocity) or (
+                block.sliding is Sliding.NO_LEFT and slip < -self.tol.velocity
+            ):
+                return True
+        return False
 
     def select(self, time, q, qd, slide):
         """Solve the contact problem at a state; return the mode to hold."""
