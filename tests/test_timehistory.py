@@ -254,3 +254,32 @@ def test_custom_tolerances_are_used():
         stack, lambda t: (0.0, 0.0), 0.01, tolerances=ContactTolerances(gap=1e-6, velocity=1e-3)
     )
     assert result.status == "completed"
+
+
+def test_painleve_inconsistency_is_resolved_by_a_tangential_impact():
+    """A thin rod leaning 30 degrees from vertical, its lower end sliding at 1 m/s with
+    mu = 1.5: no sliding state is consistent (Painleve's paradox); a velocity jump in
+    which the end sticks resolves it, dissipating energy."""
+    rod = Block(
+        "rod", 10.0, 10.0 * (4e-4 + 4.0) / 12.0, (0.0, 1.0), -0.01, 0.01, 0.0, Friction(1.6, 1.5)
+    )
+    stack = Stack("rod", (rod,))
+    q0 = tilted(rod, math.radians(30.0))
+    qd0 = np.array([1.0, 0.0, 0.0])
+    assert solve_contact(contact_problem_in_motion(stack, q0, qd0, 0.0, 0.0)).status == (
+        "inconsistent"
+    )
+    result = simulate(stack, lambda t: (0.0, 0.0), 0.05, initial_position=q0, initial_velocity=qd0)
+    assert result.status == "completed"
+    jump = result.events_of("tangential-impact")
+    assert len(jump) == 1 and jump[0].time == 0.0
+    after = jump[0].velocity_after.reshape(-1)
+    kin = stack_kinematics(stack, q0, after)
+    assert abs(kin.slip_velocity[0, 0]) < 1e-9  # the end sticks
+    assert kin.gap_velocity[0, 0] > -1e-9  # and does not penetrate
+
+    def kinetic(v):
+        return 0.5 * rod.mass * (v[0] ** 2 + v[1] ** 2) + 0.5 * rod.inertia * v[2] ** 2
+
+    assert kinetic(after) < kinetic(qd0)
+    assert result.events[0].motions == ("rock",)

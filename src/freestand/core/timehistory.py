@@ -449,6 +449,7 @@ def impact_problem(
     velocity: np.ndarray,
     tolerances: ContactTolerances | None = None,
     kinematics: StackKinematics | None = None,
+    allow_stick: bool = False,
 ) -> ContactProblem:
     """The velocity-jump (impact) problem of a stack, in the contact solver's form.
 
@@ -470,6 +471,10 @@ def impact_problem(
         State just before the impact (see :func:`stack_kinematics`).
     tolerances : ContactTolerances, optional
     kinematics : StackKinematics, optional
+    allow_stick : bool, optional
+        Let sliding contacts stick (static cone) instead of taking the kinetic
+        impulse against their slip: the tangential impact that resolves a
+        Painleve-type inconsistency of the contact problem.
 
     Returns
     -------
@@ -499,7 +504,11 @@ def impact_problem(
         effective = block.sliding
         if effective in (Sliding.NO_LEFT, Sliding.NO_RIGHT) and not engaged:
             effective = Sliding.FREE
-        if abs(slip) <= tolerances.velocity or not effective.allows(int(np.sign(slip))):
+        if (
+            allow_stick
+            or abs(slip) <= tolerances.velocity
+            or not effective.allows(int(np.sign(slip)))
+        ):
             slip = 0.0
         interfaces.append(
             Interface(
@@ -538,7 +547,9 @@ class TimeHistoryEvent:
     time : float
         Time [s].
     kind : str
-        ``"start"``, ``"impact"`` (a gap closed), ``"lift-off"`` (a normal
+        ``"start"``, ``"impact"`` (a gap closed), ``"tangential-impact"`` (no
+        consistent sliding state: a velocity jump in which sliding contacts
+        may stick resolves it, Painleve's paradox), ``"lift-off"`` (a normal
         force reached zero), ``"slip"`` (static friction could no longer
         hold), ``"slip-stop"`` (a slip velocity reached zero), ``"stop-impact"``
         (a block slid back onto its end stop), ``"overturn"``.
@@ -874,8 +885,10 @@ class _Simulation:
                     return True
         return False
 
-    def impact(self, q, qd, kin):
-        problem = impact_problem(self.stack, q, qd, self.tol, kinematics=kin)
+    def impact(self, q, qd, kin, allow_stick=False):
+        problem = impact_problem(
+            self.stack, q, qd, self.tol, kinematics=kin, allow_stick=allow_stick
+        )
         result = solve_contact(problem)
         self.impact_solves += 1
         if result.chosen is None:
@@ -1101,17 +1114,32 @@ def simulate(
         return tuple(names)
 
     def settle(time, q, qd, slide):
-        """Impact if needed, then choose the mode; returns (held, q, qd, status, impacted)."""
+        """Impact if needed, then choose the mode; returns (held, q, qd, status, impact kind)."""
         kin = sim.kinematics(q, qd, slide)
-        impacted = False
+        impacted = ""
         if sim.needs_impact(kin):
             qd_new, status = sim.impact(q, qd, kin)
             if qd_new is None:
                 return None, q, qd, f"impact problem {status}", impacted
-            qd, impacted = qd_new, True
+            qd, impacted = qd_new, "impact"
         held, status = sim.select(time, q, qd, slide)
         if held is None:
-            return None, q, qd, f"contact problem {status}", impacted
+            # No consistent sliding state (Painleve-type): resolve it by a tangential
+            # impact at velocity level, in which the sliding contacts may stick.
+            kin = sim.kinematics(q, qd, slide)
+            qd_new, impact_status = sim.impact(q, qd, kin, allow_stick=True)
+            if qd_new is None:
+                return None, q, qd, f"contact problem {status}", impacted
+            qd, impacted = qd_new, "tangential-impact"
+            held, status = sim.select(time, q, qd, slide)
+            if held is None:
+                return (
+                    None,
+                    q,
+                    qd,
+                    f"contact problem {status} (also after a tangential impact)",
+                    impacted,
+                )
         q, qd = sim.project(q, qd, held)
         for i, mode in enumerate(held.modes):
             if mode.closed_count < 2:
@@ -1132,7 +1160,8 @@ def simulate(
     message = ""
     time = 0.0
     slide = np.zeros(count)
-    held, q, qd, solve_status, _ = settle(time, q, qd, slide)
+    initial_velocity_blocks = qd.reshape(-1, 3).copy()
+    held, q, qd, solve_status, start_impact = settle(time, q, qd, slide)
     if held is None:
         status, message = "failed", f"at t = 0: {solve_status}"
     else:
@@ -1146,11 +1175,24 @@ def simulate(
                 -1,
                 -1,
                 motions(held),
-                qd.reshape(-1, 3),
-                qd.reshape(-1, 3),
+                initial_velocity_blocks,
+                qd.reshape(-1, 3).copy(),
                 solve_status,
             )
         )
+        if start_impact:
+            events.append(
+                TimeHistoryEvent(
+                    time,
+                    start_impact,
+                    -1,
+                    -1,
+                    motions(held),
+                    initial_velocity_blocks,
+                    qd.reshape(-1, 3).copy(),
+                    solve_status,
+                )
+            )
     steps = 0
     stalled = 0
     while status == "completed" and sim.active_count and time < end - 1e-12 * max(end, 1.0):
@@ -1253,8 +1295,10 @@ def simulate(
         if held is None:
             status, message = "failed", f"at t = {time:.6g} s: {solve_status}"
             break
-        if impacted and kind not in ("impact", "stop-impact", "overturn"):
-            kind = "impact"
+        if impacted == "tangential-impact" or (
+            impacted and kind not in ("impact", "stop-impact", "overturn")
+        ):
+            kind = impacted
         events.append(
             TimeHistoryEvent(
                 time,
