@@ -813,7 +813,10 @@ class _Simulation:
                 ):
                     events.append(("slip", i, -1))
             direction = held.directions[i]
-            if direction and direction * kin.slip_velocity[i, _reference(mode)] < 0.0:
+            # a slip velocity reversing by more than a small fraction of the zero
+            # tolerance (a slide that starts from rest begins at round-off)
+            reverse = -1e-3 * self.tol.velocity
+            if direction and direction * kin.slip_velocity[i, _reference(mode)] < reverse:
                 events.append(("slip-stop", i, -1))
             slide = kin.slide[i]
             slip = kin.slip_velocity[i, _reference(mode)]
