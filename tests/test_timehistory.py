@@ -283,3 +283,38 @@ def test_painleve_inconsistency_is_resolved_by_a_tangential_impact():
 
     assert kinetic(after) < kinetic(qd0)
     assert result.events[0].motions == ("rock",)
+
+
+@settings(max_examples=15, deadline=None)
+@given(
+    half_width=st.floats(0.1, 1.0),
+    height=st.floats(0.3, 3.0),
+    static=st.floats(0.1, 1.0),
+    kinetic_ratio=st.floats(0.6, 1.0),
+    amplitude=st.floats(0.0, 2.0),
+    period=st.floats(0.1, 1.0),
+    vertical=st.floats(0.0, 0.5),
+)
+def test_single_block_under_a_pulse_stays_physical(
+    half_width, height, static, kinetic_ratio, amplitude, period, vertical
+):
+    """Any homogeneous block under a half-sine pulse: no tension, no penetration."""
+    block = rectangle(half_width, height, static=static, kinetic=static * kinetic_ratio)
+
+    def pulse(t):
+        if t >= period:
+            return 0.0, 0.0
+        shape = math.sin(math.pi * t / period)
+        return amplitude * G * shape, vertical * G * shape
+
+    result = simulate(Stack("one", (block,)), pulse, 1.0)
+    assert result.status == "completed", result.message
+    weight = block.mass * G
+    normal = result.normal_force[np.isfinite(result.normal_force)]
+    assert normal.min(initial=0.0) > -1e-6 * weight  # unilateral contacts never pull
+    assert result.diagnostics.max_penetration < 1e-6  # m
+    tangential = np.abs(result.tangential_force[:, 0])
+    total = result.normal_force[:, 0].sum(axis=1)
+    finite = np.isfinite(tangential) & np.isfinite(total)
+    # friction inside the static cone (the solver's tolerance aside)
+    assert np.all(tangential[finite] <= static * total[finite] + 1e-6 * weight)
