@@ -25,7 +25,9 @@ terms (:func:`contact_problem_in_motion`). The integration is event-driven:
   static cone (slip), a block sliding back onto its end stop, a block lying on
   its side;
 * at an event the contact problem is solved again; at an impact the velocity
-  jump is solved first (:func:`impact_velocity`).
+  jump is solved first (:func:`impact_problem`); a contact problem with no
+  consistent state (Painleve's paradox) is resolved by a tangential impact,
+  the same velocity-level problem in which sliding contacts may stick.
 
 Impact law (Newton-type, perfectly plastic, as Housner 1963 assumes): the
 contacts that touch receive impulses ``Lambda >= 0`` with post-impact normal
