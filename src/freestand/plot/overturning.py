@@ -1,0 +1,157 @@
+"""Figures of the overturning assessment (analogues of the paper's Figs. 6-8).
+
+Each function takes result objects of :mod:`freestand.core.overturning`, draws
+on a new figure (Agg-safe: no window is opened) and returns the
+:class:`matplotlib.figure.Figure`. :func:`save_figure` writes PNG and SVG.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from freestand.core.overturning import OverturningLimits, RectangularPulseLimits
+from freestand.core.spectra import Spectrum
+
+_STYLE = {
+    "housner": {"color": "tab:blue", "linestyle": "--", "label": "Housner (1963), linearised"},
+    "makris-roussos": {
+        "color": "tab:green",
+        "linestyle": "-.",
+        "label": "Makris & Roussos (2000) eq. 27, linearised",
+    },
+    "exact": {"color": "tab:red", "linestyle": "-", "label": "exact nonlinear, with impacts"},
+}
+
+
+def _new_figure() -> tuple[Figure, object]:
+    fig = Figure(figsize=(7.0, 4.8), layout="constrained")
+    ax = fig.add_subplot()
+    ax.grid(True, which="both", alpha=0.3)
+    return fig, ax
+
+
+def plot_rectangular_pulse(limits: RectangularPulseLimits, *, title: str | None = None) -> Figure:
+    """Shortest overturning duration against amplitude of a rectangular pulse (paper Fig. 6).
+
+    Parameters
+    ----------
+    limits : RectangularPulseLimits
+        Housner's and the exact limits.
+    title : str, optional
+        Figure title.
+    """
+    fig, ax = _new_figure()
+    a = limits.amplitude
+    for name, values in (("housner", limits.housner), ("exact", limits.exact)):
+        finite = np.isfinite(values)
+        ax.plot(a[finite], values[finite], **_STYLE[name])
+    if limits.operating_amplitude is not None:
+        a0 = limits.operating_amplitude
+        for name, t in (("housner", limits.operating_housner), ("exact", limits.operating_exact)):
+            if np.isfinite(t):
+                ax.plot(
+                    [a0], [t], "o", color=_STYLE[name]["color"],
+                    label=f"{a0:.2f} m/s^2: {t:.2f} s ({name})",
+                )  # fmt: skip
+        ax.axvline(a0, color="0.4", linewidth=0.8, linestyle=":")
+    ax.set_xlabel("pulse acceleration a [m/s^2]")
+    ax.set_ylabel("shortest overturning pulse duration t1 [s]")
+    ax.set_title(title or "Rectangular pulse: overturning above the curve")
+    ax.legend(loc="upper right", fontsize="small")
+    return fig
+
+
+def plot_pulse_limits(limits: OverturningLimits, *, title: str | None = None) -> Figure:
+    """Minimum overturning amplitude against pulse frequency (paper Fig. 7).
+
+    Parameters
+    ----------
+    limits : OverturningLimits
+        The limits to draw (all on one figure, log-log axes).
+    title : str, optional
+        Figure title.
+    """
+    fig, ax = _new_figure()
+    _draw_limits(ax, limits)
+    ax.set_title(title or f"{limits.kind} pulse: overturning above the curves")
+    ax.legend(loc="upper left", fontsize="small")
+    return fig
+
+
+def _draw_limits(ax, limits: OverturningLimits) -> None:
+    f = limits.frequency
+    for name, values in limits.limits.items():
+        style = _STYLE.get(name, {"label": name})
+        finite = np.isfinite(values)
+        ax.loglog(f[finite], values[finite], **style)
+    if limits.operating_amplitude is not None:
+        a0 = limits.operating_amplitude
+        ax.axhline(a0, color="0.4", linewidth=0.8, linestyle=":")
+        for name, f0 in limits.operating_frequency.items():
+            if np.isfinite(f0):
+                ax.plot(
+                    [f0], [a0], "o", color=_STYLE.get(name, {}).get("color", "k"),
+                    label=f"{a0:.2f} m/s^2 overturns up to {f0:.2f} Hz ({name})",
+                )  # fmt: skip
+    ax.set_xlabel("pulse frequency f [Hz]")
+    ax.set_ylabel("peak acceleration of the pulse [m/s^2]")
+
+
+def plot_spectrum_check(
+    limits: OverturningLimits,
+    spectrum: Spectrum,
+    checks: dict | None = None,
+    *,
+    title: str | None = None,
+) -> Figure:
+    """A response spectrum against the overturning limits (paper Fig. 8).
+
+    Parameters
+    ----------
+    limits : OverturningLimits
+        The limits.
+    spectrum : Spectrum
+        The horizontal response spectrum.
+    checks : dict of str to SpectrumCheck, optional
+        Results of :func:`freestand.core.overturning.check_spectrum`; the point
+        of smallest margin of each is marked.
+    title : str, optional
+        Figure title.
+    """
+    fig, ax = _new_figure()
+    _draw_limits(ax, limits)
+    f = np.geomspace(limits.frequency[0], limits.frequency[-1], 300)
+    ax.loglog(f, spectrum.acceleration_at(f), color="k", linewidth=2.0, label=spectrum.label)
+    for name, check in (checks or {}).items():
+        if np.isfinite(check.min_ratio):
+            ax.plot(
+                [check.frequency_at_min], [check.spectrum_at_min], "s",
+                color=_STYLE.get(name, {}).get("color", "k"), markerfacecolor="none",
+                label=f"min margin {check.min_ratio:.2f} at {check.frequency_at_min:.2f} Hz "
+                f"({name}): {check.verdict}",
+            )  # fmt: skip
+    ax.set_ylabel("peak pulse / spectral acceleration [m/s^2]")
+    ax.set_title(title or "Response spectrum against the overturning limits")
+    ax.legend(loc="upper left", fontsize="x-small")
+    return fig
+
+
+def save_figure(fig: Figure, path: str | Path, *, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
+    """Write ``fig`` once per format next to ``path`` (its suffix is replaced).
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written.
+    """
+    base = Path(path)
+    written = []
+    for fmt in formats:
+        target = base.with_suffix(f".{fmt}")
+        target.parent.mkdir(parents=True, exist_ok=True)
+        fig.savefig(target, format=fmt, dpi=150)
+        written.append(target)
+    return written
