@@ -95,7 +95,10 @@ def test_general_restitution_from_angular_momentum():
     assert block.restitution_onto("pivot") == pytest.approx(back, rel=1e-14)
     assert block.about("other").R == pytest.approx(math.hypot(0.5, 1.0))
     assert block.about("other").uplift_threshold == pytest.approx(9.81 * 0.5)
-    assert RockingBlock(m, inertia, (-0.2, -1.0), (0.5, -1.0), restitution_override=0.9).restitution == 0.9
+    assert (
+        RockingBlock(m, inertia, (-0.2, -1.0), (0.5, -1.0), restitution_override=0.9).restitution
+        == 0.9
+    )
 
 
 def test_vertical_acceleration_reduces_the_weight():

@@ -61,7 +61,9 @@ def _exact_duration_by_quadrature(block: RockingBlock, a: float) -> float:
         return math.sqrt(2 * k * bracket)
 
     # substitute theta = u^2 to remove the 1/sqrt singularity at theta = 0
-    value, _err = quad(lambda u: 2 * u / omega(u * u), 0.0, math.sqrt(theta1), epsabs=1e-13, epsrel=1e-12)
+    value, _err = quad(
+        lambda u: 2 * u / omega(u * u), 0.0, math.sqrt(theta1), epsabs=1e-13, epsrel=1e-12
+    )
     return value
 
 

@@ -41,9 +41,7 @@ def test_corrected_limits_are_below_housner_at_the_paper_boundary():
 
 
 def test_frequency_below_which_10_31_overturns_the_cart():
-    limits = overturning_limits(
-        CART, np.geomspace(0.3, 1.2, 25), operating_amplitude=10.31
-    )
+    limits = overturning_limits(CART, np.geomspace(0.3, 1.2, 25), operating_amplitude=10.31)
     f = limits.operating_frequency
     # Housner 0.501 Hz (paper); Makris-Roussos 0.737 Hz; exact 0.660 Hz.
     # tolerance 1 %: log-log interpolation on a 25-point grid

@@ -735,7 +735,9 @@ def _excitation_arrays(excitation) -> tuple[int, np.ndarray, np.ndarray]:
     if isinstance(excitation, SampledAcceleration):
         exc = np.array([0.0, 0.0, excitation.length, excitation.dt])
         return _RECORD, exc, excitation.values
-    raise TypeError(f"excitation must be a Pulse, a SampledAcceleration or None, not {excitation!r}")
+    raise TypeError(
+        f"excitation must be a Pulse, a SampledAcceleration or None, not {excitation!r}"
+    )
 
 
 def default_step(block: RockingBlock, excitation=None) -> float:

@@ -102,7 +102,10 @@ RG160_FACTORS: dict[str, dict[float, tuple[float, float, float, float]]] = {
 }
 
 #: RG 1.60 control frequencies [Hz]: A, B, C (horizontal, vertical), D.
-RG160_CONTROL_FREQUENCIES = {"horizontal": (33.0, 9.0, 2.5, 0.25), "vertical": (33.0, 9.0, 3.5, 0.25)}
+RG160_CONTROL_FREQUENCIES = {
+    "horizontal": (33.0, 9.0, 2.5, 0.25),
+    "vertical": (33.0, 9.0, 3.5, 0.25),
+}
 
 _INCH = 0.0254
 _DIRECTIONS = ("horizontal", "vertical")
@@ -324,8 +327,8 @@ def en1998_spectrum(
         acc,
         damping,
         direction,
-        f"EN 1998-1 Type {spectrum_type} {direction}, {where}a_g {importance * ag / gravity:.3g} g, "
-        f"{100 * damping:g} % damping",
+        f"EN 1998-1 Type {spectrum_type} {direction}, {where}"
+        f"a_g {importance * ag / gravity:.3g} g, {100 * damping:g} % damping",
         {
             "source": "en1998",
             "ag": ag,
@@ -407,9 +410,7 @@ def crane_stand_in_spectrum(
         freq = freq[(freq >= lo) & (freq <= hi)]
         acc = np.array(
             [
-                corner[f]
-                if f in corner
-                else ((2 * np.pi * f) ** 2 * d if f < f_d else zpa)
+                corner[f] if f in corner else ((2 * np.pi * f) ** 2 * d if f < f_d else zpa)
                 for f in freq
             ]
         )

@@ -112,8 +112,7 @@ def parse_damping(value: object, *, field: str, source: str | None = None) -> fl
         d = float(value)
         if d > 1:
             raise FreestandError(
-                f"damping {value!r} is not a fraction of critical; write {d / 100:g} or "
-                f"'{d:g} %'",
+                f"damping {value!r} is not a fraction of critical; write {d / 100:g} or '{d:g} %'",
                 source=source,
                 field=field,
             )
@@ -284,7 +283,9 @@ def read_spectrum_csv(
 def _parse_header(header: list[str], line: int, source: str, gravity: float) -> float:
     fix = f"write the header as '{_CSV_EXAMPLE}' (acceleration unit m/s^2, cm/s^2, gal or g)"
     if len(header) != 2:
-        raise FreestandError(f"line {line}: header {header!r} must name 2 columns; {fix}", source=source)
+        raise FreestandError(
+            f"line {line}: header {header!r} must name 2 columns; {fix}", source=source
+        )
     m0 = _HEADER.match(header[0])
     m1 = _HEADER.match(header[1])
     if not m0 or not m1:
@@ -308,9 +309,7 @@ def _parse_header(header: list[str], line: int, source: str, gravity: float) -> 
         return gravity
     if key in _ACCEL_UNITS:
         return _ACCEL_UNITS[key]
-    raise FreestandError(
-        f"line {line}: unknown acceleration unit {unit1!r}; {fix}", source=source
-    )
+    raise FreestandError(f"line {line}: unknown acceleration unit {unit1!r}; {fix}", source=source)
 
 
 def write_spectrum_csv(path: str | Path, spectrum: Spectrum, *, comments: list[str] = ()) -> None:
@@ -322,7 +321,10 @@ def write_spectrum_csv(path: str | Path, spectrum: Spectrum, *, comments: list[s
         f"# direction: {spectrum.direction}",
         _CSV_EXAMPLE,
     ]
-    lines += [f"{f:.10g}, {a:.10g}" for f, a in zip(spectrum.frequency, spectrum.acceleration, strict=True)]
+    lines += [
+        f"{f:.10g}, {a:.10g}"
+        for f, a in zip(spectrum.frequency, spectrum.acceleration, strict=True)
+    ]
     Path(path).write_text("\n".join(lines) + "\n", encoding="utf-8")
 
 
@@ -347,9 +349,7 @@ def _require(section: dict, key: str, field: str, source: str, example: str):
 def _rg160(pga, damping, direction, *, field: str, source: str, gravity: float) -> Spectrum:
     pga_si = to_si(pga, "acceleration", field=f"{field}.pga", source=source, gravity=gravity)
     if not pga_si > 0:
-        raise FreestandError(
-            f"pga {pga!r} must be positive", source=source, field=f"{field}.pga"
-        )
+        raise FreestandError(f"pga {pga!r} must be positive", source=source, field=f"{field}.pga")
     percent = round(damping * 100, 6)
     table = RG160_FACTORS[direction]
     if percent not in table:
@@ -391,13 +391,17 @@ def _en1998(values: dict, *, field: str, source: str, gravity: float) -> Spectru
             field=f"{field}.type",
         )
     damping = parse_damping(values.get("damping", 0.05), field=f"{field}.damping", source=source)
-    direction = _direction(values.get("direction", "horizontal"), field=f"{field}.direction", source=source)
+    direction = _direction(
+        values.get("direction", "horizontal"), field=f"{field}.direction", source=source
+    )
     importance = to_si(
         values.get("importance", 1.0), "dimensionless", field=f"{field}.importance", source=source
     )
     if not importance > 0:
         raise FreestandError(
-            f"importance {importance!r} must be positive", source=source, field=f"{field}.importance"
+            f"importance {importance!r} must be positive",
+            source=source,
+            field=f"{field}.importance",
         )
     return en1998_spectrum(
         ag, ground, spectrum_type, damping, direction, importance, gravity=gravity
@@ -409,9 +413,7 @@ def spectrum_from_section(
 ) -> Spectrum:
     """Build the spectrum one ``[[spectrum]]`` section describes (see module docstring)."""
     if not isinstance(section, dict):
-        raise FreestandError(
-            "must be a table with a name and a kind", source=source, field=field
-        )
+        raise FreestandError("must be a table with a name and a kind", source=source, field=field)
     kind = str(_require(section, "kind", f"{field}.kind", source, '"rg1.60"')).strip().lower()
     if kind not in SPECTRUM_KINDS:
         raise FreestandError(
@@ -481,7 +483,13 @@ def spectrum_from_section(
     )
     acc = np.array(
         [
-            to_si(v, "acceleration", field=f"{field}.acceleration[{i}]", source=source, gravity=gravity)
+            to_si(
+                v,
+                "acceleration",
+                field=f"{field}.acceleration[{i}]",
+                source=source,
+                gravity=gravity,
+            )
             for i, v in enumerate(acc_raw)
         ]
     )
@@ -539,7 +547,9 @@ def parse_spectrum_sections(
     """
     if not isinstance(sections, list):
         raise FreestandError(
-            "must be an array of tables: write each as [[spectrum]]", source=source, field="spectrum"
+            "must be an array of tables: write each as [[spectrum]]",
+            source=source,
+            field="spectrum",
         )
     spectra: dict[str, Spectrum] = {}
     for i, section in enumerate(sections):
@@ -549,7 +559,9 @@ def parse_spectrum_sections(
         name = section.get("name")
         if not isinstance(name, str) or not name.strip():
             raise FreestandError(
-                'missing name; add e.g. name = "site-horizontal"', source=source, field=f"{field}.name"
+                'missing name; add e.g. name = "site-horizontal"',
+                source=source,
+                field=f"{field}.name",
             )
         if name in spectra:
             raise FreestandError(
@@ -608,7 +620,9 @@ def parse_spectrum_option(
     model_spectra = model_spectra or {}
     raw = text.strip()
     if not raw:
-        raise FreestandError("empty; name a spectrum (e.g. 'rg1.60:pga=0.3g,damping=5%')", field=field)
+        raise FreestandError(
+            "empty; name a spectrum (e.g. 'rg1.60:pga=0.3g,damping=5%')", field=field
+        )
     if raw in model_spectra:
         return model_spectra[raw]
     head, _, tail = raw.partition(":")
@@ -619,7 +633,8 @@ def parse_spectrum_option(
             key, eq, value = item.partition("=")
             if not eq:
                 raise FreestandError(
-                    f"{item!r} in {raw!r} is not key=value; write e.g. '{head}:pga=0.3g,damping=5%'",
+                    f"{item!r} in {raw!r} is not key=value; "
+                    f"write e.g. '{head}:pga=0.3g,damping=5%'",
                     field=field,
                 )
             values[key.strip().lower()] = _NUMBER_UNIT.sub(r"\1 \2", value.strip())
