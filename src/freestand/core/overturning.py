@@ -183,7 +183,9 @@ def overturning_limits(
         found = np.asarray(result.found, dtype=bool)
     op: dict[str, float] = {}
     if operating_amplitude is not None:
-        op = {name: _crossing_frequency(f, lim, operating_amplitude) for name, lim in limits.items()}
+        op = {
+            name: _crossing_frequency(f, lim, operating_amplitude) for name, lim in limits.items()
+        }
     return OverturningLimits(kind, f, limits, found, operating_amplitude, op)
 
 

@@ -220,9 +220,7 @@ class RockingBlock:
         elif pivot == "right":
             first, second = right, left
         else:
-            raise FreestandError(
-                f"unknown pivot {pivot!r}; use 'left' or 'right'", field="pivot"
-            )
+            raise FreestandError(f"unknown pivot {pivot!r}; use 'left' or 'right'", field="pivot")
         return cls(
             block.mass,
             block.inertia,

@@ -227,7 +227,11 @@ def _simulate(
     t_over = math.nan
     margin = 0.0
     status = 0
-    tiny_w = 1e-12 * math.sqrt(max(par[1], par[5]) * g)
+    # below these angular velocities after an impact (1e-6 of the speed that
+    # carries the block over the barrier of that side) the impacts accumulate
+    # (Zeno): the block settles on its base
+    w_rest_p = 1e-6 * math.sqrt(2.0 * g * par[3] * (1.0 - math.cos(par[2])) / par[4])
+    w_rest_m = 1e-6 * math.sqrt(2.0 * g * par[7] * (1.0 - math.cos(par[6])) / par[8])
     if n_hist < n_hist_max:
         hist_t[n_hist] = t
         hist_th[n_hist] = theta
@@ -363,7 +367,7 @@ def _simulate(
             theta = 0.0
             side = -side
             omega = w_after
-            if abs(omega) <= tiny_w:
+            if abs(omega) <= (w_rest_p if side > 0 else w_rest_m):
                 omega = 0.0
                 resting = True
         else:
@@ -731,7 +735,9 @@ def _excitation_arrays(excitation) -> tuple[int, np.ndarray, np.ndarray]:
     if isinstance(excitation, SampledAcceleration):
         exc = np.array([0.0, 0.0, excitation.length, excitation.dt])
         return _RECORD, exc, excitation.values
-    raise TypeError(f"excitation must be a Pulse, a SampledAcceleration or None, not {excitation!r}")
+    raise TypeError(
+        f"excitation must be a Pulse, a SampledAcceleration or None, not {excitation!r}"
+    )
 
 
 def default_step(block: RockingBlock, excitation=None) -> float:
@@ -825,14 +831,15 @@ def simulate(
 def rocking_energy(block: RockingBlock, rotation, angular_velocity) -> np.ndarray:
     """Mechanical energy of the rocking block about its current pivot [J].
 
-    E = 1/2 I_s omega^2 + m g' R_s cos(alpha_s - s theta), s = sgn(theta),
-    the potential measured from the pivot level (constant between impacts under
-    free rocking).
+    E = 1/2 I_s omega^2 + m g' R_s cos(alpha_s - s theta), s = sgn(theta)
+    (at theta = 0, the side the block moves to: sgn(omega)), the potential
+    measured from the pivot level (constant between impacts under free
+    rocking).
     """
     th = np.asarray(rotation, dtype=float)
     om = np.asarray(angular_velocity, dtype=float)
     plus, minus = block.about("pivot"), block.about("other")
-    pos = th >= 0
+    pos = (th > 0) | ((th == 0) & (om >= 0))
     inertia = np.where(pos, plus.inertia_about_pivot, minus.inertia_about_pivot)
     R = np.where(pos, plus.R, minus.R)
     al = np.where(pos, plus.alpha, minus.alpha)

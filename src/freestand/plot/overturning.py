@@ -139,7 +139,9 @@ def plot_spectrum_check(
     return fig
 
 
-def save_figure(fig: Figure, path: str | Path, *, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
+def save_figure(
+    fig: Figure, path: str | Path, *, formats: tuple[str, ...] = ("png", "svg")
+) -> list[Path]:
     """Write ``fig`` once per format next to ``path`` (its suffix is replaced).
 
     Returns
