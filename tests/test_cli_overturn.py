@@ -24,7 +24,9 @@ def test_cart_rocking_properties(cart_document):
     assert cart_document["pivot"] == "right"  # it rocks about its outer wheel in screening
     assert cart_document["R"] == pytest.approx(3.127, abs=1e-3)
     assert cart_document["alpha"] == pytest.approx(0.4393, abs=1e-4)
-    assert cart_document["p"] == pytest.approx(1.449, abs=2e-3)  # I_B from coordinates: 374 412 vs 374 250
+    assert cart_document["p"] == pytest.approx(
+        1.449, abs=2e-3
+    )  # I_B from coordinates: 374 412 vs 374 250
 
 
 def test_paper_fig6_and_fig7_numbers(cart_document):
@@ -54,7 +56,10 @@ def test_spectrum_check_against_the_stand_in(cart_document):
         (("-c", "x-z cart right", "-b", "bridge"), "carries 'cart'"),
         (("-c", "x-z cart right", "-b", "tower"), "no block named 'tower'"),
         (("-c", "x-z cart right", "-b", "cart", "--pivot", "middle"), "not a pivot"),
-        (("-c", "x-z cart right", "-b", "cart", "--spectrum", "rg1.60:pga=0.2g,damping=4%"), "tabulates damping"),
+        (
+            ("-c", "x-z cart right", "-b", "cart", "--spectrum", "rg1.60:pga=0.2g,damping=4%"),
+            "tabulates damping",
+        ),
     ],
 )
 def test_bad_input(args, message):

@@ -35,7 +35,8 @@ def _rocking_block(model, configuration: str, block_name: str, pivot: str | None
     except KeyError:
         names = ", ".join(repr(b.name) for b in stack.blocks)
         raise FreestandError(
-            f"no block named {block_name!r} in configuration {configuration!r}; choose one of {names}",
+            f"no block named {block_name!r} in configuration {configuration!r}; "
+            f"choose one of {names}",
             source="--block",
         ) from None
     if index != len(stack.blocks) - 1:
@@ -48,7 +49,9 @@ def _rocking_block(model, configuration: str, block_name: str, pivot: str | None
     if pivot is not None and pivot not in ("left", "right"):
         raise FreestandError(f"{pivot!r} is not a pivot; use 'left' or 'right'", source="--pivot")
     block = stack.blocks[index]
-    vertical_acceleration = max((e.vertical for e in model.excitations), default=0.0) if vertical else 0.0
+    vertical_acceleration = (
+        max((e.vertical for e in model.excitations), default=0.0) if vertical else 0.0
+    )
     if pivot is None:
         pivot = _default_pivot(model, stack, block)
     rocking = RockingBlock.from_block(
@@ -61,7 +64,9 @@ def _default_pivot(model, stack, block) -> str:
     """The pivot the block rocks about under the model's excitations, else the easier one."""
     for excitation in sorted(model.excitations, key=lambda e: -e.horizontal):
         for sense in (1, -1):
-            case = initial_motion(stack, excitation.horizontal, excitation.vertical, sense, model.gravity)
+            case = initial_motion(
+                stack, excitation.horizontal, excitation.vertical, sense, model.gravity
+            )
             if case.blocks:
                 state = case.block(block.name)
                 if state.motion in (Motion.ROCK, Motion.SLIDE_ROCK):
@@ -99,7 +104,9 @@ def overturn(
     include_vertical: bool = typer.Option(
         False, "--include-vertical", help="Weight m (g - a_v) with the model's largest a_v."
     ),
-    plot: Path = typer.Option(None, "--plot", help="Folder for the Figs. 6-8 analogues (PNG, SVG)."),
+    plot: Path = typer.Option(
+        None, "--plot", help="Folder for the Figs. 6-8 analogues (PNG, SVG)."
+    ),
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
     """Rocking properties, overturning limits of pulses, and the response-spectrum check."""
@@ -108,17 +115,27 @@ def overturn(
     amplitude_values = parse_numbers(amplitudes, "--amplitudes", "m/s^2") or sorted(
         {e.horizontal for e in model.excitations}
     )
-    frequency_values = parse_numbers(frequencies, "--frequencies", "Hz") or [0.25, 0.5, 1.0, 2.0, 5.0]
+    frequency_values = parse_numbers(frequencies, "--frequencies", "Hz") or [
+        0.25,
+        0.5,
+        1.0,
+        2.0,
+        5.0,
+    ]
     for value in amplitude_values:
         if not value > 0:
             raise FreestandError(f"{value} is not a positive amplitude", source="--amplitudes")
     if any(f <= 0 for f in frequency_values):
         raise FreestandError("frequencies must be positive", source="--frequencies")
     operating = max(e.horizontal for e in model.excitations)
-    rectangular = rectangular_pulse_limits(rocking, np.array(amplitude_values), operating_amplitude=operating)
+    rectangular = rectangular_pulse_limits(
+        rocking, np.array(amplitude_values), operating_amplitude=operating
+    )
     requested = np.array(sorted(set(frequency_values)))
     half_sine = overturning_limits(rocking, requested, kind="half-sine")
-    curves = overturning_limits(rocking, CURVE_FREQUENCIES, kind="half-sine", operating_amplitude=operating)
+    curves = overturning_limits(
+        rocking, CURVE_FREQUENCIES, kind="half-sine", operating_amplitude=operating
+    )
     one_sine = overturning_limits(rocking, requested, kind="one-sine")
     one_cosine = overturning_limits(rocking, requested, kind="one-cosine")
     horizontal = resolve_spectrum(spectrum, model, "horizontal")
@@ -163,7 +180,9 @@ def overturn(
             },
             "rectangular": [
                 {"amplitude": float(a), "housner": _finite(h), "exact": _finite(e)}
-                for a, h, e in zip(rectangular.amplitude, rectangular.housner, rectangular.exact, strict=True)
+                for a, h, e in zip(
+                    rectangular.amplitude, rectangular.housner, rectangular.exact, strict=True
+                )
             ],
             "half_sine": [
                 {
@@ -183,7 +202,9 @@ def overturn(
                 for k, f in enumerate(one_cosine.frequency)
             ],
             "operating_amplitude": operating,
-            "overturns_below_frequency": {k: _finite(v) for k, v in curves.operating_frequency.items()},
+            "overturns_below_frequency": {
+                k: _finite(v) for k, v in curves.operating_frequency.items()
+            },
             "spectrum_check": {
                 name: {
                     "verdict": check.verdict,
@@ -200,9 +221,18 @@ def overturn(
         return
 
     out = console()
-    out.print(f"[bold]{model.name}[/]: overturning of {block!r} in {configuration!r} (paper section 5)")
+    out.print(
+        f"[bold]{model.name}[/]: overturning of {block!r} in {configuration!r} (paper section 5)"
+    )
     table = Table(title="Rocking properties (Housner 1963)")
-    for header in ("pivot", "R [m]", "alpha [rad]", "I_pivot [kg m^2]", "p [rad/s]", "uplift [m/s^2]"):
+    for header in (
+        "pivot",
+        "R [m]",
+        "alpha [rad]",
+        "I_pivot [kg m^2]",
+        "p [rad/s]",
+        "uplift [m/s^2]",
+    ):
         table.add_column(header, justify="left" if header == "pivot" else "right")
     for label, side in ((pivot, "pivot"), ("left" if pivot == "right" else "right", "other")):
         prop = properties[side]
@@ -223,10 +253,22 @@ def overturn(
     for header in ("amplitude [m/s^2]", "Housner [s]", "exact [s]"):
         table.add_column(header, justify="right")
     for a, h, e in zip(rectangular.amplitude, rectangular.housner, rectangular.exact, strict=True):
-        table.add_row(f"{a:.2f}", f"{h:.3f}" if math.isfinite(h) else "no overturning", f"{e:.3f}" if math.isfinite(e) else "no overturning")
+        table.add_row(
+            f"{a:.2f}",
+            f"{h:.3f}" if math.isfinite(h) else "no overturning",
+            f"{e:.3f}" if math.isfinite(e) else "no overturning",
+        )
     out.print(table)
     table = Table(title="Pulses: minimum overturning amplitude [m/s^2] (paper Fig. 7)")
-    for header in ("f [Hz]", "half-sine duration [s]", "Housner", "Makris-Roussos", "exact", "one-sine exact", "one-cosine exact"):
+    for header in (
+        "f [Hz]",
+        "half-sine duration [s]",
+        "Housner",
+        "Makris-Roussos",
+        "exact",
+        "one-sine exact",
+        "one-cosine exact",
+    ):
         table.add_column(header, justify="right")
 
     def cell(value: float) -> str:
@@ -245,7 +287,11 @@ def overturn(
     out.print(table)
     out.print(f"A half-sine pulse of {operating:g} m/s^2 overturns the block up to:")
     for name, value in curves.operating_frequency.items():
-        text = f"{value:.2f} Hz (pulses longer than {0.5 / value:.2f} s)" if math.isfinite(value) else "never in 0.1-20 Hz"
+        text = (
+            f"{value:.2f} Hz (pulses longer than {0.5 / value:.2f} s)"
+            if math.isfinite(value)
+            else "never in 0.1-20 Hz"
+        )
         out.print(f"  {name:15s} {text}")
     out.print(CONCLUSION)
     if checks:
@@ -253,7 +299,9 @@ def overturn(
         for header in ("limit", "verdict", "min. limit / spectrum", "at [Hz]"):
             table.add_column(header)
         for name, check in checks.items():
-            table.add_row(name, check.verdict, f"{check.min_ratio:.2f}", f"{check.frequency_at_min:.2f}")
+            table.add_row(
+                name, check.verdict, f"{check.min_ratio:.2f}", f"{check.frequency_at_min:.2f}"
+            )
         out.print(table)
     for path in written:
         out.print(f"wrote {path}")
