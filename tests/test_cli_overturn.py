@@ -57,6 +57,10 @@ def test_spectrum_check_against_the_stand_in(cart_document):
         (("-c", "x-z cart right", "-b", "tower"), "no block named 'tower'"),
         (("-c", "x-z cart right", "-b", "cart", "--pivot", "middle"), "not a pivot"),
         (
+            ("-c", "x-z cart right", "-b", "cart", "--restitution", "1.5"),
+            "not an angular-velocity ratio",
+        ),
+        (
             ("-c", "x-z cart right", "-b", "cart", "--spectrum", "rg1.60:pga=0.2g,damping=4%"),
             "tabulates damping",
         ),
@@ -66,3 +70,12 @@ def test_bad_input(args, message):
     result = run_freestand("overturn", str(CRANE), *args)
     assert result.returncode == 2
     assert message in result.stderr and "Traceback" not in result.stderr
+
+
+def test_restitution_override():
+    result = run_freestand(
+        "overturn", str(CRANE), "-c", "x-z cart right", "-b", "cart", "--restitution", "0.9",
+        "--amplitudes", "10.31", "--frequencies", "1", "--json",
+    )  # fmt: skip
+    assert result.returncode == 0, result.stderr
+    assert json.loads(result.stdout)["restitution"] == pytest.approx(0.9)

@@ -28,7 +28,14 @@ CONCLUSION = (
 )
 
 
-def _rocking_block(model, configuration: str, block_name: str, pivot: str | None, vertical: bool):
+def _rocking_block(
+    model,
+    configuration: str,
+    block_name: str,
+    pivot: str | None,
+    vertical: bool,
+    restitution: float | None = None,
+):
     stack = model.configuration(configuration)
     try:
         index = stack.block_index(block_name)
@@ -54,8 +61,18 @@ def _rocking_block(model, configuration: str, block_name: str, pivot: str | None
     )
     if pivot is None:
         pivot = _default_pivot(model, stack, block)
+    if restitution is not None and not 0 <= restitution <= 1:
+        raise FreestandError(
+            f"{restitution} is not an angular-velocity ratio; give a value in [0, 1] "
+            "(Housner's energy ratio r is its square)",
+            source="--restitution",
+        )
     rocking = RockingBlock.from_block(
-        block, pivot, gravity=model.gravity, vertical_acceleration=vertical_acceleration
+        block,
+        pivot,
+        gravity=model.gravity,
+        vertical_acceleration=vertical_acceleration,
+        restitution_override=restitution,
     )
     return stack, block, pivot, rocking
 
@@ -101,6 +118,11 @@ def overturn(
     frequencies: str = typer.Option(
         None, "--frequencies", help="Half-sine pulse frequencies [Hz] (default: 0.25,0.5,1,2,5)."
     ),
+    restitution: float = typer.Option(
+        None,
+        "--restitution",
+        help="Angular-velocity ratio at impact [-] in place of the one from angular momentum.",
+    ),
     include_vertical: bool = typer.Option(
         False, "--include-vertical", help="Weight m (g - a_v) with the model's largest a_v."
     ),
@@ -111,7 +133,9 @@ def overturn(
 ) -> None:
     """Rocking properties, overturning limits of pulses, and the response-spectrum check."""
     model = load_model(model_file)
-    _, _, pivot, rocking = _rocking_block(model, configuration, block, pivot, include_vertical)
+    _, _, pivot, rocking = _rocking_block(
+        model, configuration, block, pivot, include_vertical, restitution
+    )
     amplitude_values = parse_numbers(amplitudes, "--amplitudes", "m/s^2") or sorted(
         {e.horizontal for e in model.excitations}
     )
