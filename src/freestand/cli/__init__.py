@@ -24,12 +24,13 @@ app = typer.Typer(
 
 
 def _register() -> None:
-    from freestand.cli import frequency, maps, overturn, screen
+    from freestand.cli import frequency, maps, overturn, screen, simulate
 
     screen.register(app)
     frequency.register(app)
     maps.register(app)
     overturn.register(app)
+    simulate.register(app)
 
 
 _register()
