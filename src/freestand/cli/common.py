@@ -38,7 +38,6 @@ def resolve_spectrum(option: str | None, model: ModelFile, direction: str) -> Sp
     """The spectrum named by ``--spectrum``, else the model's first one for ``direction``."""
     if option is None:
         return model.spectrum(direction)
-    spectrum = parse_spectrum_option(
+    return parse_spectrum_option(
         option, model_spectra=model.spectra, base_dir=model.base_dir, gravity=model.gravity
     )
-    return spectrum

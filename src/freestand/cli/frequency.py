@@ -59,9 +59,9 @@ def frequency(
         from freestand.plot.frequency import plot_frequency_sweep, save_frequency_figure
 
         plot.mkdir(parents=True, exist_ok=True)
-        full_check = (
-            jump_check(full_sweep, vertical, model.gravity, parking=parking) if vertical else None
-        )
+        full_check = check
+        if vertical is not None and sweep is not full_sweep:
+            full_check = jump_check(full_sweep, vertical, model.gravity, parking=parking)
         figure = plot_frequency_sweep(
             full_sweep, parking=parking, jump=full_check, vertical_spectrum=vertical
         )

@@ -66,9 +66,7 @@ def simulate(
         np.asarray(motion.horizontal),
         None if motion.vertical is None else np.asarray(motion.vertical),
     )
-    result = simulate_stack(
-        stack, support, duration, max_step=min(step, motion.dt), gravity=model.gravity
-    )
+    result = simulate_stack(stack, support, duration, max_step=step, gravity=model.gravity)
     kinds = sorted({event.kind for event in result.events})
     counts = {kind: sum(event.kind == kind for event in result.events) for kind in kinds}
     blocks = []

@@ -317,10 +317,15 @@ def _reference_contact(mode: InterfaceMode) -> int:
     return 1 if (mode.right_closed and not mode.left_closed) else 0
 
 
-def _assemble(
+def assemble_mode(
     problem: ContactProblem, modes: tuple[InterfaceMode, ...], use_static: bool
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Linear system ``A y = r`` of one mode; ``y = [qdd, (N_L, N_R, T) per interface]``.
+    """Linear system ``A y = r`` of one contact mode.
+
+    ``y = [qdd, (N_L, N_R, T) per interface]``; the rows are the equations of
+    motion, then per interface the two normal conditions (closed: gap
+    acceleration zero; open: force zero) and the tangential one (stick, slide
+    with friction against the slip, or no force).
 
     With ``use_static`` the sliding interfaces that start from rest act with
     their static coefficient (the break-away test), otherwise kinetic.
@@ -492,7 +497,7 @@ def solve_contact(problem: ContactProblem) -> ContactResult:
     combinations = list(itertools.product(*per_interface))
     force_tol = RELATIVE_TOLERANCE * max(problem.force_scale, np.finfo(float).tiny)
     accel_tol = RELATIVE_TOLERANCE * max(problem.acceleration_scale, np.finfo(float).tiny)
-    systems = [_assemble(problem, modes, use_static=False) for modes in combinations]
+    systems = [assemble_mode(problem, modes, use_static=False) for modes in combinations]
     matrices = np.array([system[0] for system in systems])
     rhs = np.array([system[1] for system in systems])
     solutions, solvable = _solve_batch(matrices, rhs)
@@ -515,7 +520,7 @@ def solve_contact(problem: ContactProblem) -> ContactResult:
         if not any(mode.slide_direction for mode in solution.modes):
             physical.append(solution)
             continue
-        matrix, rhs_static = _assemble(problem, solution.modes, use_static=True)
+        matrix, rhs_static = assemble_mode(problem, solution.modes, use_static=True)
         try:
             static = np.linalg.solve(matrix, rhs_static)
         except np.linalg.LinAlgError:

@@ -290,7 +290,7 @@ def _block_states(stack: Stack, solution: ContactSolution) -> tuple[BlockState, 
     return tuple(_clean(state) for state in states)
 
 
-def _clean(state: BlockState, digits: int = 12) -> BlockState:
+def _clean(state: BlockState) -> BlockState:
     """Round away the signed zeros and 1e-13 residues of the linear solves."""
 
     def tidy(value: float, scale: float) -> float:

@@ -66,7 +66,7 @@ from freestand.core.contact import (
     Interface,
     InterfaceMode,
     Tangential,
-    _assemble,
+    assemble_mode,
     solve_contact,
 )
 from freestand.core.model import Sliding, Stack
@@ -762,7 +762,7 @@ class _Simulation:
         problem = contact_problem_in_motion(
             self.stack, q, qd, -a_h, a_v, self.gravity, self.tol, kinematics=kin
         )
-        matrix, rhs = _assemble(problem, held.modes, use_static=False)
+        matrix, rhs = assemble_mode(problem, held.modes, use_static=False)
         solution = np.linalg.solve(matrix, rhs)
         n = problem.size
         return solution[:n], solution[n:].reshape(-1, 3), kin, problem

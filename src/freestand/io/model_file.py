@@ -89,15 +89,13 @@ class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
 
-def _context(info) -> tuple[str | None, float]:
-    context = info.context or {}
-    return context.get("source"), context.get("gravity", 9.81)
+def _gravity(info) -> float:
+    return (info.context or {}).get("gravity", 9.81)
 
 
 def _quantity(value: Any, quantity: str, info) -> float:
-    source, gravity = _context(info)
-    # The field path is added when the ValidationError is translated.
-    return to_si(value, quantity, field="", source=None, gravity=gravity)
+    # The file and field path are added when the ValidationError is translated.
+    return to_si(value, quantity, field="", gravity=_gravity(info))
 
 
 def _positive(value: float, what: str, example: str) -> float:
@@ -523,7 +521,7 @@ def load_model_text(
             field="gravity",
         )
     try:
-        spec = _ModelSpec.model_validate(data, context={"source": source, "gravity": gravity})
+        spec = _ModelSpec.model_validate(data, context={"gravity": gravity})
     except ValidationError as error:
         raise _translate(error, data, source) from None
 
