@@ -79,3 +79,26 @@ def test_restitution_override():
     )  # fmt: skip
     assert result.returncode == 0, result.stderr
     assert json.loads(result.stdout)["restitution"] == pytest.approx(0.9)
+
+
+def test_record_spectrum_and_bare_numbers_in_options():
+    """--spectrum takes a record's response spectrum; bare option numbers are SI."""
+    from tests.conftest import ROOT
+
+    record = ROOT / "examples" / "records" / "synthetic_H.AT2"
+    checks = {}
+    for option in (f"record:{record},peak=2.943", f"record:{record},peak=0.3g"):
+        result = run_freestand(
+            "overturn", str(CRANE), "-c", "x-z cart right", "-b", "cart",
+            "--frequencies", "0.5", "--spectrum", option, "--json",
+        )  # fmt: skip
+        assert result.returncode == 0, result.stderr
+        checks[option] = json.loads(result.stdout)["spectrum_check"]
+    first, second = checks.values()
+    assert first["exact"]["min_ratio"] == pytest.approx(second["exact"]["min_ratio"], rel=1e-9)
+    assert first["exact"]["min_ratio"] > 1  # 0.3 g record: the cart does not overturn
+    result = run_freestand(
+        "overturn", str(CRANE), "-c", "x-z cart right", "-b", "cart", "--frequencies", "0.5",
+        "--spectrum", "en1998:ag=2.5,ground=B,type=1", "--json",
+    )  # fmt: skip
+    assert result.returncode == 0, result.stderr

@@ -84,3 +84,61 @@ def test_bad_sections(tmp_path, section, message):
 def test_unknown_option(tmp_path):
     with pytest.raises(FreestandError, match="neither a spectrum of the model"):
         parse_spectrum_option("nonsense", model_spectra={}, base_dir=tmp_path, gravity=9.81)
+
+
+RECORDS = Path(__file__).resolve().parents[1] / "examples" / "records"
+
+
+def test_record_spectrum_is_the_records_response_spectrum(tmp_path):
+    """kind = "record": the Nigam-Jennings spectrum of the scaled record, any direction."""
+    import numpy as np
+
+    from freestand.core.response_spectrum import response_spectrum
+    from freestand.io.records import load_record
+
+    motion = load_record(RECORDS / "synthetic_H.AT2").scaled_to_peak(0.3 * 9.81)
+    expected = response_spectrum(motion, damping=0.02)
+    option = parse_spectrum_option(
+        f"record:{RECORDS / 'synthetic_H.AT2'},damping=2%,peak=0.3g",
+        model_spectra={},
+        base_dir=tmp_path,
+        gravity=9.81,
+    )
+    np.testing.assert_allclose(option.frequency, expected.frequency, rtol=0)
+    np.testing.assert_allclose(option.acceleration, expected.acceleration, rtol=1e-12)
+    assert option.damping == 0.02 and option.direction == "horizontal"
+    # rigid limit of a pseudo-acceleration spectrum: the record's peak (1 % at 100 Hz)
+    assert option.acceleration_at(100.0) == pytest.approx(0.3 * 9.81, rel=0.01)
+
+    (tmp_path / "motions").mkdir()
+    (tmp_path / "motions" / "up.AT2").write_bytes((RECORDS / "synthetic_UP.AT2").read_bytes())
+    section = {
+        "name": "site vertical",
+        "kind": "record",
+        "file": "motions/up.AT2",
+        "scale": 2.0,
+        "direction": "vertical",
+    }
+    spectra = parse_spectrum_sections([section], source="m.toml", base_dir=tmp_path, gravity=9.81)
+    vertical = load_record(RECORDS / "synthetic_UP.AT2").scaled(2.0)
+    expected = response_spectrum(vertical, damping=0.05)
+    assert spectra["site vertical"].direction == "vertical"
+    np.testing.assert_allclose(
+        spectra["site vertical"].acceleration, expected.acceleration, rtol=1e-12
+    )
+
+
+@pytest.mark.parametrize(
+    ("option", "message"),
+    [
+        ("record:", "needs a file"),
+        ("record:missing.AT2", "missing.AT2"),
+        (f"record:{RECORDS / 'synthetic_H.AT2'},scale=2,peak=0.3g", "either scale or peak"),
+        (f"record:{RECORDS / 'synthetic_H.AT2'},peak=-1", "not a positive peak"),
+        (f"record:{RECORDS / 'synthetic_H.AT2'},speed=3", "speed not known"),
+        (f"record:{RECORDS / 'synthetic_H.AT2'},damping", "not key=value"),
+    ],
+)
+def test_bad_record_spectrum(tmp_path, option, message):
+    with pytest.raises(FreestandError, match=message):
+        parse_spectrum_option(option, model_spectra={}, base_dir=tmp_path, gravity=9.81)

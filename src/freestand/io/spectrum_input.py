@@ -11,13 +11,19 @@ Sources, all turned into :class:`freestand.core.spectra.Spectrum`:
 - ``en1998``: the EN 1998-1 elastic spectrum (``ag``, ``ground`` A-E,
   ``type`` 1 or 2, ``damping``, ``direction``, ``importance``);
 - ``table``: inline ``frequency`` and ``acceleration`` arrays (``unit``);
+- ``record``: the response spectrum of a ground-motion record (``file``:
+  PEER ``.AT2``, CSV with units or one column with ``dt`` and ``unit``;
+  optional ``scale`` [-] or ``peak`` acceleration), computed by the exact
+  Nigam-Jennings recursion of :mod:`freestand.core.response_spectrum` at the
+  given ``damping``;
 - in a model file, ``[[spectrum]]`` tables with a ``name`` and a ``kind``
   among ``csv`` (``file``, relative to the model file), ``rg1.60``,
-  ``en1998`` and ``table``.
+  ``en1998``, ``table`` and ``record`` (``file`` relative to the model file).
 
 On the command line ``--spectrum`` takes the name of a model spectrum, a CSV
 path, or ``KIND:key=value,key=value`` (e.g. ``rg1.60:pga=0.3g,damping=5%``,
-``en1998:ag=2.5,ground=B,type=1,direction=vertical``).
+``en1998:ag=2.5,ground=B,type=1,direction=vertical``), or
+``record:FILE[,key=value...]`` (e.g. ``record:el-centro.AT2,damping=2%,peak=0.3g``).
 """
 
 from __future__ import annotations
@@ -33,7 +39,7 @@ from freestand.core.spectra import Spectrum
 from freestand.errors import FreestandError
 from freestand.io.units import to_si
 
-KINDS = ("csv", "rg1.60", "en1998", "table")
+KINDS = ("csv", "rg1.60", "en1998", "table", "record")
 _HEADER = re.compile(r"^\s*([A-Za-z _]+?)\s*\[(.+)\]\s*$")
 
 
@@ -197,6 +203,7 @@ def spectrum_from_settings(
         "rg1.60": {"pga"},
         "en1998": {"ag", "ground", "type", "importance"},
         "table": {"frequency", "acceleration", "unit", "label"},
+        "record": {"file", "dt", "unit", "scale", "peak", "label"},
     }
     if kind not in allowed:
         raise FreestandError(
@@ -227,6 +234,17 @@ def spectrum_from_settings(
                 path if path.is_absolute() else base_dir / path,
                 direction=direction,
                 damping=damping,
+                gravity=gravity,
+            )
+        if kind == "record":
+            return _record_spectrum(
+                settings,
+                need("file"),
+                direction=direction,
+                damping=damping,
+                source=source,
+                field=field,
+                base_dir=base_dir,
                 gravity=gravity,
             )
         if kind == "rg1.60":
@@ -286,6 +304,64 @@ def spectrum_from_settings(
         raise FreestandError(str(error), source=source, field=field) from None
 
 
+def _record_spectrum(
+    settings: dict,
+    file: str,
+    *,
+    direction: str,
+    damping: float,
+    source: str,
+    field: str,
+    base_dir: Path,
+    gravity: float,
+) -> Spectrum:
+    """Pseudo-acceleration spectrum of a record file (kind ``record``)."""
+    from freestand.core.response_spectrum import response_spectrum
+    from freestand.io.records import load_record
+
+    path = Path(file)
+    path = path if path.is_absolute() else base_dir / path
+    dt = settings.get("dt")
+    if dt is not None:
+        dt = to_si(dt, "time", field=f"{field}.dt", source=source)
+    motion = load_record(path, dt=dt, unit=settings.get("unit"), gravity=gravity)
+    if "scale" in settings and "peak" in settings:
+        raise FreestandError(
+            "takes either scale or peak, not both", source=source, field=f"{field}.scale"
+        )
+    if "scale" in settings:
+        factor = to_si(settings["scale"], "dimensionless", field=f"{field}.scale", source=source)
+        if not factor > 0:
+            raise FreestandError(
+                f"{settings['scale']!r} is not a positive factor",
+                source=source,
+                field=f"{field}.scale",
+            )
+        motion = motion.scaled(factor)
+    if "peak" in settings:
+        target = to_si(
+            settings["peak"], "acceleration", field=f"{field}.peak", source=source, gravity=gravity
+        )
+        if not target > 0:
+            raise FreestandError(
+                f'{settings["peak"]!r} is not a positive peak acceleration; e.g. peak = "0.3 g"',
+                source=source,
+                field=f"{field}.peak",
+            )
+        motion = motion.scaled_to_peak(target)
+    label = settings.get("label", f"{path.name} ({direction}, {100 * damping:g} %)")
+    # One file holds one component: its spectrum is that of the direction it is used for.
+    spectrum = response_spectrum(motion.horizontal, motion.dt, damping=damping, label=str(label))
+    return Spectrum(
+        spectrum.frequency,
+        spectrum.acceleration,
+        damping=damping,
+        direction=direction,
+        label=str(label),
+        metadata=dict(spectrum.metadata, record=str(path)),
+    )
+
+
 def parse_spectrum_sections(
     sections: list[dict], *, source: str, base_dir: Path, gravity: float
 ) -> dict[str, Spectrum]:
@@ -330,6 +406,21 @@ def parse_spectrum_option(
     if text == "crane-stand-in":
         return crane_stand_in_spectra()[0]
     kind, _, rest = text.partition(":")
+    if kind == "record":
+        file, _, options = rest.partition(",")
+        if not file.strip():
+            raise FreestandError(
+                "'record:' needs a file, e.g. record:motion.AT2,damping=5%", source=source
+            )
+        settings = {"file": file.strip()}
+        for item in filter(None, (part.strip() for part in options.split(","))):
+            key, sep, value = item.partition("=")
+            if not sep:
+                raise FreestandError(f"{item!r} is not key=value", source=source)
+            settings[key.strip()] = value.strip()
+        return spectrum_from_settings(
+            "record", settings, source=source, field="record", base_dir=Path.cwd(), gravity=gravity
+        )
     if kind in ("rg1.60", "en1998"):
         settings = {}
         for item in filter(None, (part.strip() for part in rest.split(","))):
@@ -353,6 +444,7 @@ def parse_spectrum_option(
     known = ", ".join(repr(name) for name in model_spectra) or "none in the model"
     raise FreestandError(
         f"{text!r} is neither a spectrum of the model ({known}), a CSV file, nor "
-        "'rg1.60:pga=...,damping=...' / 'en1998:ag=...,ground=...,type=...'",
+        "'rg1.60:pga=...,damping=...' / 'en1998:ag=...,ground=...,type=...' / "
+        "'record:FILE,damping=...'",
         source=source,
     )

@@ -37,6 +37,14 @@ def _registry():
     return pint.UnitRegistry()
 
 
+def _is_plain_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
 def to_si(
     value: object,
     quantity: str,
@@ -79,6 +87,9 @@ def to_si(
     if isinstance(value, bool):
         raise FreestandError(f"{value!r} is not a number; {fix}", source=source, field=field)
     if isinstance(value, int | float):
+        result = float(value)
+    elif isinstance(value, str) and _is_plain_number(value):
+        # a bare number written as text (command-line options): already SI
         result = float(value)
     elif isinstance(value, str):
         text = value.strip()
