@@ -32,6 +32,9 @@ SLIDING_EVENTS = {
     "tangential-impact": ("D", "tangential impact"),
 }
 
+#: How long the last frame of an animation stays [ms] before it loops.
+HOLD_LAST_FRAME = 1500
+
 
 def _colour(index: int) -> str:
     return f"C{index % 10}"
@@ -70,6 +73,8 @@ def _value_at(time: np.ndarray, values: np.ndarray, instant: float) -> float:
 def _mark_events(ax, result: TimeHistoryResult, trace: np.ndarray, kinds: dict, factor: float):
     for kind, (marker, label) in kinds.items():
         events = result.events_of(kind)
+        if not events:
+            continue
         for block in range(len(result.block_names)):
             times = [e.time for e in events if e.interface == block]
             if not times:
@@ -85,6 +90,11 @@ def _mark_events(ax, result: TimeHistoryResult, trace: np.ndarray, kinds: dict, 
             [], [], linestyle="none", marker=marker, markersize=5, color="0.3",
             markerfacecolor="none" if marker == "o" else "0.3", label=label,
         )  # fmt: skip
+
+
+def _legend(ax) -> None:
+    """Legend outside the panel, on its right, so that no curve is hidden."""
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize="small", borderaxespad=0.0)
 
 
 def verdict_lines(result: TimeHistoryResult) -> list[str]:
@@ -155,7 +165,7 @@ def plot_time_history(
     names = result.block_names
     count = len(names)
     panels = (1 if support_motion is not None else 0) + 2 + count
-    figure = Figure(figsize=(8.0, 1.9 * panels + 1.0), layout="constrained")
+    figure = Figure(figsize=(9.0, 1.9 * panels + 1.0), layout="constrained")
     axes = figure.subplots(panels, 1, sharex=True, squeeze=False)[:, 0]
     for ax in axes:
         ax.grid(True, alpha=0.3)
@@ -170,7 +180,7 @@ def plot_time_history(
                 t, a_v, color="0.5", linewidth=0.8, label="a_v (downward)", gid="support:vertical"
             )
         ax.set_ylabel("support accel.\n[m/s^2]")
-        ax.legend(loc="upper right", fontsize="small")
+        _legend(ax)
         row += 1
 
     ax = axes[row]
@@ -182,7 +192,7 @@ def plot_time_history(
         )  # fmt: skip
     _mark_events(ax, result, result.slide, SLIDING_EVENTS, slide_factor)
     ax.set_ylabel(f"slide on body below\n[{slide_unit}]")
-    ax.legend(loc="upper left", fontsize="small", ncols=min(4, count + len(SLIDING_EVENTS)))
+    _legend(ax)
     row += 1
 
     ax = axes[row]
@@ -194,7 +204,7 @@ def plot_time_history(
         )  # fmt: skip
     _mark_events(ax, result, result.relative_rotation, ROCKING_EVENTS, rotation_factor)
     ax.set_ylabel(f"rotation rel. to\nbody below [{rotation_unit}]")
-    ax.legend(loc="upper left", fontsize="small", ncols=min(4, count + len(ROCKING_EVENTS)))
+    _legend(ax)
     row += 1
 
     for block, name in enumerate(names):
@@ -212,7 +222,7 @@ def plot_time_history(
         )  # fmt: skip
         below = names[block - 1] if block else "support"
         ax.set_ylabel(f"forces {name}\non {below} [kN]")
-        ax.legend(loc="upper right", fontsize="small", ncols=3)
+        _legend(ax)
         row += 1
 
     for block, name in enumerate(names):
@@ -224,7 +234,7 @@ def plot_time_history(
                     label=f"{name} overturns, {instant:.3f} s" if index == 0 else None,
                     gid=f"overturn:{block}",
                 )  # fmt: skip
-            axes[0].legend(loc="upper right", fontsize="small")
+            _legend(axes[0])
     axes[-1].set_xlabel("time t [s]")
     axes[-1].set_xlim(float(time[0]), float(time[-1]))
     heading = title or f"Time history: {result.configuration}"
@@ -349,7 +359,9 @@ def animate_time_history(
     pad = 0.08 * max(span)
     x_limits = (low[0] - pad, high[0] + pad)
     ground = 0.06 * max(span)
-    z_limits = (min(low[1], 0.0) - ground - pad, high[1] + 2.5 * pad)
+    bottom, top = min(low[1], 0.0) - ground - pad, high[1] + pad
+    text_share = 0.09 + 0.055 * count  # of the height, above the blocks, for the text
+    z_limits = (bottom, top + text_share * (top - bottom) / (1.0 - text_share))
 
     figure = Figure(figsize=(6.4, 4.8), layout="constrained")
     ax = figure.add_subplot()
@@ -371,7 +383,7 @@ def animate_time_history(
     for block in range(count):
         patch = Polygon(
             outlines[block], closed=True, facecolor=_colour(block), alpha=0.55,
-            edgecolor="k", linewidth=1.0, label=names[block],
+            edgecolor="k", linewidth=1.0,
         )  # fmt: skip
         ax.add_patch(patch)
         patches.append(patch)
@@ -379,7 +391,6 @@ def animate_time_history(
         (contact_mark,) = ax.plot([], [], marker="o", markersize=4, color="k", linestyle="none")
         centre_marks.append(centre_mark)
         contact_marks.append(contact_mark)
-    ax.legend(loc="upper right", fontsize="small")
 
     arrow_x = x_limits[0] + 0.5 * (x_limits[1] - x_limits[0])
     arrow_z = -0.5 * ground
@@ -392,9 +403,20 @@ def animate_time_history(
     arrow_length = 0.25 * (x_limits[1] - x_limits[0])
 
     clock = ax.text(0.02, 0.97, "", transform=ax.transAxes, va="top", family="monospace")
-    states = ax.text(
-        0.02, 0.86, "", transform=ax.transAxes, va="top", fontsize="small", family="monospace"
-    )
+    states = [
+        ax.text(
+            0.02,
+            0.90 - 0.055 * (count - 1 - block),
+            "",
+            transform=ax.transAxes,
+            va="top",
+            fontsize="small",
+            family="monospace",
+            color=_colour(block),
+            fontweight="bold",
+        )  # fmt: skip
+        for block in range(count)
+    ]  # the top block first, as stacked
     if exaggeration != 1.0:
         ax.text(
             0.98, 0.03, f"rotations drawn x{exaggeration:g}", transform=ax.transAxes,
@@ -406,7 +428,7 @@ def animate_time_history(
     # Lay the figure out and draw what does not move once; each frame then draws
     # only the moving artists over that background (blitting) and the frames are
     # written by Pillow as one looping GIF (as matplotlib.animation.PillowWriter).
-    moving = [*patches, *centre_marks, *contact_marks, arrow, arrow_head, clock, states]
+    moving = [*patches, *centre_marks, *contact_marks, arrow, arrow_head, clock, *states]
     for artist in moving:
         artist.set_animated(True)
     figure.set_dpi(dpi)
@@ -430,14 +452,16 @@ def animate_time_history(
             text += f"   a_h = {a_h:+6.2f} m/s^2"
             if support_motion.vertical is not None:
                 text += f"   a_v = {a_v:+6.2f} m/s^2"
-            if peak > 0:
+            if abs(a_h) > 1e-3 * peak:
                 tip = arrow_x + arrow_length * a_h / peak
                 arrow.set_data([arrow_x, tip], [arrow_z, arrow_z])
                 arrow_head.set_data([tip], [arrow_z])
                 arrow_head.set_marker(">" if a_h >= 0 else "<")
+            else:
+                arrow.set_data([], [])
+                arrow_head.set_data([], [])
         clock.set_text(text)
         latest = int(np.searchsorted(event_times, instant, side="right")) - 1
-        lines = []
         for block, name in enumerate(names):
             if result.overturned[block] and instant >= result.overturn_time[block]:
                 motion = f"overturned at {result.overturn_time[block]:.3f} s"
@@ -445,17 +469,16 @@ def animate_time_history(
                 motion = result.events[latest].motions[block]
             else:
                 motion = "rest"
-            lines.append(f"{name}: {motion}")
-        states.set_text("\n".join(lines))
+            states[block].set_text(f"{name}: {motion}")
         canvas.restore_region(background)
         for artist in moving:
             figure.draw_artist(artist)
         frames.append(
             Image.frombuffer("RGBA", canvas.get_width_height(), canvas.buffer_rgba()).convert("RGB")
         )
-    frames[0].save(
-        target, save_all=True, append_images=frames[1:], duration=round(1000.0 / fps), loop=0
-    )
+    durations = [round(1000.0 / fps)] * len(frames)
+    durations[-1] = max(durations[-1], HOLD_LAST_FRAME)
+    frames[0].save(target, save_all=True, append_images=frames[1:], duration=durations, loop=0)
     return target
 
 
