@@ -114,7 +114,8 @@ def stack_poses(stack: Stack, position: np.ndarray, exaggeration: float = 1.0) -
         block overturned).
     exaggeration : float, optional
         Factor ``k`` [-] on each block's rotation relative to the body below,
-        positive; 1 (default) gives the true poses.
+        positive; 1 (default) gives the true poses. Exaggerated rotations are
+        limited to +-pi/2.
 
     Returns
     -------
@@ -132,7 +133,9 @@ def stack_poses(stack: Stack, position: np.ndarray, exaggeration: float = 1.0) -
     pivot is and turns the block by ``k theta_i`` about it,
     ``T'_i X = T_i P + R(k theta_i) (X - P)``, and the drawn poses are
     ``D_i = D_{i-1} T'_i``. Slides and the pivot's lift stay true; the
-    other contact's lift grows with the rotation. For ``k = 1``, ``D_i = A_i``.
+    other contact's lift grows with the rotation. The drawn relative rotation
+    ``k theta_i`` is limited to +-pi/2 (a block lying on its side). For
+    ``k = 1``, ``D_i = A_i`` (no limit).
     """
     if not exaggeration > 0.0:
         raise ValueError(f"exaggeration must be positive, not {exaggeration!r}")
@@ -153,7 +156,7 @@ def stack_poses(stack: Stack, position: np.ndarray, exaggeration: float = 1.0) -
             contacts = np.array(block.contacts, dtype=float)
             lift = place(relative, contacts)[:, 1] - block.base_level
             pivot = contacts[int(np.argmin(lift))]
-            turned = exaggeration * relative[0]
+            turned = min(max(exaggeration * relative[0], -0.5 * math.pi), 0.5 * math.pi)
             moved = place(relative, pivot) - _rotation(turned) @ pivot
             drawn = _compose(drawn_below, np.array([turned, *moved]))
         poses[i] = drawn

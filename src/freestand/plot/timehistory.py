@@ -445,6 +445,7 @@ def animate_time_history(
             contact_marks[block].set_data(*place(pose, contacts[block]).T)
             over = bool(result.overturned[block]) and instant >= result.overturn_time[block]
             patches[block].set_edgecolor("red" if over else "k")
+            patches[block].set_linewidth(2.0 if over else 1.0)
             patches[block].set_hatch("xx" if over else None)
         text = f"t = {instant:7.3f} s"
         if support_motion is not None:
