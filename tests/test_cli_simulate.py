@@ -37,3 +37,58 @@ def test_scale_and_peak_exclude_each_other():
         "simulate", str(CRANE), "-c", "y-z", "--record", str(RECORD), "--scale", "2", "--peak", "3"
     )
     assert result.returncode == 2 and "not both" in result.stderr
+
+
+def test_plot_and_animate_write_files_and_list_them(tmp_path):
+    figures = tmp_path / "figures"
+    gif = tmp_path / "anim" / "crane.gif"
+    result = run_freestand(
+        "simulate", str(CRANE), "-c", "x-z cart right", "--record", str(RECORD),
+        "--peak", "8", "--duration", "1", "--plot", str(figures), "--animate", str(gif),
+        "--exaggerate", "1000", "--json",
+    )  # fmt: skip
+    assert result.returncode == 0, result.stderr
+    document = json.loads(result.stdout)
+    expected = [figures / "time-history.png", figures / "time-history.svg", gif]
+    assert document["figures"] == [str(path) for path in expected]
+    assert all(path.stat().st_size > 1000 for path in expected)
+    from PIL import Image
+
+    image = Image.open(gif)
+    assert image.format == "GIF" and image.n_frames > 1
+
+
+def test_plot_paths_are_printed(tmp_path):
+    result = run_freestand(
+        "simulate", str(CRANE), "-c", "y-z", "--record", str(RECORD), "--peak", "3",
+        "--duration", "0.3", "--plot", str(tmp_path),
+    )  # fmt: skip
+    assert result.returncode == 0, result.stderr
+    assert f"wrote {tmp_path / 'time-history.png'}" in result.stdout.replace("\n", "")
+
+
+def test_animation_must_be_a_gif(tmp_path):
+    result = run_freestand(
+        "simulate", str(CRANE), "-c", "y-z", "--record", str(RECORD),
+        "--animate", str(tmp_path / "motion.mp4"),
+    )  # fmt: skip
+    assert result.returncode == 2
+    assert "--animate" in result.stderr and "motion.mp4" in result.stderr
+    assert "motion.gif" in result.stderr  # the fix
+    assert "Traceback" not in result.stderr
+    assert not (tmp_path / "motion.mp4").exists()
+
+
+def test_bad_exaggeration_and_plot_folder_give_messages(tmp_path):
+    result = run_freestand(
+        "simulate", str(CRANE), "-c", "y-z", "--record", str(RECORD), "--exaggerate", "-2"
+    )
+    assert result.returncode == 2 and "--exaggerate" in result.stderr
+    assert "Traceback" not in result.stderr
+    occupied = tmp_path / "file.txt"
+    occupied.write_text("")
+    result = run_freestand(
+        "simulate", str(CRANE), "-c", "y-z", "--record", str(RECORD), "--plot", str(occupied)
+    )
+    assert result.returncode == 2 and "--plot" in result.stderr and "folder" in result.stderr
+    assert "Traceback" not in result.stderr

@@ -45,6 +45,15 @@ def simulate(
         None, "--duration", help="Simulated time [s] (default: the record)."
     ),
     step: float = typer.Option(1e-3, "--step", help="Largest integration step [s]."),
+    plot: Path = typer.Option(
+        None, "--plot", help="Folder for the time-history figure (time-history.png, .svg)."
+    ),
+    animate: Path = typer.Option(
+        None, "--animate", help="Write an animated GIF of the blocks moving (FILE.gif)."
+    ),
+    exaggerate: float = typer.Option(
+        1.0, "--exaggerate", help="Draw rotations this many times larger in the GIF [-]."
+    ),
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
     """Sliding, rocking, impacts and overturning of every block under a record."""
@@ -54,6 +63,7 @@ def simulate(
         raise FreestandError("give either --scale or --peak, not both", source="--scale")
     if not step > 0:
         raise FreestandError(f"{step} is not a positive step; e.g. --step 0.001", source="--step")
+    check_drawing_options(plot, animate, exaggerate)
     motion = load_record(record, dt=dt, unit=unit, gravity=model.gravity, vertical=vertical)
     if scale is not None:
         motion = motion.scaled(scale)
@@ -67,6 +77,10 @@ def simulate(
         None if motion.vertical is None else np.asarray(motion.vertical),
     )
     result = simulate_stack(stack, support, duration, max_step=step, gravity=model.gravity)
+    title = (
+        f"{model.name} / {configuration}: {motion.name}, peak {motion.peak_horizontal:.2f} m/s^2"
+    )
+    written = draw(result, stack, support, plot, animate, exaggerate, title)
     kinds = sorted({event.kind for event in result.events})
     counts = {kind: sum(event.kind == kind for event in result.events) for kind in kinds}
     blocks = []
@@ -93,6 +107,7 @@ def simulate(
             "message": result.message,
             "blocks": blocks,
             "events": counts,
+            "figures": [str(path) for path in written],
             "first_events": [
                 {"time": event.time, "kind": event.kind, "interface": event.interface}
                 for event in result.events[:50]
@@ -130,6 +145,50 @@ def simulate(
     out.print(
         "Events: " + (", ".join(f"{kind} x{count}" for kind, count in counts.items()) or "none")
     )
+    for path in written:
+        out.print(f"wrote {path}")
+
+
+def check_drawing_options(plot: Path | None, animate: Path | None, exaggerate: float) -> None:
+    """FreestandError for a --plot that is a file, a non-GIF --animate, a factor <= 0."""
+    if plot is not None and plot.exists() and not plot.is_dir():
+        raise FreestandError(
+            f"{str(plot)!r} is a file; give a folder for the figures, e.g. --plot figures",
+            source="--plot",
+        )
+    if animate is not None and animate.suffix.lower() != ".gif":
+        raise FreestandError(
+            f"{str(animate)!r} is not a .gif file; the animation is written as an animated GIF, "
+            f"e.g. --animate {animate.with_suffix('.gif')}",
+            source="--animate",
+        )
+    if not (exaggerate > 0 and math.isfinite(exaggerate)):
+        raise FreestandError(
+            f"{exaggerate} is not a positive factor; e.g. --exaggerate 100 draws rotations "
+            "100 times larger (1 draws them true)",
+            source="--exaggerate",
+        )
+
+
+def draw(result, stack, support, plot, animate, exaggerate, title) -> list[Path]:
+    """Write the figure into ``plot`` and the GIF to ``animate`` (each if given)."""
+    written: list[Path] = []
+    if plot is not None:
+        from freestand.plot.timehistory import time_history_figures
+
+        written += time_history_figures(
+            result, plot, support_motion=support, stack=stack, title=title
+        )
+    if animate is not None:
+        from freestand.plot.timehistory import animate_time_history
+
+        written.append(
+            animate_time_history(
+                result, stack, animate, support_motion=support, exaggeration=exaggerate,
+                title=title,
+            )
+        )  # fmt: skip
+    return written
 
 
 def register(app: typer.Typer) -> None:

@@ -2,18 +2,25 @@
 
 Each function takes result objects of :mod:`freestand.core.overturning`, draws
 on a new figure (Agg-safe: no window is opened) and returns the
-:class:`matplotlib.figure.Figure`. :func:`save_figure` writes PNG and SVG.
+:class:`matplotlib.figure.Figure`. :func:`save_figure` (defined in
+:mod:`freestand.plot.figures`, importable from here) writes PNG and SVG.
 """
 
 from __future__ import annotations
-
-from pathlib import Path
 
 import numpy as np
 from matplotlib.figure import Figure
 
 from freestand.core.overturning import OverturningLimits, RectangularPulseLimits
 from freestand.core.spectra import Spectrum
+from freestand.plot.figures import save_figure
+
+__all__ = [
+    "plot_pulse_limits",
+    "plot_rectangular_pulse",
+    "plot_spectrum_check",
+    "save_figure",
+]
 
 _STYLE = {
     "housner": {"color": "tab:blue", "linestyle": "--", "label": "Housner (1963), linearised"},
@@ -137,23 +144,3 @@ def plot_spectrum_check(
     ax.set_title(title or "Response spectrum against the overturning limits")
     ax.legend(loc="upper left", fontsize="x-small")
     return fig
-
-
-def save_figure(
-    fig: Figure, path: str | Path, *, formats: tuple[str, ...] = ("png", "svg")
-) -> list[Path]:
-    """Write ``fig`` once per format next to ``path`` (its suffix is replaced).
-
-    Returns
-    -------
-    list of pathlib.Path
-        The files written.
-    """
-    base = Path(path)
-    written = []
-    for fmt in formats:
-        target = base.with_suffix(f".{fmt}")
-        target.parent.mkdir(parents=True, exist_ok=True)
-        fig.savefig(target, format=fmt, dpi=150)
-        written.append(target)
-    return written
