@@ -5,6 +5,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
+
 from tests.conftest import CRANE, run_freestand
 
 RECORD = Path(__file__).resolve().parents[1] / "examples" / "records" / "synthetic_H.AT2"
@@ -36,7 +38,43 @@ def test_scale_and_peak_exclude_each_other():
     result = run_freestand(
         "simulate", str(CRANE), "-c", "y-z", "--record", str(RECORD), "--scale", "2", "--peak", "3"
     )
-    assert result.returncode == 2 and "not both" in result.stderr
+    assert result.returncode == 2 and "not several" in result.stderr
+
+
+def test_spectral_scaling_matches_the_target(tmp_path):
+    """--spectral A@F,zeta: the scaled record's PSA at F is A (linear oscillator, exact)."""
+    from freestand.core.response_spectrum import spectral_response
+    from freestand.io.records import load_record
+
+    result = run_freestand(
+        "simulate", str(CRANE), "-c", "y-z", "--record", str(RECORD),
+        "--spectral", "1.05g@2.5Hz,2%", "--duration", "0.5", "--json",
+    )  # fmt: skip
+    assert result.returncode == 0, result.stderr
+    document = json.loads(result.stdout)
+    motion = load_record(RECORD).scaled(document["scale_factor"])
+    response = spectral_response(motion, frequencies=[2.5], damping=0.02)
+    # the factor is target / PSA: the scaled PSA matches to round-off
+    assert response.pseudo_acceleration[0] == pytest.approx(1.05 * 9.81, rel=1e-9)
+    assert document["peak_horizontal"] == pytest.approx(motion.peak_horizontal, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("3", "not ACCELERATION@FREQUENCY"),
+        ("3@0", "not a positive frequency"),
+        ("-3@2", "negative"),
+        ("3@2,150%", "damping"),
+        ("3 kg@2", "not acceleration"),
+    ],
+)
+def test_bad_spectral_target(text, message):
+    from freestand.errors import FreestandError
+    from freestand.io.records import parse_spectral_target
+
+    with pytest.raises(FreestandError, match=message):
+        parse_spectral_target(text)
 
 
 def test_plot_and_animate_write_files_and_list_them(tmp_path):

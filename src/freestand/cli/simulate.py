@@ -15,7 +15,7 @@ from freestand.core.timehistory import SupportMotion
 from freestand.core.timehistory import simulate as simulate_stack
 from freestand.errors import FreestandError
 from freestand.io.model_file import load_model
-from freestand.io.records import load_record
+from freestand.io.records import load_record, parse_spectral_target
 
 
 def _number(value: float) -> float | None:
@@ -41,6 +41,12 @@ def simulate(
         "--peak",
         help="Scale the horizontal record to this peak [m/s^2] (instead of --scale).",
     ),
+    spectral: str = typer.Option(
+        None,
+        "--spectral",
+        help="Scale the records so that the horizontal pseudo-acceleration at one "
+        "frequency is A: 'A@F[,DAMPING]', e.g. '1.05g@2.5Hz,5%' (instead of --scale).",
+    ),
     duration: float = typer.Option(
         None, "--duration", help="Simulated time [s] (default: the record)."
     ),
@@ -59,8 +65,11 @@ def simulate(
     """Sliding, rocking, impacts and overturning of every block under a record."""
     model = load_model(model_file)
     stack = model.configuration(configuration)
-    if scale is not None and peak is not None:
-        raise FreestandError("give either --scale or --peak, not both", source="--scale")
+    if sum(option is not None for option in (scale, peak, spectral)) > 1:
+        raise FreestandError(
+            "give one of --scale, --peak and --spectral, not several", source="--scale"
+        )
+    target = None if spectral is None else parse_spectral_target(spectral, gravity=model.gravity)
     if not step > 0:
         raise FreestandError(f"{step} is not a positive step; e.g. --step 0.001", source="--step")
     check_drawing_options(plot, animate, exaggerate)
@@ -71,6 +80,8 @@ def simulate(
         if not peak > 0:
             raise FreestandError(f"{peak} is not a positive peak", source="--peak")
         motion = motion.scaled_to_peak(peak)
+    if target is not None:
+        motion = motion.scaled_to_spectral(target.acceleration, target.frequency, target.damping)
     support = SupportMotion(
         motion.dt,
         np.asarray(motion.horizontal),
@@ -103,6 +114,7 @@ def simulate(
             "record": motion.name,
             "dt": motion.dt,
             "peak_horizontal": motion.peak_horizontal,
+            "scale_factor": motion.metadata.get("scale_factor", 1.0),
             "status": result.status,
             "message": result.message,
             "blocks": blocks,

@@ -712,3 +712,77 @@ def write_at2(
     for start in range(0, values.size, values_per_line):
         lines.append("".join(f"{x:15.7E}" for x in values[start : start + values_per_line]))
     Path(path).write_text("\n".join(lines) + "\n", encoding="ascii")
+
+
+@dataclass(frozen=True)
+class SpectralTarget:
+    """A record-scaling target: pseudo-acceleration at one oscillator frequency.
+
+    Parameters
+    ----------
+    acceleration : float
+        Wanted spectral pseudo-acceleration PSA(f, zeta) [m/s^2].
+    frequency : float
+        Oscillator natural frequency f [Hz].
+    damping : float
+        Damping ratio zeta [-].
+    """
+
+    acceleration: float
+    frequency: float
+    damping: float
+
+
+def parse_spectral_target(
+    text: str, *, gravity: float = 9.81, source: str = "--spectral"
+) -> SpectralTarget:
+    """Read ``"A@F[,DAMPING]"``, e.g. ``"10.31@2.5"`` or ``"1.05g@2.5Hz,2%"``.
+
+    Parameters
+    ----------
+    text : str
+        Spectral acceleration (bare numbers in m/s^2, or with a unit, ``g``
+        being ``gravity``), ``@``, the frequency (bare numbers in Hz) and
+        optionally the damping (fraction or percentage, default 5 %).
+    gravity : float, optional
+        g [m/s^2].
+    source : str, optional
+        Name of the option, for messages.
+
+    Raises
+    ------
+    FreestandError
+        For a text not of that form, a negative acceleration, a frequency that
+        is not positive or a damping outside [0, 1).
+    """
+    from freestand.io.spectrum_input import damping_fraction
+
+    value, at, rest = text.partition("@")
+    if not at or not value.strip() or not rest.strip():
+        raise FreestandError(
+            f"{text!r} is not ACCELERATION@FREQUENCY[,DAMPING]; e.g. 1.05g@2.5Hz,5%",
+            source=source,
+        )
+    frequency_text, _, damping_text = rest.partition(",")
+    acceleration = to_si(
+        value.strip(), "acceleration", field="acceleration", source=source, gravity=gravity
+    )
+    if acceleration < 0:
+        raise FreestandError(
+            f"{value.strip()!r} is negative; give a spectral acceleration >= 0",
+            source=source,
+            field="acceleration",
+        )
+    frequency = to_si(frequency_text.strip(), "frequency", field="frequency", source=source)
+    if not frequency > 0:
+        raise FreestandError(
+            f"{frequency_text.strip()!r} is not a positive frequency; e.g. 2.5Hz",
+            source=source,
+            field="frequency",
+        )
+    damping = (
+        damping_fraction(damping_text.strip(), field="damping", source=source)
+        if damping_text.strip()
+        else 0.05
+    )
+    return SpectralTarget(acceleration, frequency, damping)

@@ -43,17 +43,17 @@ KINDS = ("csv", "rg1.60", "en1998", "table", "record")
 _HEADER = re.compile(r"^\s*([A-Za-z _]+?)\s*\[(.+)\]\s*$")
 
 
-def _damping(value, *, field: str, source: str) -> float:
+def damping_fraction(value, *, field: str, source: str) -> float:
     """Damping as a fraction: 0.05, "5 %" or "5%"."""
     if isinstance(value, str) and value.strip().endswith("%"):
         try:
-            return float(value.strip()[:-1]) / 100.0
+            result = float(value.strip()[:-1]) / 100.0
         except ValueError:
-            pass
-        raise FreestandError(
-            f'{value!r} is not a percentage; write e.g. "5 %"', source=source, field=field
-        )
-    result = to_si(value, "dimensionless", field=field, source=source)
+            raise FreestandError(
+                f'{value!r} is not a percentage; write e.g. "5 %"', source=source, field=field
+            ) from None
+    else:
+        result = to_si(value, "dimensionless", field=field, source=source)
     if not 0 <= result < 1:
         raise FreestandError(
             f'{value!r} is not a fraction of critical damping; give e.g. 0.05 or "5 %"',
@@ -197,7 +197,9 @@ def spectrum_from_settings(
     direction = _direction(
         settings.pop("direction", "horizontal"), field=f"{field}.direction", source=source
     )
-    damping = _damping(settings.pop("damping", 0.05), field=f"{field}.damping", source=source)
+    damping = damping_fraction(
+        settings.pop("damping", 0.05), field=f"{field}.damping", source=source
+    )
     allowed = {
         "csv": {"file"},
         "rg1.60": {"pga"},
