@@ -257,10 +257,10 @@ def block_phrase(stack: Stack, state: BlockState, *, sense: int | None = None) -
     block = stack.blocks[index]
     below = _below_name(stack, index)
     if sense is None:
-        where = {1: " to the right (+x)", -1: " to the left (-x)"}.get(state.slide_direction, "")
+        where = {1: ", to the right (+x)", -1: ", to the left (-x)"}.get(state.slide_direction, "")
     elif state.slide_direction:
         along = state.slide_direction == sense
-        where = " with the inertial force" if along else " against the inertial force"
+        where = ", with the inertial force" if along else ", against the inertial force"
     else:
         where = ""
     contact = ""
@@ -271,11 +271,11 @@ def block_phrase(stack: Stack, state: BlockState, *, sense: int | None = None) -
     if state.motion is Motion.REST:
         return f"{subject} rests on the {below}"
     if state.motion is Motion.SLIDE:
-        return f"{subject} slides{where} on the {below}"
+        return f"{subject} slides on the {below}{where}"
     if state.motion is Motion.ROCK:
         return f"{subject} lifts and rocks about {contact} on the {below}"
     if state.motion is Motion.SLIDE_ROCK:
-        return f"{subject} lifts, rocks about {contact} and slides{where} on the {below}"
+        return f"{subject} lifts, rocks about {contact} and slides on the {below}{where}"
     return f"{subject} lifts off the {below} (free flight)"
 
 
