@@ -301,7 +301,7 @@ def _inputs(doc: _Document, content: ReportContent) -> str:
                 "a<sub>v</sub> [g]",
             ),  # fmt: skip
             rows,
-            data_table="excitations",
+            table="excitations",
         )
     )
     parts.append("<h3>2.2 Configurations and blocks</h3>")
@@ -353,7 +353,7 @@ def _inputs(doc: _Document, content: ReportContent) -> str:
                 ),  # fmt: skip
                 rows,
                 cls="wide",
-                data_table="blocks",
+                table="blocks",
                 configuration=stack.name,
             )
         )
@@ -393,7 +393,7 @@ def _inputs(doc: _Document, content: ReportContent) -> str:
                 _head("f [Hz]", "S<sub>a</sub> [m/s<sup>2</sup>]", "S<sub>a</sub> [g]"),
                 rows,
                 cls="keep",
-                data_table="spectrum",
+                table="spectrum",
                 spectrum=name,
             )
         )
@@ -433,7 +433,7 @@ def _inputs(doc: _Document, content: ReportContent) -> str:
                 "",
                 rows,
                 cls="keep",
-                data_table="beam",
+                table="beam",
             )
         )
     parts.append("</section>")
@@ -532,7 +532,7 @@ def _screening(doc: _Document, content: ReportContent) -> str:
                     "paper section 3 case",
                 ),  # fmt: skip
                 motion_rows,
-                data_table="motion",
+                table="motion",
                 configuration=stack.name,
             )
         )
@@ -549,7 +549,7 @@ def _screening(doc: _Document, content: ReportContent) -> str:
                     "horizontal (sum) [N]",
                 ),  # fmt: skip
                 force_rows,
-                data_table="forces",
+                table="forces",
                 configuration=stack.name,
             )
         )
@@ -605,7 +605,7 @@ def _assessment(doc: _Document, item: RockingAssessment, number: int) -> str:
             ),  # fmt: skip
             rows,
             cls="keep",
-            data_table="rocking",
+            table="rocking",
             **data,
         )
     )
@@ -631,7 +631,7 @@ def _assessment(doc: _Document, item: RockingAssessment, number: int) -> str:
             _head("amplitude [m/s<sup>2</sup>]", "Housner [s]", "exact [s]"),
             rows,
             cls="keep",
-            data_table="rectangular",
+            table="rectangular",
             **data,
         )
     )
@@ -682,7 +682,7 @@ def _assessment(doc: _Document, item: RockingAssessment, number: int) -> str:
             ),  # fmt: skip
             rows,
             cls="keep",
-            data_table="half-sine",
+            table="half-sine",
             **data,
         )
     )
@@ -707,7 +707,7 @@ def _assessment(doc: _Document, item: RockingAssessment, number: int) -> str:
             _head("limit", "up to f [Hz]", "pulses longer than [s]"),
             rows,
             cls="keep",
-            data_table="operating",
+            table="operating",
             **data,
         )
     )
@@ -767,7 +767,7 @@ def _assessment(doc: _Document, item: RockingAssessment, number: int) -> str:
                 ),  # fmt: skip
                 rows,
                 cls="keep",
-                data_table="spectrum-check",
+                table="spectrum-check",
                 **data,
             )
         )
@@ -851,7 +851,7 @@ def _frequency(doc: _Document, item: FrequencyAssessment) -> str:
             _head("estimate", "lowest [Hz]", "highest [Hz]"),
             rows,
             cls="keep",
-            data_table="frequency-range",
+            table="frequency-range",
         )
     )
     if jump is not None:
@@ -911,7 +911,7 @@ def _frequency(doc: _Document, item: FrequencyAssessment) -> str:
             "left support (analogue of the paper's Fig. 9); shaded rows: the cart may jump.",
             _head(*headers),
             rows,
-            data_table="frequency",
+            table="frequency",
         )
     )
     from freestand.plot.frequency import plot_frequency_sweep
