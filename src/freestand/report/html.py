@@ -53,7 +53,10 @@ th, td { border-top: 0.5px solid var(--rule); border-bottom: 0.5px solid var(--r
          padding: 2px 6px; vertical-align: top; text-align: left; }
 thead th { border-bottom: 1.2px solid var(--ink); border-top: 1.2px solid var(--ink);
            background: var(--light); font-weight: 600; }
-td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }
+td.num { white-space: nowrap; }
+td.case { min-width: 15em; font-size: 8.5pt; }
+td.motion { white-space: nowrap; }
 table.wide { font-size: 8pt; }
 table.wide th, table.wide td { padding: 2px 3px; }
 table.meta { width: auto; font-size: 9.5pt; }
@@ -487,16 +490,21 @@ def _screening(doc: _Document, content: ReportContent) -> str:
                     f"<tr{cls}{_case_attrs(case, status=case.status)}>"
                     f"<td>{_e(case.excitation)}</td><td>{sense_label(case.sense)}</td>"
                     f'<td>&#8212;</td><td>none found</td><td colspan="3"></td>'
-                    f"<td>{_e(paper)} {flag}</td></tr>"
+                    f'<td class="case">{_e(paper)} {flag}</td></tr>'
                 )
             for k, state in enumerate(reversed(case.blocks)):
                 block = stack.blocks[stack.block_index(state.name)]
-                note = f'<td rowspan="{len(case.blocks)}">{_e(paper)} {flag}</td>' if k == 0 else ""
+                note = (
+                    f'<td class="case" rowspan="{len(case.blocks)}">{_e(paper)} {flag}</td>'
+                    if k == 0
+                    else ""
+                )
                 motion_rows.append(
                     f"<tr{cls}{_case_attrs(case, block=state.name, status=case.status)}>"
                     f"<td>{_e(case.excitation)}</td><td>{sense_label(case.sense)}</td>"
                     f"<td>{_e(state.name)}</td>"
-                    f'<td data-quantity="motion" data-text="{_e(state.motion.value)}">'
+                    f'<td class="motion" data-quantity="motion" '
+                    f'data-text="{_e(state.motion.value)}">'
                     f"{_e(motion_label(state))}</td>"
                     + _num(state.angular_acceleration, 3, "angular_acceleration")
                     + _num(state.acceleration_x, 3, "acceleration_x")
@@ -527,8 +535,8 @@ def _screening(doc: _Document, content: ReportContent) -> str:
                     "body",
                     "type of motion",
                     "angular acc. [1/s<sup>2</sup>]",
-                    "CoG horiz. acc. [m/s<sup>2</sup>]",
-                    "CoG vert. acc. [m/s<sup>2</sup>]",
+                    "CoG acc. x [m/s<sup>2</sup>]",
+                    "CoG acc. z [m/s<sup>2</sup>]",
                     "paper section 3 case",
                 ),  # fmt: skip
                 motion_rows,
