@@ -16,6 +16,8 @@ install: $(STAMP)
 
 demo: $(STAMP)
 	$(BIN)/freestand screen examples/crane.toml
+	$(BIN)/freestand report examples/crane.toml -o build/crane-report.html
+	@echo "screening report: $(CURDIR)/build/crane-report.html"
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q

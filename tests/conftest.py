@@ -48,3 +48,15 @@ def run_freestand(*args: str, cwd: Path | None = None) -> subprocess.CompletedPr
         env=env,
         timeout=600,
     )
+
+
+@pytest.fixture(scope="session")
+def crane_report(crane_model):
+    """The crane's screening report, built once: (ReportContent, HTML text)."""
+    import datetime
+
+    from freestand.report.content import collect_report
+    from freestand.report.html import render_html
+
+    content = collect_report(crane_model, date=datetime.date(2024, 5, 31))
+    return content, render_html(content)

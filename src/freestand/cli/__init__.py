@@ -24,13 +24,14 @@ app = typer.Typer(
 
 
 def _register() -> None:
-    from freestand.cli import frequency, maps, overturn, screen, simulate
+    from freestand.cli import frequency, maps, overturn, report, screen, simulate
 
     screen.register(app)
     frequency.register(app)
     maps.register(app)
     overturn.register(app)
     simulate.register(app)
+    report.register(app)
 
 
 _register()

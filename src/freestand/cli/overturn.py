@@ -11,14 +11,18 @@ import typer
 from rich.table import Table
 
 from freestand.cli.common import console, parse_numbers, resolve_spectrum
-from freestand.core.overturning import check_spectrum, overturning_limits, rectangular_pulse_limits
+from freestand.core.overturning import (
+    CURVE_FREQUENCIES,
+    TABLE_FREQUENCIES,
+    check_spectrum,
+    overturning_limits,
+    rectangular_amplitude_grid,
+    rectangular_pulse_limits,
+)
 from freestand.core.rocking import RockingBlock
 from freestand.core.screening import Motion, initial_motion
 from freestand.errors import FreestandError
 from freestand.io.model_file import load_model
-
-#: Frequencies of the limit curves drawn and compared with a spectrum [Hz].
-CURVE_FREQUENCIES = np.geomspace(0.1, 20.0, 48)
 
 CONCLUSION = (
     "Housner's half-sine criterion, as the paper applies it, is unconservative (Makris and "
@@ -139,13 +143,7 @@ def overturn(
     amplitude_values = parse_numbers(amplitudes, "--amplitudes", "m/s^2") or sorted(
         {e.horizontal for e in model.excitations}
     )
-    frequency_values = parse_numbers(frequencies, "--frequencies", "Hz") or [
-        0.25,
-        0.5,
-        1.0,
-        2.0,
-        5.0,
-    ]
+    frequency_values = parse_numbers(frequencies, "--frequencies", "Hz") or list(TABLE_FREQUENCIES)
     for value in amplitude_values:
         if not value > 0:
             raise FreestandError(f"{value} is not a positive amplitude", source="--amplitudes")
@@ -174,8 +172,7 @@ def overturn(
             save_figure,
         )
 
-        threshold = rocking.uplift_threshold
-        amplitude_grid = np.geomspace(1.02 * threshold, max(4.0 * operating, 3.0 * threshold), 40)
+        amplitude_grid = rectangular_amplitude_grid(rocking, operating)
         curve = rectangular_pulse_limits(rocking, amplitude_grid, operating_amplitude=operating)
         written += save_figure(plot_rectangular_pulse(curve), plot / "fig6_rectangular_pulse")
         written += save_figure(plot_pulse_limits(curves), plot / "fig7_half_sine_pulse")

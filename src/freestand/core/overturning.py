@@ -40,6 +40,35 @@ from freestand.core.spectra import Spectrum, SpectrumCheck, spectrum_check
 #: Names of the half-sine limits, in the order they are reported.
 HALF_SINE_LIMITS = ("housner", "makris-roussos", "exact")
 
+#: Frequencies of the half-sine limit curves drawn and compared with a spectrum [Hz]
+#: (the range of the paper's Figs. 7-8; 48 points keep the exact limit to seconds).
+CURVE_FREQUENCIES = np.geomspace(0.1, 20.0, 48)
+
+#: Half-sine pulse frequencies tabulated by default [Hz].
+TABLE_FREQUENCIES = (0.25, 0.5, 1.0, 2.0, 5.0)
+
+
+def rectangular_amplitude_grid(
+    block: RockingBlock, operating_amplitude: float, points: int = 40
+) -> np.ndarray:
+    """Pulse amplitudes [m/s^2] for drawing the rectangular-pulse limit (paper Fig. 6).
+
+    From just above the uplift threshold ``g tan(alpha)`` (1.02 times it) to
+    the larger of four times ``operating_amplitude`` and three times the
+    threshold, geometrically spaced.
+
+    Parameters
+    ----------
+    block : RockingBlock
+        The block.
+    operating_amplitude : float
+        Amplitude of interest [m/s^2].
+    points : int, optional
+        Number of amplitudes [-].
+    """
+    threshold = block.uplift_threshold
+    return np.geomspace(1.02 * threshold, max(4.0 * operating_amplitude, 3.0 * threshold), points)
+
 
 @dataclass(frozen=True)
 class RectangularPulseLimits:
