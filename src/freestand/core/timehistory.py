@@ -77,6 +77,12 @@ from freestand.core.screening import GRAVITY
 #: unambiguous for the solver).
 EVENT_TOLERANCE = 1e-7
 
+#: A contact has lifted off (``uplift``) when its gap exceeds this fraction of
+#: the base width of its interface [-]: 1 micrometre per metre of base. Smaller
+#: openings (a contact mode that opens for an instant at round-off level) are
+#: not a physical lift-off.
+UPLIFT_GAP_FRACTION = 1e-6
+
 
 # --- excitation ---------------------------------------------------------------------------------
 
@@ -604,6 +610,16 @@ class TimeHistoryDiagnostics:
     max_projection : float
         Largest position correction [m, rad] of the projection onto the closed
         contacts.
+    method : str
+        The path that produced the result: ``"general"`` (event-driven stack
+        path), ``"single-block rocking"``, ``"single-block sliding"`` or
+        ``"single-block rest"`` (the exact single-block equations, see
+        :mod:`freestand.core.single_block`).
+    checks : tuple of str
+        The assumptions of a single-block path, as verified, in words.
+    fallback : str
+        Why the single-block path was not used (its failed assumption), if
+        it was tried; empty otherwise.
     """
 
     time_step: float
@@ -613,6 +629,9 @@ class TimeHistoryDiagnostics:
     ambiguous_solves: int
     max_penetration: float
     max_projection: float
+    method: str = "general"
+    checks: tuple[str, ...] = ()
+    fallback: str = ""
 
 
 @dataclass(frozen=True)
@@ -656,14 +675,20 @@ class TimeHistoryResult:
     max_slide : numpy.ndarray
         Shape (B,): largest ``|slide|`` [m] per interface.
     uplift : numpy.ndarray
-        Shape (B,), bool: a contact of the interface opened.
+        Shape (B,), bool: a contact of the interface lifted off by more than
+        :data:`UPLIFT_GAP_FRACTION` of the interface's base width (a
+        momentary lift-off at round-off level does not count).
     free_flight : numpy.ndarray
-        Shape (B,), bool: the block left the body below (both contacts open).
+        Shape (B,), bool: the block left the body below, both contacts open
+        by more than that gap.
     overturned : numpy.ndarray
         Shape (B,), bool.
     overturn_time : numpy.ndarray
         Shape (B,): time of overturning [s], NaN if none.
     diagnostics : TimeHistoryDiagnostics
+    max_lift : numpy.ndarray
+        Shape (B,): largest gap [m] opened at a contact of each interface
+        (the larger of the two contacts' gaps; 0 for none).
     """
 
     configuration: str
@@ -685,6 +710,7 @@ class TimeHistoryResult:
     overturned: np.ndarray
     overturn_time: np.ndarray
     diagnostics: TimeHistoryDiagnostics = field(repr=False)
+    max_lift: np.ndarray | None = None
 
     def block_index(self, name: str) -> int:
         """Index of the block called ``name``."""
@@ -981,18 +1007,26 @@ def _peak_magnitude(time: np.ndarray, value: np.ndarray, rate: np.ndarray) -> fl
     peak = float(np.max(np.abs(value[finite]), initial=0.0))
     with np.errstate(invalid="ignore"):
         turning = finite[:-1] & finite[1:] & (rate[:-1] * rate[1:] < 0.0)
-    for k in np.flatnonzero(turning):
-        h = time[k + 1] - time[k]
-        if h <= 0.0:
-            continue
-        y0, y1, m0, m1 = value[k], value[k + 1], rate[k] * h, rate[k + 1] * h
-        # p(s) = y0 + m0 s + (3 (y1 - y0) - 2 m0 - m1) s^2 + (2 (y0 - y1) + m0 + m1) s^3
-        c2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1
-        c3 = 2.0 * (y0 - y1) + m0 + m1
-        for s in np.roots([3.0 * c3, 2.0 * c2, m0]):
-            if abs(s.imag) < 1e-12 and 0.0 < s.real < 1.0:
-                x = s.real
-                peak = max(peak, abs(y0 + m0 * x + c2 * x * x + c3 * x**3))
+    k = np.flatnonzero(turning)
+    h = time[k + 1] - time[k]
+    k, h = k[h > 0.0], h[h > 0.0]
+    if k.size == 0:
+        return peak
+    y0, y1, m0, m1 = value[k], value[k + 1], rate[k] * h, rate[k + 1] * h
+    # p(s) = y0 + m0 s + (3 (y1 - y0) - 2 m0 - m1) s^2 + (2 (y0 - y1) + m0 + m1) s^3
+    c2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1
+    c3 = 2.0 * (y0 - y1) + m0 + m1
+    # roots of p'(s) = 3 c3 s^2 + 2 c2 s + m0 in the stable form q = -(b + sgn(b) sqrt(d)) / 2
+    a, b = 3.0 * c3, 2.0 * c2
+    with np.errstate(all="ignore"):
+        root = np.sqrt(b * b - 4.0 * a * m0)
+        q = -0.5 * (b + np.where(b >= 0.0, root, -root))
+        for s in (q / a, m0 / q):
+            inside = np.isfinite(s) & (s > 0.0) & (s < 1.0)
+            if inside.any():
+                x = s[inside]
+                candidate = y0[inside] + (m0[inside] + (c2[inside] + c3[inside] * x) * x) * x
+                peak = max(peak, float(np.max(np.abs(candidate))))
     return peak
 
 
@@ -1000,7 +1034,99 @@ def _peak_magnitude(time: np.ndarray, value: np.ndarray, rate: np.ndarray) -> fl
 _EVENT_PRIORITY = ("overturn", "impact", "stop-impact", "lift-off", "slip", "slip-stop")
 
 
+#: Solvers of :func:`simulate`.
+METHODS = ("auto", "general", "single-block")
+
+
 def simulate(
+    stack: Stack,
+    excitation: SupportMotion | Excitation,
+    duration: float | None = None,
+    *,
+    method: str = "auto",
+    max_step: float | None = None,
+    gravity: float = GRAVITY,
+    initial_position: np.ndarray | None = None,
+    initial_velocity: np.ndarray | None = None,
+    excitation_end: float | None = None,
+    tolerances: ContactTolerances | None = None,
+    time_tolerance: float = 1e-9,
+    max_events: int = 100_000,
+) -> TimeHistoryResult:
+    """Simulate the planar motion of a stack under support accelerations (front end).
+
+    Parameters
+    ----------
+    stack, excitation, duration, gravity, initial_position,
+    initial_velocity, excitation_end, tolerances, time_tolerance, max_events
+        As for :func:`simulate_general`.
+    max_step : float, optional
+        Largest integration step [s]; by default 1 ms for the general path
+        and 0.02 / p for the single-block rocking integrator (whose steps
+        also end on every record sample).
+    method : str, optional
+        ``"general"``: the event-driven stack path (:func:`simulate_general`).
+        ``"single-block"``: the exact single-block equations
+        (:func:`freestand.core.single_block.simulate_single_block`) for one
+        block on the support under a :class:`SupportMotion`, starting at rest;
+        when their assumptions fail (slide-rock, free flight, sliding against
+        an end stop) the general path runs instead and
+        ``diagnostics.fallback`` says why. ``"auto"`` (default): the
+        single-block path wherever it applies, else the general path.
+
+    Returns
+    -------
+    TimeHistoryResult
+        ``diagnostics.method`` names the path that produced it.
+    """
+    if method not in METHODS:
+        raise ValueError(f"unknown method {method!r}; use one of {', '.join(METHODS)}")
+    general = dict(
+        max_step=1e-3 if max_step is None else max_step,
+        gravity=gravity,
+        initial_position=initial_position,
+        initial_velocity=initial_velocity,
+        excitation_end=excitation_end,
+        tolerances=tolerances,
+        time_tolerance=time_tolerance,
+        max_events=max_events,
+    )
+    if method == "general":
+        return simulate_general(stack, excitation, duration, **general)
+    at_rest = all(
+        value is None or not np.any(np.asarray(value, dtype=float))
+        for value in (initial_position, initial_velocity)
+    )
+    applicable = len(stack.blocks) == 1 and isinstance(excitation, SupportMotion) and at_rest
+    if not applicable:
+        if method == "single-block":
+            raise ValueError(
+                "the single-block path needs a stack of one block, a sampled SupportMotion "
+                "and a start at rest; use method='general' or 'auto'"
+            )
+        return simulate_general(stack, excitation, duration, **general)
+    from freestand.core.single_block import simulate_single_block
+
+    attempt = simulate_single_block(
+        stack,
+        excitation,
+        duration,
+        max_step=max_step,
+        gravity=gravity,
+        excitation_end=excitation_end,
+    )
+    if attempt.result is not None:
+        return attempt.result
+    result = simulate_general(stack, excitation, duration, **general)
+    return replace(
+        result,
+        diagnostics=replace(
+            result.diagnostics, checks=attempt.checks, fallback=attempt.failure
+        ),
+    )
+
+
+def simulate_general(
     stack: Stack,
     excitation: SupportMotion | Excitation,
     duration: float | None = None,
@@ -1014,7 +1140,7 @@ def simulate(
     time_tolerance: float = 1e-9,
     max_events: int = 100_000,
 ) -> TimeHistoryResult:
-    """Simulate the planar motion of a stack under support accelerations.
+    """Simulate the planar motion of a stack under support accelerations (general path).
 
     Parameters
     ----------
@@ -1090,9 +1216,14 @@ def simulate(
     free_flight = np.zeros(count, dtype=bool)
     overturned = np.zeros(count, dtype=bool)
     overturn_time = np.full(count, np.nan)
+    max_lift = np.zeros(count)
+    max_flight = np.zeros(count)
 
     def record(time, q, qd, forces, kin):
         active = sim.active_count
+        gaps = kin.gap[:active]
+        np.maximum(max_lift[:active], gaps.max(axis=1), out=max_lift[:active])
+        np.maximum(max_flight[:active], gaps.min(axis=1), out=max_flight[:active])
         position = np.full((count, 3), np.nan)
         velocity = np.full((count, 3), np.nan)
         normal = np.full((count, 2), np.nan)
@@ -1337,6 +1468,11 @@ def simulate(
                     b.name for b, o in zip(stack.blocks, overturned, strict=True) if o
                 )
                 message += f"; overturned: {names}"
+    lift_threshold = UPLIFT_GAP_FRACTION * np.array(
+        [block.base_right - block.base_left for block in stack.blocks]
+    )
+    uplift &= max_lift > lift_threshold
+    free_flight &= max_flight > lift_threshold
     rotation_array = np.array(rotations) if rotations else np.zeros((0, count))
     slide_array = np.array(slides) if slides else np.zeros((0, count))
     time_array = np.array(times)
@@ -1379,4 +1515,5 @@ def simulate(
             max_penetration=sim.max_penetration,
             max_projection=sim.max_projection,
         ),
+        max_lift=max_lift,
     )
