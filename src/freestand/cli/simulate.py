@@ -11,7 +11,7 @@ import typer
 from rich.table import Table
 
 from freestand.cli.common import console
-from freestand.core.timehistory import SupportMotion
+from freestand.core.timehistory import METHODS, SupportMotion
 from freestand.core.timehistory import simulate as simulate_stack
 from freestand.errors import FreestandError
 from freestand.io.model_file import load_model
@@ -44,7 +44,12 @@ def simulate(
     duration: float = typer.Option(
         None, "--duration", help="Simulated time [s] (default: the record)."
     ),
-    step: float = typer.Option(1e-3, "--step", help="Largest integration step [s]."),
+    step: float = typer.Option(
+        None, "--step", help="Largest integration step [s] (default 1 ms; single block 0.02/p)."
+    ),
+    method: str = typer.Option(
+        "auto", "--method", help="Solver: auto, general or single-block (one block only)."
+    ),
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
     """Sliding, rocking, impacts and overturning of every block under a record."""
@@ -52,8 +57,14 @@ def simulate(
     stack = model.configuration(configuration)
     if scale is not None and peak is not None:
         raise FreestandError("give either --scale or --peak, not both", source="--scale")
-    if not step > 0:
+    if step is not None and not step > 0:
         raise FreestandError(f"{step} is not a positive step; e.g. --step 0.001", source="--step")
+    if method not in METHODS or (method == "single-block" and len(stack.blocks) != 1):
+        raise FreestandError(
+            f"--method {method} does not apply to {configuration!r} ({len(stack.blocks)} blocks);"
+            " use auto, general, or single-block for a one-block configuration",
+            source="--method",
+        )
     motion = load_record(record, dt=dt, unit=unit, gravity=model.gravity, vertical=vertical)
     if scale is not None:
         motion = motion.scaled(scale)
@@ -66,7 +77,9 @@ def simulate(
         np.asarray(motion.horizontal),
         None if motion.vertical is None else np.asarray(motion.vertical),
     )
-    result = simulate_stack(stack, support, duration, max_step=step, gravity=model.gravity)
+    result = simulate_stack(
+        stack, support, duration, method=method, max_step=step, gravity=model.gravity
+    )
     kinds = sorted({event.kind for event in result.events})
     counts = {kind: sum(event.kind == kind for event in result.events) for kind in kinds}
     blocks = []
@@ -91,6 +104,8 @@ def simulate(
             "peak_horizontal": motion.peak_horizontal,
             "status": result.status,
             "message": result.message,
+            "method": result.diagnostics.method,
+            "fallback": result.diagnostics.fallback,
             "blocks": blocks,
             "events": counts,
             "first_events": [
@@ -127,6 +142,11 @@ def simulate(
             overturned,
         )
     out.print(table)
+    out.print(
+        f"Solver: {result.diagnostics.method}"
+        + (f" (single-block path not used: {result.diagnostics.fallback})"
+           if result.diagnostics.fallback else "")
+    )  # fmt: skip
     out.print(
         "Events: " + (", ".join(f"{kind} x{count}" for kind, count in counts.items()) or "none")
     )

@@ -379,7 +379,9 @@ def _simulate(
                 found = False
                 trial = 0.5 * guess
                 for _ in range(60):
-                    tht, _omt = _rk4(par, kind, exc, rec, vrec, side, t, theta, omega, trial, in_pulse)
+                    tht, _omt = _rk4(
+                        par, kind, exc, rec, vrec, side, t, theta, omega, trial, in_pulse
+                    )
                     if side * tht > 0.0:
                         found = True
                         break

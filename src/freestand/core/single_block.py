@@ -58,8 +58,8 @@ from freestand.core.screening import GRAVITY
 from freestand.core.sliding import slide_block
 from freestand.core.timehistory import (
     EVENT_TOLERANCE,
-    ContactTolerances,
     UPLIFT_GAP_FRACTION,
+    ContactTolerances,
     SupportMotion,
     TimeHistoryDiagnostics,
     TimeHistoryEvent,
@@ -190,9 +190,7 @@ def _rocking(
         inertia_pivot = geo.inertia + geo.mass * radius**2
         barrier = geo.mass * gravity * radius * (1.0 - np.cos(np.abs(theta) - critical))
         gone = (
-            after
-            & (np.abs(theta) > critical)
-            & (away | (0.5 * inertia_pivot * omega**2 < barrier))
+            after & (np.abs(theta) > critical) & (away | (0.5 * inertia_pivot * omega**2 < barrier))
         )
         if gone.any():
             last = int(np.argmax(gone))
@@ -219,10 +217,7 @@ def _rocking(
     angular_acceleration = np.where(
         resting,
         0.0,
-        geo.mass
-        * radius
-        / inertia_pivot
-        * (-side * g_eff * np.sin(phase) + a_h * np.cos(phase)),
+        geo.mass * radius / inertia_pivot * (-side * g_eff * np.sin(phase) + a_h * np.cos(phase)),
     )
     accel_x = np.where(resting, 0.0, -angular_acceleration * rz - omega**2 * rx)
     accel_z = np.where(resting, 0.0, angular_acceleration * rx - omega**2 * rz)
@@ -236,7 +231,9 @@ def _rocking(
     force_tol = EVENT_TOLERANCE * geo.mass * gravity
     checks = []
     lowest = float(np.min(np.minimum(normal_left, normal_right), initial=0.0))
-    if lowest < -force_tol and np.any(resting & (np.minimum(normal_left, normal_right) < -force_tol)):
+    if lowest < -force_tol and np.any(
+        resting & (np.minimum(normal_left, normal_right) < -force_tol)
+    ):
         k = int(np.argmax(resting & (np.minimum(normal_left, normal_right) < -force_tol)))
         return None, checks, f"a contact unloads at rest at t = {t[k]:.6g} s"
     if np.any(normal < -force_tol):
