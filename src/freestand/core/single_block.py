@@ -136,7 +136,7 @@ def _support(excitation: SupportMotion, time: np.ndarray) -> tuple[np.ndarray, n
     return a_h, np.interp(time, grid, excitation.vertical, left=0.0, right=0.0)
 
 
-def _message(end_time: float, overturned: bool, name: str) -> str:
+def _message(end_time: float, overturned: bool) -> str:
     if overturned:
         return f"every block overturned (by t = {end_time:.6g} s)"
     return f"simulated to t = {end_time:.6g} s"
@@ -230,11 +230,9 @@ def _rocking(
 
     force_tol = EVENT_TOLERANCE * geo.mass * gravity
     checks = []
-    lowest = float(np.min(np.minimum(normal_left, normal_right), initial=0.0))
-    if lowest < -force_tol and np.any(
-        resting & (np.minimum(normal_left, normal_right) < -force_tol)
-    ):
-        k = int(np.argmax(resting & (np.minimum(normal_left, normal_right) < -force_tol)))
+    unloaded = resting & (np.minimum(normal_left, normal_right) < -force_tol)
+    if unloaded.any():
+        k = int(np.argmax(unloaded))
         return None, checks, f"a contact unloads at rest at t = {t[k]:.6g} s"
     if np.any(normal < -force_tol):
         k = int(np.argmax(normal < -force_tol))
@@ -337,7 +335,7 @@ def _rocking(
         configuration=stack.name,
         block_names=(block.name,),
         status="completed",
-        message=_message(float(t[-1]), overturned, block.name),
+        message=_message(float(t[-1]), overturned),
         time=t,
         position=position.reshape(-1, 1, 3),
         velocity=velocity.reshape(-1, 1, 3),
@@ -457,7 +455,7 @@ def _sliding(
         configuration=stack.name,
         block_names=(block.name,),
         status="completed",
-        message=_message(float(t[-1]), False, block.name),
+        message=_message(float(t[-1]), False),
         time=t,
         position=position,
         velocity=velocity,
