@@ -11,7 +11,7 @@ import typer
 from rich.table import Table
 
 from freestand.cli.common import console
-from freestand.core.timehistory import SupportMotion
+from freestand.core.timehistory import METHODS, SupportMotion
 from freestand.core.timehistory import simulate as simulate_stack
 from freestand.errors import FreestandError
 from freestand.io.model_file import load_model
@@ -50,7 +50,12 @@ def simulate(
     duration: float = typer.Option(
         None, "--duration", help="Simulated time [s] (default: the record)."
     ),
-    step: float = typer.Option(1e-3, "--step", help="Largest integration step [s]."),
+    step: float = typer.Option(
+        None, "--step", help="Largest integration step [s] (default 1 ms; single block 0.02/p)."
+    ),
+    method: str = typer.Option(
+        "auto", "--method", help="Solver: auto, general or single-block (one block only)."
+    ),
     plot: Path = typer.Option(
         None, "--plot", help="Folder for the time-history figure (time-history.png, .svg)."
     ),
@@ -70,8 +75,14 @@ def simulate(
             "give one of --scale, --peak and --spectral, not several", source="--scale"
         )
     target = None if spectral is None else parse_spectral_target(spectral, gravity=model.gravity)
-    if not step > 0:
+    if step is not None and not step > 0:
         raise FreestandError(f"{step} is not a positive step; e.g. --step 0.001", source="--step")
+    if method not in METHODS or (method == "single-block" and len(stack.blocks) != 1):
+        raise FreestandError(
+            f"--method {method} does not apply to {configuration!r} ({len(stack.blocks)} blocks);"
+            " use auto, general, or single-block for a one-block configuration",
+            source="--method",
+        )
     check_drawing_options(plot, animate, exaggerate)
     motion = load_record(record, dt=dt, unit=unit, gravity=model.gravity, vertical=vertical)
     if scale is not None:
@@ -87,7 +98,9 @@ def simulate(
         np.asarray(motion.horizontal),
         None if motion.vertical is None else np.asarray(motion.vertical),
     )
-    result = simulate_stack(stack, support, duration, max_step=step, gravity=model.gravity)
+    result = simulate_stack(
+        stack, support, duration, method=method, max_step=step, gravity=model.gravity
+    )
     title = (
         f"{model.name} / {configuration}: {motion.name}, peak {motion.peak_horizontal:.2f} m/s^2"
     )
@@ -117,6 +130,8 @@ def simulate(
             "scale_factor": motion.metadata.get("scale_factor", 1.0),
             "status": result.status,
             "message": result.message,
+            "method": result.diagnostics.method,
+            "fallback": result.diagnostics.fallback,
             "blocks": blocks,
             "events": counts,
             "figures": [str(path) for path in written],
@@ -154,6 +169,11 @@ def simulate(
             overturned,
         )
     out.print(table)
+    out.print(
+        f"Solver: {result.diagnostics.method}"
+        + (f" (single-block path not used: {result.diagnostics.fallback})"
+           if result.diagnostics.fallback else "")
+    )  # fmt: skip
     out.print(
         "Events: " + (", ".join(f"{kind} x{count}" for kind, count in counts.items()) or "none")
     )

@@ -91,9 +91,35 @@ def _accel(kind, exc, rec, t, in_pulse):
 
 
 @nb.njit(cache=True)
-def _rhs(par, side, theta, a):
-    """Angular acceleration [rad/s^2] on ``side`` (+1 pivot, -1 other pivot)."""
-    g = par[0]
+def _gravity(par, exc, vrec, t, in_pulse):
+    """Effective gravity g' = g - a_v(t) [m/s^2]; a_v from the vertical record, if any."""
+    if vrec.shape[0] == 0 or not in_pulse:
+        return par[0]
+    dt = exc[3]
+    n = vrec.shape[0]
+    x = t / dt
+    i = int(math.floor(x))
+    if i < 0:
+        i = 0
+    if i > n - 2:
+        i = n - 2
+    frac = x - i
+    return par[0] - (vrec[i] + frac * (vrec[i + 1] - vrec[i]))
+
+
+@nb.njit(cache=True)
+def _starts(par, a, g):
+    """Side (+1, -1) on which a support acceleration ``a`` starts rocking from rest, 0 if none."""
+    if a > g * math.tan(par[2]):
+        return 1
+    if a < -g * math.tan(par[6]):
+        return -1
+    return 0
+
+
+@nb.njit(cache=True)
+def _rhs(par, side, theta, a, g):
+    """Angular acceleration [rad/s^2] on ``side`` (+1 pivot, -1 other pivot); g = g' [m/s^2]."""
     if side > 0:
         k = par[1]
         al = par[2]
@@ -105,18 +131,21 @@ def _rhs(par, side, theta, a):
 
 
 @nb.njit(cache=True)
-def _rk4(par, kind, exc, rec, side, t, theta, omega, h, in_pulse):
+def _rk4(par, kind, exc, rec, vrec, side, t, theta, omega, h, in_pulse):
     a0 = _accel(kind, exc, rec, t, in_pulse)
     am = _accel(kind, exc, rec, t + 0.5 * h, in_pulse)
     a1 = _accel(kind, exc, rec, t + h, in_pulse)
+    g0 = _gravity(par, exc, vrec, t, in_pulse)
+    gm = _gravity(par, exc, vrec, t + 0.5 * h, in_pulse)
+    g1 = _gravity(par, exc, vrec, t + h, in_pulse)
     k1t = omega
-    k1w = _rhs(par, side, theta, a0)
+    k1w = _rhs(par, side, theta, a0, g0)
     k2t = omega + 0.5 * h * k1w
-    k2w = _rhs(par, side, theta + 0.5 * h * k1t, am)
+    k2w = _rhs(par, side, theta + 0.5 * h * k1t, am, gm)
     k3t = omega + 0.5 * h * k2w
-    k3w = _rhs(par, side, theta + 0.5 * h * k2t, am)
+    k3w = _rhs(par, side, theta + 0.5 * h * k2t, am, gm)
     k4t = omega + h * k3w
-    k4w = _rhs(par, side, theta + h * k3t, a1)
+    k4w = _rhs(par, side, theta + h * k3t, a1, g1)
     th = theta + h / 6.0 * (k1t + 2.0 * k2t + 2.0 * k3t + k4t)
     om = omega + h / 6.0 * (k1w + 2.0 * k2w + 2.0 * k3w + k4w)
     return th, om
@@ -186,6 +215,7 @@ def _simulate(
     kind,
     exc,
     rec,
+    vrec,
     theta0,
     omega0,
     t_stop,
@@ -195,17 +225,21 @@ def _simulate(
     hist_th,
     hist_om,
     imp_log,
+    lift_log,
+    rest_speed,
     out,
 ):
     """Integrate the rocking motion; see :func:`simulate` for the meaning.
 
     out: [overturned, t_overturned, max|theta|, impacts, margin, rocked,
-    theta, omega, t, n_history, uplift time, status]; status 0 rest,
-    1 rocking, 2 overturned, 3 decided safe after the excitation.
+    theta, omega, t, n_history, uplift time, status, n_lift]; status 0 rest,
+    1 rocking, 2 overturned, 3 decided safe after the excitation. vrec: the
+    downward support acceleration a_v [m/s^2] at the record's samples (empty
+    for none); lift_log: (time, side) of every start of rocking from rest;
+    rest_speed: angular velocity [rad/s] after an impact below which the block
+    settles (0 for the default, 1e-6 of the speed that overturns it).
     """
     g = par[0]
-    thr_p = g * math.tan(par[2])
-    thr_m = g * math.tan(par[6])
     dur = exc[2]
     rec_dt = exc[3]
     t = 0.0
@@ -220,6 +254,8 @@ def _simulate(
     n_hist_max = hist_t.shape[0]
     n_imp = 0
     n_imp_max = imp_log.shape[0]
+    n_lift = 0
+    n_lift_max = lift_log.shape[0]
     max_abs = abs(theta)
     rocked = not resting
     t_uplift = 0.0 if rocked else math.nan
@@ -232,6 +268,9 @@ def _simulate(
     # (Zeno): the block settles on its base
     w_rest_p = 1e-6 * math.sqrt(2.0 * g * par[3] * (1.0 - math.cos(par[2])) / par[4])
     w_rest_m = 1e-6 * math.sqrt(2.0 * g * par[7] * (1.0 - math.cos(par[6])) / par[8])
+    if rest_speed > 0.0:
+        w_rest_p = rest_speed
+        w_rest_m = rest_speed
     if n_hist < n_hist_max:
         hist_t[n_hist] = t
         hist_th[n_hist] = theta
@@ -271,15 +310,20 @@ def _simulate(
                 continue
         if resting:
             a_now = _accel(kind, exc, rec, t, in_pulse)
-            if a_now > thr_p or a_now < -thr_m:
-                side = 1 if a_now > thr_p else -1
+            s_now = _starts(par, a_now, _gravity(par, exc, vrec, t, in_pulse))
+            if s_now != 0:
+                side = s_now
                 resting = False
                 if not rocked:
                     rocked = True
                     t_uplift = t
+                if n_lift < n_lift_max:
+                    lift_log[n_lift, 0] = t
+                    lift_log[n_lift, 1] = side
+                n_lift += 1
                 continue
             a_end = _accel(kind, exc, rec, t + h, in_pulse)
-            if a_end > thr_p or a_end < -thr_m:
+            if _starts(par, a_end, _gravity(par, exc, vrec, t + h, in_pulse)) != 0:
                 lo = t
                 hi = t + h
                 for _ in range(200):
@@ -287,7 +331,7 @@ def _simulate(
                     if mid <= lo or mid >= hi:
                         break
                     am = _accel(kind, exc, rec, mid, in_pulse)
-                    if am > thr_p or am < -thr_m:
+                    if _starts(par, am, _gravity(par, exc, vrec, mid, in_pulse)) != 0:
                         hi = mid
                     else:
                         lo = mid
@@ -298,24 +342,46 @@ def _simulate(
                 if not rocked:
                     rocked = True
                     t_uplift = t
+                if n_lift < n_lift_max:
+                    lift_log[n_lift, 0] = t
+                    lift_log[n_lift, 1] = side
+                n_lift += 1
+                if n_hist < n_hist_max:
+                    hist_t[n_hist] = t
+                    hist_th[n_hist] = theta
+                    hist_om[n_hist] = omega
+                    n_hist += 1
                 continue
             t = t + h
+            if n_hist < n_hist_max:
+                hist_t[n_hist] = t
+                hist_th[n_hist] = theta
+                hist_om[n_hist] = omega
+                n_hist += 1
             continue
-        th1, om1 = _rk4(par, kind, exc, rec, side, t, theta, omega, h, in_pulse)
+        th1, om1 = _rk4(par, kind, exc, rec, vrec, side, t, theta, omega, h, in_pulse)
         if side * th1 < 0.0:
             # impact within the step: find the first zero of theta in (0, h]
             lo = 0.0
             if side * theta <= 0.0:
                 # starting at theta = 0 (just after an impact or uplift): find a
                 # point inside the step where the block is off its base
-                acc0 = _rhs(par, side, theta, _accel(kind, exc, rec, t, in_pulse))
+                acc0 = _rhs(
+                    par,
+                    side,
+                    theta,
+                    _accel(kind, exc, rec, t, in_pulse),
+                    _gravity(par, exc, vrec, t, in_pulse),
+                )
                 guess = h
                 if side * acc0 < 0.0 and omega != 0.0:
                     guess = min(h, -2.0 * omega / acc0)
                 found = False
                 trial = 0.5 * guess
                 for _ in range(60):
-                    tht, _omt = _rk4(par, kind, exc, rec, side, t, theta, omega, trial, in_pulse)
+                    tht, _omt = _rk4(
+                        par, kind, exc, rec, vrec, side, t, theta, omega, trial, in_pulse
+                    )
                     if side * tht > 0.0:
                         found = True
                         break
@@ -328,7 +394,7 @@ def _simulate(
                     continue
                 lo = trial
             hi = h
-            th_lo, _w = _rk4(par, kind, exc, rec, side, t, theta, omega, lo, in_pulse)
+            th_lo, _w = _rk4(par, kind, exc, rec, vrec, side, t, theta, omega, lo, in_pulse)
             if lo == 0.0:
                 th_lo = theta
             th_hi = th1
@@ -338,7 +404,7 @@ def _simulate(
                 tau = (lo * th_hi - hi * th_lo) / (th_hi - th_lo)
                 if not (lo < tau < hi):
                     tau = 0.5 * (lo + hi)
-                th_t, _w = _rk4(par, kind, exc, rec, side, t, theta, omega, tau, in_pulse)
+                th_t, _w = _rk4(par, kind, exc, rec, vrec, side, t, theta, omega, tau, in_pulse)
                 if th_t == 0.0 or hi - lo < 1e-15 * h:
                     break
                 if side * th_t > 0.0:
@@ -355,7 +421,7 @@ def _simulate(
                     side_lo = -1
                 if abs(th_t) < 1e-16:
                     break
-            _th, w_before = _rk4(par, kind, exc, rec, side, t, theta, omega, tau, in_pulse)
+            _th, w_before = _rk4(par, kind, exc, rec, vrec, side, t, theta, omega, tau, in_pulse)
             e = par[9] if side > 0 else par[10]
             w_after = e * w_before if e > 0.0 else 0.0
             t = t + tau
@@ -399,6 +465,7 @@ def _simulate(
     out[9] = n_hist
     out[10] = t_uplift
     out[11] = status
+    out[12] = n_lift
 
 
 @nb.njit(cache=True)
@@ -408,8 +475,12 @@ def _outcome(par, kind, exc, rec, h_max):
     hth = np.empty(0)
     hom = np.empty(0)
     imp = np.empty((0, 3))
-    out = np.empty(12)
-    _simulate(par, kind, exc, rec, 0.0, 0.0, exc[2], h_max, True, ht, hth, hom, imp, out)
+    lift = np.empty((0, 2))
+    out = np.empty(13)
+    _simulate(
+        par, kind, exc, rec, np.empty(0), 0.0, 0.0, exc[2], h_max, True, ht, hth, hom, imp, lift,
+        0.0, out,
+    )  # fmt: skip
     return out[0] > 0.5, out[4]
 
 
@@ -650,10 +721,23 @@ class SampledAcceleration:
         block over ``pivot``. Zero after the last sample.
     dt : float
         Sample spacing [s].
+    vertical : numpy.ndarray, optional
+        Downward support acceleration a_v [m/s^2] at the same instants (the
+        weight becomes m (g' - a_v(t)), g' the block's effective gravity);
+        zero after the last sample. None for none.
+
+    Notes
+    -----
+    With a vertical record the equation of motion is that of the module notes
+    with g' replaced by ``g' - a_v(t)``, and rocking starts from rest when
+    ``|u''| > (g' - a_v(t)) tan(alpha)`` on that side. While ``g' - a_v`` is
+    not positive the block would leave its base (free flight), which this
+    equation does not describe: check for it before relying on the result.
     """
 
     values: np.ndarray
     dt: float
+    vertical: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         v = np.ascontiguousarray(self.values, dtype=float)
@@ -662,6 +746,14 @@ class SampledAcceleration:
         if not self.dt > 0:
             raise ValueError(f"dt must be positive, got {self.dt!r}")
         object.__setattr__(self, "values", v)
+        if self.vertical is not None:
+            w = np.ascontiguousarray(self.vertical, dtype=float)
+            if w.shape != v.shape or not np.all(np.isfinite(w)):
+                raise ValueError(
+                    f"vertical must be finite with the {v.size} samples of values, "
+                    f"got shape {w.shape}"
+                )
+            object.__setattr__(self, "vertical", w)
 
     @property
     def length(self) -> float:
@@ -704,6 +796,9 @@ class RockingResult:
     impact_log : numpy.ndarray or None
         One row per impact: time [s], angular velocity before and after
         [rad/s] (if a history was requested).
+    uplift_log : numpy.ndarray or None
+        One row per start of rocking from rest: time [s] and side (+1 about
+        ``pivot``, -1 about ``other_pivot``) (if a history was requested).
     """
 
     overturned: bool
@@ -721,20 +816,22 @@ class RockingResult:
     rotation: np.ndarray | None = None
     angular_velocity: np.ndarray | None = None
     impact_log: np.ndarray | None = None
+    uplift_log: np.ndarray | None = None
 
 
 _STATUS = {0: "rest", 1: "rocking", 2: "overturned", 3: "safe"}
 
 
-def _excitation_arrays(excitation) -> tuple[int, np.ndarray, np.ndarray]:
+def _excitation_arrays(excitation) -> tuple[int, np.ndarray, np.ndarray, np.ndarray]:
     if excitation is None:
-        return _NONE, np.zeros(4), np.empty(0)
+        return _NONE, np.zeros(4), np.empty(0), np.empty(0)
     if isinstance(excitation, Pulse):
         exc = np.array([excitation.amplitude, excitation.omega, excitation.length, 0.0])
-        return PULSE_KINDS[excitation.kind], exc, np.empty(0)
+        return PULSE_KINDS[excitation.kind], exc, np.empty(0), np.empty(0)
     if isinstance(excitation, SampledAcceleration):
         exc = np.array([0.0, 0.0, excitation.length, excitation.dt])
-        return _RECORD, exc, excitation.values
+        vertical = np.empty(0) if excitation.vertical is None else excitation.vertical
+        return _RECORD, exc, excitation.values, vertical
     raise TypeError(
         f"excitation must be a Pulse, a SampledAcceleration or None, not {excitation!r}"
     )
@@ -763,6 +860,8 @@ def simulate(
     decide: bool = False,
     max_history: int = 2_000_000,
     max_impact_log: int = 100_000,
+    max_uplift_log: int = 100_000,
+    rest_angular_velocity: float = 0.0,
 ) -> RockingResult:
     """Rocking response of ``block`` to a support acceleration.
 
@@ -778,18 +877,25 @@ def simulate(
     theta0, omega0 : float, optional
         Initial rotation [rad] and angular velocity [rad/s].
     history : bool, optional
-        Keep the state at every step and a log of impacts.
+        Keep the state at every step (rest included) and logs of impacts and
+        of starts of rocking.
     max_step : float, optional
         Time step [s] (default :func:`default_step`).
     decide : bool, optional
         Stop as soon as the excitation has ended and decide the outcome from
         energy (faster; no time of overturning).
+    max_history, max_impact_log, max_uplift_log : int, optional
+        Capacity of the history and of the logs (later entries are dropped).
+    rest_angular_velocity : float, optional
+        The block settles on its base when its angular velocity after an
+        impact is at most this [rad/s]; 0 (default) for 1e-6 of the angular
+        velocity that carries it over its energy barrier.
 
     Returns
     -------
     RockingResult
     """
-    kind, exc, rec = _excitation_arrays(excitation)
+    kind, exc, rec, vrec = _excitation_arrays(excitation)
     par = block_parameters(block)
     length = exc[2] if excitation is not None else 0.0
     if t_end is None:
@@ -802,10 +908,11 @@ def simulate(
     hth = np.empty(n_hist)
     hom = np.empty(n_hist)
     imp = np.empty((max_impact_log if history else 0, 3))
-    out = np.empty(12)
+    lift = np.empty((max_uplift_log if history else 0, 2))
+    out = np.empty(13)
     _simulate(
-        par, kind, exc, rec, float(theta0), float(omega0), float(t_end), h, decide,
-        ht, hth, hom, imp, out,
+        par, kind, exc, rec, vrec, float(theta0), float(omega0), float(t_end), h, decide,
+        ht, hth, hom, imp, lift, float(rest_angular_velocity), out,
     )  # fmt: skip
     n = int(out[9])
     n_imp = int(out[3])
@@ -825,6 +932,7 @@ def simulate(
         rotation=hth[:n].copy() if history else None,
         angular_velocity=hom[:n].copy() if history else None,
         impact_log=imp[: min(n_imp, imp.shape[0])].copy() if history else None,
+        uplift_log=lift[: min(int(out[12]), lift.shape[0])].copy() if history else None,
     )
 
 

@@ -59,6 +59,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 
+import numba as nb
 import numpy as np
 
 from freestand.core.contact import (
@@ -66,7 +67,6 @@ from freestand.core.contact import (
     Interface,
     InterfaceMode,
     Tangential,
-    assemble_mode,
     solve_contact,
 )
 from freestand.core.model import Sliding, Stack
@@ -76,6 +76,12 @@ from freestand.core.screening import GRAVITY
 #: the contact solver's tolerance, so that the state found by bisection is
 #: unambiguous for the solver).
 EVENT_TOLERANCE = 1e-7
+
+#: A contact has lifted off (``uplift``) when its gap exceeds this fraction of
+#: the base width of its interface [-]: 1 micrometre per metre of base. Smaller
+#: openings (a contact mode that opens for an instant at round-off level) are
+#: not a physical lift-off.
+UPLIFT_GAP_FRACTION = 1e-6
 
 
 # --- excitation ---------------------------------------------------------------------------------
@@ -145,23 +151,6 @@ Excitation = Callable[[float], tuple[float, float]]
 # --- kinematics ---------------------------------------------------------------------------------
 
 
-def _perp(vector: np.ndarray) -> np.ndarray:
-    """``perp(x, z) = (-z, x)``: rotation by +90 degrees."""
-    return np.array([-vector[1], vector[0]])
-
-
-def _rotate(angle: float, vector: np.ndarray) -> np.ndarray:
-    c, s = math.cos(angle), math.sin(angle)
-    return np.array([c * vector[0] - s * vector[1], s * vector[0] + c * vector[1]])
-
-
-def _rotation_shift(angle: float, vector: np.ndarray) -> np.ndarray:
-    """``R(angle) vector - vector``, exactly zero for a zero angle."""
-    c1 = -2.0 * math.sin(0.5 * angle) ** 2  # cos(angle) - 1 without cancellation
-    s = math.sin(angle)
-    return np.array([c1 * vector[0] - s * vector[1], s * vector[0] + c1 * vector[1]])
-
-
 @dataclass(frozen=True)
 class StackKinematics:
     """Contact kinematics of a stack at a configuration and velocity.
@@ -202,7 +191,140 @@ class StackKinematics:
     tangential_bias: np.ndarray
 
 
-def stack_kinematics(stack: Stack, position: np.ndarray, velocity: np.ndarray) -> StackKinematics:
+def stack_geometry(stack: Stack) -> np.ndarray:
+    """Geometry of a stack for :func:`stack_kinematics`, shape (B, 7).
+
+    Per block: centre (x, z) [m], left contact (x, z) [m], right contact
+    (x, z) [m], base level [m].
+    """
+    return np.array(
+        [
+            [*block.centre, *block.contacts[0], *block.contacts[1], block.base_level]
+            for block in stack.blocks
+        ],
+        dtype=float,
+    ).reshape(-1, 7)
+
+
+@nb.njit(cache=True)
+def _kinematics_kernel(
+    geometry, q, qd, gap, gap_velocity, slip_velocity, slide, rotation, jn, bn, jt, bt
+):
+    """Fill the arrays of :class:`StackKinematics` (see :func:`stack_kinematics`)."""
+    count = geometry.shape[0]
+    for i in range(count):
+        cxu = geometry[i, 0]
+        czu = geometry[i, 1]
+        gxu = cxu + q[i, 0]
+        gzu = czu + q[i, 1]
+        phi_u = q[i, 2]
+        vxu = qd[i, 0]
+        vzu = qd[i, 1]
+        omega_u = qd[i, 2]
+        if i == 0:
+            cxl = 0.0
+            czl = 0.0
+            gxl = 0.0
+            gzl = 0.0
+            phi_l = 0.0
+            vxl = 0.0
+            vzl = 0.0
+            omega_l = 0.0
+            nx, nz = 0.0, 1.0
+            tx, tz = 1.0, 0.0
+            spx, spz = 0.0, geometry[i, 6]
+        else:
+            cxl = geometry[i - 1, 0]
+            czl = geometry[i - 1, 1]
+            gxl = cxl + q[i - 1, 0]
+            gzl = czl + q[i - 1, 1]
+            phi_l = q[i - 1, 2]
+            vxl = qd[i - 1, 0]
+            vzl = qd[i - 1, 1]
+            omega_l = qd[i - 1, 2]
+            sl = math.sin(phi_l)
+            cl = math.cos(phi_l)
+            nx, nz = -sl, cl
+            tx, tz = cl, sl
+            dz = geometry[i, 6] - czl
+            spx = gxl - sl * dz
+            spz = gzl + cl * dz
+        rotation[i] = phi_u - phi_l
+        c1u = -2.0 * math.sin(0.5 * phi_u) ** 2
+        su = math.sin(phi_u)
+        c1l = -2.0 * math.sin(0.5 * phi_l) ** 2
+        sl_ = math.sin(phi_l)
+        for c in range(2):
+            rx = geometry[i, 2 + 2 * c]
+            rz = geometry[i, 3 + 2 * c]
+            # P = X + u + (R - I)(X - C): exactly X at rest
+            dx = rx - cxu
+            dzz = rz - czu
+            px = rx + q[i, 0] + c1u * dx - su * dzz
+            pz = rz + q[i, 1] + su * dx + c1u * dzz
+            aux = px - gxu
+            auz = pz - gzu
+            pdx = vxu - omega_u * auz
+            pdz = vzu + omega_u * aux
+            alx = px - gxl
+            alz = pz - gzl
+            wx = pdx - vxl + omega_l * alz
+            wz = pdz - vzl - omega_l * alx
+            gap[i, c] = nx * (px - spx) + nz * (pz - spz)
+            gap_velocity[i, c] = nx * wx + nz * wz
+            slip_velocity[i, c] = tx * wx + tz * wz
+            if c == 0:
+                if i:
+                    ex = rx - cxl
+                    ez = rz - czl
+                    mx = rx + q[i - 1, 0] + c1l * ex - sl_ * ez
+                    mz = rz + q[i - 1, 1] + sl_ * ex + c1l * ez
+                else:
+                    mx = rx
+                    mz = rz
+                slide[i] = tx * (px - mx) + tz * (pz - mz)
+            relx = pdx - vxl
+            relz = pdz - vzl
+            for k in range(2):
+                if k == 0:
+                    d0, d1 = nx, nz
+                else:
+                    d0, d1 = tx, tz
+                # d . perp(a) with perp(x, z) = (-z, x)
+                jac_u = -d0 * auz + d1 * aux
+                bias = (
+                    -(omega_u**2) * (d0 * aux + d1 * auz)
+                    - omega_l * (-d0 * relz + d1 * relx)
+                    + omega_l * (-d1 * wx + d0 * wz)
+                )
+                if k == 0:
+                    jn[i, c, 3 * i] = d0
+                    jn[i, c, 3 * i + 1] = d1
+                    jn[i, c, 3 * i + 2] = jac_u
+                    bn[i, c] = bias
+                else:
+                    jt[i, c, 3 * i] = d0
+                    jt[i, c, 3 * i + 1] = d1
+                    jt[i, c, 3 * i + 2] = jac_u
+                    bt[i, c] = bias
+                if i:
+                    jac_l = -(-d0 * alz + d1 * alx)
+                    if k == 0:
+                        jn[i, c, 3 * i - 3] = -d0
+                        jn[i, c, 3 * i - 2] = -d1
+                        jn[i, c, 3 * i - 1] = jac_l
+                    else:
+                        jt[i, c, 3 * i - 3] = -d0
+                        jt[i, c, 3 * i - 2] = -d1
+                        jt[i, c, 3 * i - 1] = jac_l
+
+
+def stack_kinematics(
+    stack: Stack,
+    position: np.ndarray,
+    velocity: np.ndarray,
+    geometry: np.ndarray | None = None,
+) -> StackKinematics:
     """Gaps, relative velocities, Jacobians and velocity terms of every contact.
 
     Parameters
@@ -214,6 +336,8 @@ def stack_kinematics(stack: Stack, position: np.ndarray, velocity: np.ndarray) -
         the displacement of its centre from rest and its rotation.
     velocity : numpy.ndarray
         Same shape: ``(v_x [m/s], v_z [m/s], omega [rad/s])``.
+    geometry : numpy.ndarray, optional
+        :func:`stack_geometry` of the stack, if already at hand.
 
     Returns
     -------
@@ -233,85 +357,25 @@ def stack_kinematics(stack: Stack, position: np.ndarray, velocity: np.ndarray) -
     and likewise with t for the slip acceleration. At rest (q = 0, qd = 0)
     the rows are those of the screening engine.
     """
-    blocks = stack.blocks
-    count = len(blocks)
-    q = np.asarray(position, dtype=float).reshape(count, 3)
-    qd = np.asarray(velocity, dtype=float).reshape(count, 3)
+    count = len(stack.blocks)
+    if geometry is None:
+        geometry = stack_geometry(stack)
+    q = np.ascontiguousarray(position, dtype=float).reshape(count, 3)
+    qd = np.ascontiguousarray(velocity, dtype=float).reshape(count, 3)
     size = 3 * count
-    gap = np.zeros((count, 2))
-    gap_velocity = np.zeros((count, 2))
-    slip_velocity = np.zeros((count, 2))
-    slide = np.zeros(count)
-    rotation = np.zeros(count)
+    gap = np.empty((count, 2))
+    gap_velocity = np.empty((count, 2))
+    slip_velocity = np.empty((count, 2))
+    slide = np.empty(count)
+    rotation = np.empty(count)
     normal_jacobian = np.zeros((count, 2, size))
     tangential_jacobian = np.zeros((count, 2, size))
-    normal_bias = np.zeros((count, 2))
-    tangential_bias = np.zeros((count, 2))
-    for i, block in enumerate(blocks):
-        centre_u = np.array(block.centre, dtype=float)
-        g_u = centre_u + q[i, :2]
-        phi_u = q[i, 2]
-        v_u = qd[i, :2]
-        omega_u = qd[i, 2]
-        if i == 0:
-            centre_l = np.zeros(2)
-            g_l = np.zeros(2)
-            phi_l = 0.0
-            v_l = np.zeros(2)
-            omega_l = 0.0
-            normal = np.array([0.0, 1.0])
-            tangent = np.array([1.0, 0.0])
-            surface_point = np.array([0.0, block.base_level])
-        else:
-            below = blocks[i - 1]
-            centre_l = np.array(below.centre, dtype=float)
-            g_l = centre_l + q[i - 1, :2]
-            phi_l = q[i - 1, 2]
-            v_l = qd[i - 1, :2]
-            omega_l = qd[i - 1, 2]
-            normal = np.array([-math.sin(phi_l), math.cos(phi_l)])
-            tangent = np.array([math.cos(phi_l), math.sin(phi_l)])
-            surface_point = g_l + _rotate(phi_l, np.array([0.0, block.base_level - centre_l[1]]))
-        rotation[i] = phi_u - phi_l
-        for c, point in enumerate(block.contacts):
-            reference = np.array(point, dtype=float)
-            # P = X + u + (R - I)(X - C): exactly X at rest, as in the screening engine.
-            p = reference + q[i, :2] + _rotation_shift(phi_u, reference - centre_u)
-            arm_u = p - g_u
-            p_dot = v_u + omega_u * _perp(arm_u)
-            arm_l = p - g_l
-            w = p_dot - v_l - omega_l * _perp(arm_l)
-            gap[i, c] = normal @ (p - surface_point)
-            gap_velocity[i, c] = normal @ w
-            slip_velocity[i, c] = tangent @ w
-            if c == 0:
-                material = (
-                    reference + q[i - 1, :2] + _rotation_shift(phi_l, reference - centre_l)
-                    if i
-                    else reference
-                )
-                slide[i] = tangent @ (p - material)
-            relative = p_dot - v_l
-            for direction, jacobian, bias in (
-                (normal, normal_jacobian, normal_bias),
-                (tangent, tangential_jacobian, tangential_bias),
-            ):
-                jacobian[i, c, 3 * i : 3 * i + 3] = (
-                    direction[0],
-                    direction[1],
-                    direction @ _perp(arm_u),
-                )
-                if i:
-                    jacobian[i, c, 3 * i - 3 : 3 * i] = (
-                        -direction[0],
-                        -direction[1],
-                        -(direction @ _perp(arm_l)),
-                    )
-                bias[i, c] = (
-                    -(omega_u**2) * (direction @ arm_u)
-                    - omega_l * (direction @ _perp(relative))
-                    + omega_l * (_perp(direction) @ w)
-                )
+    normal_bias = np.empty((count, 2))
+    tangential_bias = np.empty((count, 2))
+    _kinematics_kernel(
+        geometry, q, qd, gap, gap_velocity, slip_velocity, slide, rotation,
+        normal_jacobian, normal_bias, tangential_jacobian, tangential_bias,
+    )  # fmt: skip
     return StackKinematics(
         gap=gap,
         gap_velocity=gap_velocity,
@@ -604,6 +668,16 @@ class TimeHistoryDiagnostics:
     max_projection : float
         Largest position correction [m, rad] of the projection onto the closed
         contacts.
+    method : str
+        The path that produced the result: ``"general"`` (event-driven stack
+        path), ``"single-block rocking"``, ``"single-block sliding"`` or
+        ``"single-block rest"`` (the exact single-block equations, see
+        :mod:`freestand.core.single_block`).
+    checks : tuple of str
+        The assumptions of a single-block path, as verified, in words.
+    fallback : str
+        Why the single-block path was not used (its failed assumption), if
+        it was tried; empty otherwise.
     """
 
     time_step: float
@@ -613,6 +687,9 @@ class TimeHistoryDiagnostics:
     ambiguous_solves: int
     max_penetration: float
     max_projection: float
+    method: str = "general"
+    checks: tuple[str, ...] = ()
+    fallback: str = ""
 
 
 @dataclass(frozen=True)
@@ -656,14 +733,20 @@ class TimeHistoryResult:
     max_slide : numpy.ndarray
         Shape (B,): largest ``|slide|`` [m] per interface.
     uplift : numpy.ndarray
-        Shape (B,), bool: a contact of the interface opened.
+        Shape (B,), bool: a contact of the interface lifted off by more than
+        :data:`UPLIFT_GAP_FRACTION` of the interface's base width (a
+        momentary lift-off at round-off level does not count).
     free_flight : numpy.ndarray
-        Shape (B,), bool: the block left the body below (both contacts open).
+        Shape (B,), bool: the block left the body below, both contacts open
+        by more than that gap.
     overturned : numpy.ndarray
         Shape (B,), bool.
     overturn_time : numpy.ndarray
         Shape (B,): time of overturning [s], NaN if none.
     diagnostics : TimeHistoryDiagnostics
+    max_lift : numpy.ndarray
+        Shape (B,): largest gap [m] opened at a contact of each interface
+        (the larger of the two contacts' gaps; 0 for none).
     """
 
     configuration: str
@@ -685,6 +768,7 @@ class TimeHistoryResult:
     overturned: np.ndarray
     overturn_time: np.ndarray
     diagnostics: TimeHistoryDiagnostics = field(repr=False)
+    max_lift: np.ndarray | None = None
 
     def block_index(self, name: str) -> int:
         """Index of the block called ``name``."""
@@ -723,6 +807,82 @@ class _Held:
     modes: tuple[InterfaceMode, ...]
     directions: tuple[int, ...]
 
+    def __post_init__(self) -> None:
+        # per interface: left closed, right closed, tangential state (FREE 0,
+        # STICK 1, SLIDE 2), slide direction; for the compiled evaluation
+        self.codes = np.array(
+            [
+                (
+                    float(mode.left_closed),
+                    float(mode.right_closed),
+                    0.0 if mode.tangential is Tangential.FREE
+                    else 1.0 if mode.tangential is Tangential.STICK
+                    else 2.0,
+                    float(mode.slide_direction),
+                )
+                for mode in self.modes
+            ],
+            dtype=float,
+        ).reshape(-1, 4)  # fmt: skip
+
+
+@nb.njit(cache=True)
+def _held_system(geometry, inertia, kinetic, codes, q, qd, inertial, effective_gravity, kin_out,
+                 jn, bn, jt, bt, matrix, rhs):  # fmt: skip
+    """Kinematics and the linear system of a held contact mode (see ``assemble_mode``).
+
+    ``inertia`` (B, 3): m, m, Theta_S per block; ``kinetic`` (B,): mu;
+    ``kin_out`` (B, 7): gap (2), gap velocity (2), slip velocity (2), rotation.
+    The slide (column of the kinematics) is not needed here.
+    """
+    count = geometry.shape[0]
+    n = 3 * count
+    slide = np.empty(count)
+    gap = kin_out[:, 0:2]
+    gap_velocity = kin_out[:, 2:4]
+    slip_velocity = kin_out[:, 4:6]
+    rotation = np.empty(count)
+    _kinematics_kernel(geometry, q, qd, gap, gap_velocity, slip_velocity, slide, rotation,
+                       jn, bn, jt, bt)  # fmt: skip
+    kin_out[:, 6] = rotation
+    matrix[:, :] = 0.0
+    rhs[:] = 0.0
+    for i in range(count):
+        for k in range(3):
+            matrix[3 * i + k, 3 * i + k] = inertia[i, k]
+        rhs[3 * i] = inertia[i, 0] * inertial
+        rhs[3 * i + 1] = -inertia[i, 0] * effective_gravity
+    for i in range(count):
+        column = n + 3 * i
+        left = codes[i, 0] > 0.5
+        right = codes[i, 1] > 0.5
+        reference = 1 if (right and not left) else 0
+        for r in range(n):
+            matrix[r, column] = -jn[i, 0, r]
+            matrix[r, column + 1] = -jn[i, 1, r]
+            matrix[r, column + 2] = -jt[i, reference, r]
+        for side in range(2):
+            row = column + side
+            if codes[i, side] > 0.5:
+                for r in range(n):
+                    matrix[row, r] = jn[i, side, r]
+                rhs[row] = -bn[i, side]
+            else:
+                matrix[row, column + side] = 1.0
+        row = column + 2
+        state = codes[i, 2]
+        if state < 0.5:
+            matrix[row, column + 2] = 1.0
+        elif state < 1.5:
+            for r in range(n):
+                matrix[row, r] = jt[i, reference, r]
+            rhs[row] = -bt[i, reference]
+        else:
+            # T + direction * mu * (N_L + N_R) = 0: friction opposes the slip
+            matrix[row, column + 2] = 1.0
+            matrix[row, column] = codes[i, 3] * kinetic[i]
+            matrix[row, column + 1] = codes[i, 3] * kinetic[i]
+
 
 class _Simulation:
     def __init__(
@@ -736,6 +896,9 @@ class _Simulation:
     ):
         self.full = stack
         self.stack = stack
+        self.geometry = stack_geometry(stack)
+        self.inertia = np.array([[b.mass, b.mass, b.inertia] for b in stack.blocks]).reshape(-1, 3)
+        self.kinetic = np.array([b.friction.kinetic for b in stack.blocks])
         self.active_count = len(stack.blocks)
         self.excitation = excitation
         self.gravity = gravity
@@ -754,18 +917,38 @@ class _Simulation:
     # dynamics of the held mode
     def kinematics(self, q, qd, slide):
         """Kinematics with the accumulated slide of the simulation."""
-        return replace(stack_kinematics(self.stack, q, qd), slide=slide)
+        return replace(stack_kinematics(self.stack, q, qd, self.geometry), slide=slide)
 
     def evaluate(self, time: float, q: np.ndarray, qd: np.ndarray, slide, held: _Held):
+        """(qdd, forces (B, 3), kinematics) of the held mode: compiled ``assemble_mode``."""
         a_h, a_v = self.excitation(time)
-        kin = self.kinematics(q, qd, slide)
-        problem = contact_problem_in_motion(
-            self.stack, q, qd, -a_h, a_v, self.gravity, self.tol, kinematics=kin
-        )
-        matrix, rhs = assemble_mode(problem, held.modes, use_static=False)
+        count = self.active_count
+        n = 3 * count
+        kin_out = np.empty((count, 7))
+        jn = np.zeros((count, 2, n))
+        jt = np.zeros((count, 2, n))
+        bn = np.empty((count, 2))
+        bt = np.empty((count, 2))
+        matrix = np.empty((2 * n, 2 * n))
+        rhs = np.empty(2 * n)
+        _held_system(
+            self.geometry, self.inertia, self.kinetic, held.codes,
+            np.ascontiguousarray(q).reshape(count, 3), np.ascontiguousarray(qd).reshape(count, 3),
+            -a_h, self.gravity - a_v, kin_out, jn, bn, jt, bt, matrix, rhs,
+        )  # fmt: skip
         solution = np.linalg.solve(matrix, rhs)
-        n = problem.size
-        return solution[:n], solution[n:].reshape(-1, 3), kin, problem
+        kin = StackKinematics(
+            gap=kin_out[:, 0:2],
+            gap_velocity=kin_out[:, 2:4],
+            slip_velocity=kin_out[:, 4:6],
+            slide=slide,
+            rotation=kin_out[:, 6],
+            normal_jacobian=jn,
+            normal_bias=bn,
+            tangential_jacobian=jt,
+            tangential_bias=bt,
+        )
+        return solution[:n], solution[n:].reshape(-1, 3), kin, None
 
     @staticmethod
     def slide_rate(kin: StackKinematics, held: _Held) -> np.ndarray:
@@ -805,8 +988,11 @@ class _Simulation:
                     and kin.gap_velocity[i, c] < 0.0
                 ):
                     events.append(("impact", i, c))
-            interface = problem.interfaces[i]
-            sliding = interface.effective_sliding()
+            sliding = block.sliding
+            if sliding in (Sliding.NO_LEFT, Sliding.NO_RIGHT) and not _stop_engaged(
+                sliding, float(kin.slide[i]), self.tol.slide
+            ):
+                sliding = Sliding.FREE
             if mode.tangential is Tangential.STICK and sliding is not Sliding.NONE:
                 limit = block.friction.static * (forces[i, 0] + forces[i, 1]) + self.force_event
                 tangential = forces[i, 2]
@@ -841,7 +1027,7 @@ class _Simulation:
         mass = np.concatenate([[b.mass, b.mass, b.inertia] for b in self.stack.blocks])
         inverse_mass = 1.0 / mass
         for _ in range(3):
-            kin = stack_kinematics(self.stack, q, qd)
+            kin = stack_kinematics(self.stack, q, qd, self.geometry)
             rows, values = [], []
             for i, mode in enumerate(held.modes):
                 for c, closed in enumerate((mode.left_closed, mode.right_closed)):
@@ -859,7 +1045,7 @@ class _Simulation:
             correction = weighted.T @ np.linalg.lstsq(weighted @ jac.T, gaps, rcond=None)[0]
             self.max_projection = max(self.max_projection, float(np.max(np.abs(correction))))
             q = q - correction
-        kin = stack_kinematics(self.stack, q, qd)
+        kin = stack_kinematics(self.stack, q, qd, self.geometry)
         rows = []
         for i, mode in enumerate(held.modes):
             for c, closed in enumerate((mode.left_closed, mode.right_closed)):
@@ -904,7 +1090,9 @@ class _Simulation:
         # states prefer (in the solver's order) one that does.
         for solution in result.admissible:
             after = qd + solution.acceleration
-            if not self.into_stop(replace(stack_kinematics(self.stack, q, after), slide=kin.slide)):
+            if not self.into_stop(
+                replace(stack_kinematics(self.stack, q, after, self.geometry), slide=kin.slide)
+            ):
                 return after, result.status
         return qd + result.chosen.acceleration, result.status
 
@@ -981,18 +1169,26 @@ def _peak_magnitude(time: np.ndarray, value: np.ndarray, rate: np.ndarray) -> fl
     peak = float(np.max(np.abs(value[finite]), initial=0.0))
     with np.errstate(invalid="ignore"):
         turning = finite[:-1] & finite[1:] & (rate[:-1] * rate[1:] < 0.0)
-    for k in np.flatnonzero(turning):
-        h = time[k + 1] - time[k]
-        if h <= 0.0:
-            continue
-        y0, y1, m0, m1 = value[k], value[k + 1], rate[k] * h, rate[k + 1] * h
-        # p(s) = y0 + m0 s + (3 (y1 - y0) - 2 m0 - m1) s^2 + (2 (y0 - y1) + m0 + m1) s^3
-        c2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1
-        c3 = 2.0 * (y0 - y1) + m0 + m1
-        for s in np.roots([3.0 * c3, 2.0 * c2, m0]):
-            if abs(s.imag) < 1e-12 and 0.0 < s.real < 1.0:
-                x = s.real
-                peak = max(peak, abs(y0 + m0 * x + c2 * x * x + c3 * x**3))
+    k = np.flatnonzero(turning)
+    h = time[k + 1] - time[k]
+    k, h = k[h > 0.0], h[h > 0.0]
+    if k.size == 0:
+        return peak
+    y0, y1, m0, m1 = value[k], value[k + 1], rate[k] * h, rate[k + 1] * h
+    # p(s) = y0 + m0 s + (3 (y1 - y0) - 2 m0 - m1) s^2 + (2 (y0 - y1) + m0 + m1) s^3
+    c2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1
+    c3 = 2.0 * (y0 - y1) + m0 + m1
+    # roots of p'(s) = 3 c3 s^2 + 2 c2 s + m0 in the stable form q = -(b + sgn(b) sqrt(d)) / 2
+    a, b = 3.0 * c3, 2.0 * c2
+    with np.errstate(all="ignore"):
+        root = np.sqrt(b * b - 4.0 * a * m0)
+        q = -0.5 * (b + np.where(b >= 0.0, root, -root))
+        for s in (q / a, m0 / q):
+            inside = np.isfinite(s) & (s > 0.0) & (s < 1.0)
+            if inside.any():
+                x = s[inside]
+                candidate = y0[inside] + (m0[inside] + (c2[inside] + c3[inside] * x) * x) * x
+                peak = max(peak, float(np.max(np.abs(candidate))))
     return peak
 
 
@@ -1000,7 +1196,97 @@ def _peak_magnitude(time: np.ndarray, value: np.ndarray, rate: np.ndarray) -> fl
 _EVENT_PRIORITY = ("overturn", "impact", "stop-impact", "lift-off", "slip", "slip-stop")
 
 
+#: Solvers of :func:`simulate`.
+METHODS = ("auto", "general", "single-block")
+
+
 def simulate(
+    stack: Stack,
+    excitation: SupportMotion | Excitation,
+    duration: float | None = None,
+    *,
+    method: str = "auto",
+    max_step: float | None = None,
+    gravity: float = GRAVITY,
+    initial_position: np.ndarray | None = None,
+    initial_velocity: np.ndarray | None = None,
+    excitation_end: float | None = None,
+    tolerances: ContactTolerances | None = None,
+    time_tolerance: float = 1e-9,
+    max_events: int = 100_000,
+) -> TimeHistoryResult:
+    """Simulate the planar motion of a stack under support accelerations (front end).
+
+    Parameters
+    ----------
+    stack, excitation, duration, gravity, initial_position,
+    initial_velocity, excitation_end, tolerances, time_tolerance, max_events
+        As for :func:`simulate_general`.
+    max_step : float, optional
+        Largest integration step [s]; by default 1 ms for the general path
+        and 0.02 / p for the single-block rocking integrator (whose steps
+        also end on every record sample).
+    method : str, optional
+        ``"general"``: the event-driven stack path (:func:`simulate_general`).
+        ``"single-block"``: the exact single-block equations
+        (:func:`freestand.core.single_block.simulate_single_block`) for one
+        block on the support under a :class:`SupportMotion`, starting at rest;
+        when their assumptions fail (slide-rock, free flight, sliding against
+        an end stop) the general path runs instead and
+        ``diagnostics.fallback`` says why. ``"auto"`` (default): the
+        single-block path wherever it applies, else the general path.
+
+    Returns
+    -------
+    TimeHistoryResult
+        ``diagnostics.method`` names the path that produced it.
+    """
+    if method not in METHODS:
+        raise ValueError(f"unknown method {method!r}; use one of {', '.join(METHODS)}")
+    general = dict(
+        max_step=1e-3 if max_step is None else max_step,
+        gravity=gravity,
+        initial_position=initial_position,
+        initial_velocity=initial_velocity,
+        excitation_end=excitation_end,
+        tolerances=tolerances,
+        time_tolerance=time_tolerance,
+        max_events=max_events,
+    )
+    if method == "general":
+        return simulate_general(stack, excitation, duration, **general)
+    at_rest = all(
+        value is None or not np.any(np.asarray(value, dtype=float))
+        for value in (initial_position, initial_velocity)
+    )
+    applicable = len(stack.blocks) == 1 and isinstance(excitation, SupportMotion) and at_rest
+    if not applicable:
+        if method == "single-block":
+            raise ValueError(
+                "the single-block path needs a stack of one block, a sampled SupportMotion "
+                "and a start at rest; use method='general' or 'auto'"
+            )
+        return simulate_general(stack, excitation, duration, **general)
+    from freestand.core.single_block import simulate_single_block
+
+    attempt = simulate_single_block(
+        stack,
+        excitation,
+        duration,
+        max_step=max_step,
+        gravity=gravity,
+        excitation_end=excitation_end,
+    )
+    if attempt.result is not None:
+        return attempt.result
+    result = simulate_general(stack, excitation, duration, **general)
+    return replace(
+        result,
+        diagnostics=replace(result.diagnostics, checks=attempt.checks, fallback=attempt.failure),
+    )
+
+
+def simulate_general(
     stack: Stack,
     excitation: SupportMotion | Excitation,
     duration: float | None = None,
@@ -1014,7 +1300,7 @@ def simulate(
     time_tolerance: float = 1e-9,
     max_events: int = 100_000,
 ) -> TimeHistoryResult:
-    """Simulate the planar motion of a stack under support accelerations.
+    """Simulate the planar motion of a stack under support accelerations (general path).
 
     Parameters
     ----------
@@ -1090,9 +1376,14 @@ def simulate(
     free_flight = np.zeros(count, dtype=bool)
     overturned = np.zeros(count, dtype=bool)
     overturn_time = np.full(count, np.nan)
+    max_lift = np.zeros(count)
+    max_flight = np.zeros(count)
 
     def record(time, q, qd, forces, kin):
         active = sim.active_count
+        gaps = kin.gap[:active]
+        np.maximum(max_lift[:active], gaps.max(axis=1), out=max_lift[:active])
+        np.maximum(max_flight[:active], gaps.min(axis=1), out=max_flight[:active])
         position = np.full((count, 3), np.nan)
         velocity = np.full((count, 3), np.nan)
         normal = np.full((count, 2), np.nan)
@@ -1160,6 +1451,9 @@ def simulate(
         )
         sim.active_count = index
         sim.stack = Stack(stack.name, stack.blocks[:index])
+        sim.geometry = sim.geometry[:index]
+        sim.inertia = sim.inertia[:index]
+        sim.kinetic = sim.kinetic[:index]
 
     status = "completed"
     message = ""
@@ -1337,6 +1631,11 @@ def simulate(
                     b.name for b, o in zip(stack.blocks, overturned, strict=True) if o
                 )
                 message += f"; overturned: {names}"
+    lift_threshold = UPLIFT_GAP_FRACTION * np.array(
+        [block.base_right - block.base_left for block in stack.blocks]
+    )
+    uplift &= max_lift > lift_threshold
+    free_flight &= max_flight > lift_threshold
     rotation_array = np.array(rotations) if rotations else np.zeros((0, count))
     slide_array = np.array(slides) if slides else np.zeros((0, count))
     time_array = np.array(times)
@@ -1379,4 +1678,5 @@ def simulate(
             max_penetration=sim.max_penetration,
             max_projection=sim.max_projection,
         ),
+        max_lift=max_lift,
     )
