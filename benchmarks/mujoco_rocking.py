@@ -50,12 +50,15 @@ except ImportError:  # optional benchmark dependency
 
 from scipy.integrate import solve_ivp
 
+from freestand.core.model import Block, Friction, Stack
 from freestand.core.rocking import RockingBlock
 from freestand.core.rocking_dynamics import (
     SampledAcceleration,
     exact_minimum_overturning_amplitude,
     simulate,
 )
+from freestand.core.timehistory import SupportMotion
+from freestand.core.timehistory import simulate as simulate_time_history
 from freestand.io.records import read_at2
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -330,6 +333,23 @@ def main() -> int:
     timings["freestand"] = median_time(lambda: simulate(block, record, t_end=RECORD_SECONDS))
     timings["freestand, with history"] = median_time(
         lambda: simulate(block, record, t_end=RECORD_SECONDS, history=True)
+    )
+    # The same block through the time-history front end: the single-block fast
+    # path with its assumption checks (no slip, no free flight) and full history.
+    stack = Stack(
+        "block",
+        (
+            Block(
+                "block", MASS, block.inertia, (0.0, HALF_HEIGHT), -HALF_WIDTH, HALF_WIDTH, 0.0,
+                Friction(3.0, 3.0),
+            ),
+        ),
+    )  # fmt: skip
+    support = SupportMotion(motion.dt, values)
+    front = simulate_time_history(stack, support, RECORD_SECONDS, gravity=GRAVITY)
+    assert front.diagnostics.method == "single-block rocking", front.diagnostics
+    timings["freestand simulate, fast path"] = median_time(
+        lambda: simulate_time_history(stack, support, RECORD_SECONDS, gravity=GRAVITY)
     )
     engines = {name: MujocoBlock(name) for name in CONTACTS}
     for name, engine in engines.items():

@@ -90,7 +90,7 @@ def _accel(kind, exc, rec, t, in_pulse):
     return 0.0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _gravity(par, exc, vrec, t, in_pulse):
     """Effective gravity g' = g - a_v(t) [m/s^2]; a_v from the vertical record, if any."""
     if vrec.shape[0] == 0 or not in_pulse:
@@ -107,12 +107,15 @@ def _gravity(par, exc, vrec, t, in_pulse):
     return par[0] - (vrec[i] + frac * (vrec[i + 1] - vrec[i]))
 
 
-@nb.njit(cache=True)
-def _starts(par, a, g):
-    """Side (+1, -1) on which a support acceleration ``a`` starts rocking from rest, 0 if none."""
-    if a > g * math.tan(par[2]):
+@nb.njit(cache=True, inline="always")
+def _starts(tan_p, tan_m, a, g):
+    """Side (+1, -1) on which a support acceleration ``a`` starts rocking from rest, 0 if none.
+
+    tan_p, tan_m: tan(alpha) about the pivot and the other pivot [-]; g = g' [m/s^2].
+    """
+    if a > g * tan_p:
         return 1
-    if a < -g * math.tan(par[6]):
+    if a < -g * tan_m:
         return -1
     return 0
 
@@ -135,9 +138,12 @@ def _rk4(par, kind, exc, rec, vrec, side, t, theta, omega, h, in_pulse):
     a0 = _accel(kind, exc, rec, t, in_pulse)
     am = _accel(kind, exc, rec, t + 0.5 * h, in_pulse)
     a1 = _accel(kind, exc, rec, t + h, in_pulse)
-    g0 = _gravity(par, exc, vrec, t, in_pulse)
-    gm = _gravity(par, exc, vrec, t + 0.5 * h, in_pulse)
-    g1 = _gravity(par, exc, vrec, t + h, in_pulse)
+    if vrec.shape[0] > 0 and in_pulse:
+        g0 = _gravity(par, exc, vrec, t, in_pulse)
+        gm = _gravity(par, exc, vrec, t + 0.5 * h, in_pulse)
+        g1 = _gravity(par, exc, vrec, t + h, in_pulse)
+    else:
+        g0 = gm = g1 = par[0]
     k1t = omega
     k1w = _rhs(par, side, theta, a0, g0)
     k2t = omega + 0.5 * h * k1w
@@ -240,6 +246,9 @@ def _simulate(
     settles (0 for the default, 1e-6 of the speed that overturns it).
     """
     g = par[0]
+    tan_p = math.tan(par[2])
+    tan_m = math.tan(par[6])
+    has_vertical = vrec.shape[0] > 0
     dur = exc[2]
     rec_dt = exc[3]
     t = 0.0
@@ -310,7 +319,8 @@ def _simulate(
                 continue
         if resting:
             a_now = _accel(kind, exc, rec, t, in_pulse)
-            s_now = _starts(par, a_now, _gravity(par, exc, vrec, t, in_pulse))
+            g_now = _gravity(par, exc, vrec, t, in_pulse) if has_vertical else g
+            s_now = _starts(tan_p, tan_m, a_now, g_now)
             if s_now != 0:
                 side = s_now
                 resting = False
@@ -323,7 +333,8 @@ def _simulate(
                 n_lift += 1
                 continue
             a_end = _accel(kind, exc, rec, t + h, in_pulse)
-            if _starts(par, a_end, _gravity(par, exc, vrec, t + h, in_pulse)) != 0:
+            g_end = _gravity(par, exc, vrec, t + h, in_pulse) if has_vertical else g
+            if _starts(tan_p, tan_m, a_end, g_end) != 0:
                 lo = t
                 hi = t + h
                 for _ in range(200):
@@ -331,7 +342,7 @@ def _simulate(
                     if mid <= lo or mid >= hi:
                         break
                     am = _accel(kind, exc, rec, mid, in_pulse)
-                    if _starts(par, am, _gravity(par, exc, vrec, mid, in_pulse)) != 0:
+                    if _starts(tan_p, tan_m, am, _gravity(par, exc, vrec, mid, in_pulse)) != 0:
                         hi = mid
                     else:
                         lo = mid
