@@ -63,6 +63,20 @@ _HALF_PI = 0.5 * math.pi
 # ------------------------------------------------------------------------------------
 # compiled kernels
 # ------------------------------------------------------------------------------------
+@nb.njit(cache=True, inline="always")
+def _interpolate(values, dt, t):
+    """Linear interpolation of samples ``values`` spaced ``dt`` [s] at time ``t`` [s]."""
+    n = values.shape[0]
+    x = t / dt
+    i = int(math.floor(x))
+    if i < 0:
+        i = 0
+    if i > n - 2:
+        i = n - 2
+    frac = x - i
+    return values[i] + frac * (values[i + 1] - values[i])
+
+
 @nb.njit(cache=True)
 def _accel(kind, exc, rec, t, in_pulse):
     """Support acceleration [m/s^2] at time t (zero once the excitation has ended)."""
@@ -77,16 +91,7 @@ def _accel(kind, exc, rec, t, in_pulse):
     if kind == 3:
         return amp * math.cos(w * t)
     if kind == 4:
-        dt = exc[3]
-        n = rec.shape[0]
-        x = t / dt
-        i = int(math.floor(x))
-        if i < 0:
-            i = 0
-        if i > n - 2:
-            i = n - 2
-        frac = x - i
-        return rec[i] + frac * (rec[i + 1] - rec[i])
+        return _interpolate(rec, exc[3], t)
     return 0.0
 
 
@@ -95,16 +100,7 @@ def _gravity(par, exc, vrec, t, in_pulse):
     """Effective gravity g' = g - a_v(t) [m/s^2]; a_v from the vertical record, if any."""
     if vrec.shape[0] == 0 or not in_pulse:
         return par[0]
-    dt = exc[3]
-    n = vrec.shape[0]
-    x = t / dt
-    i = int(math.floor(x))
-    if i < 0:
-        i = 0
-    if i > n - 2:
-        i = n - 2
-    frac = x - i
-    return par[0] - (vrec[i] + frac * (vrec[i + 1] - vrec[i]))
+    return par[0] - _interpolate(vrec, exc[3], t)
 
 
 @nb.njit(cache=True, inline="always")

@@ -31,7 +31,7 @@ from freestand.report.content import (
     limit_title,
     sense_label,
 )
-from freestand.report.tables import motion_label
+from freestand.report.tables import FORCE_HEADERS, motion_label
 
 CSS = """
 :root { --ink: #1a1a1a; --rule: #9a9a9a; --light: #f2f2f2; --flag: #fff3c4; --risk: #fde2df; }
@@ -548,14 +548,7 @@ def _screening(doc: _Document, content: ReportContent) -> str:
             doc.table(
                 f"Contact forces on each body from the body below, configuration "
                 f"<i>{_e(stack.name)}</i> (analogue of the paper's Tables 3 and 5).",
-                _head(
-                    "excitation",
-                    "sense",
-                    "body",
-                    "vertical, left [N]",
-                    "vertical, right [N]",
-                    "horizontal (sum) [N]",
-                ),  # fmt: skip
+                _head(*FORCE_HEADERS[1:]),
                 force_rows,
                 table="forces",
                 configuration=stack.name,
