@@ -123,6 +123,19 @@ def verdict_lines(result: TimeHistoryResult) -> list[str]:
     return lines
 
 
+def _block_panel(ax, result, values, large, units, events, label, gid) -> None:
+    """One curve per block of ``values`` (slide or rotation), its events and legend."""
+    factor, unit = _scale(values, large, units)
+    for block, name in enumerate(result.block_names):
+        ax.plot(
+            result.time, factor * values[:, block], color=_colour(block),
+            linewidth=1.0, label=name, gid=f"{gid}:{block}",
+        )  # fmt: skip
+    _mark_events(ax, result, values, events, factor)
+    ax.set_ylabel(f"{label}\n[{unit}]" if "\n" not in label else f"{label} [{unit}]")
+    _legend(ax)
+
+
 def plot_time_history(
     result: TimeHistoryResult,
     support_motion: SupportMotion | None = None,
@@ -183,28 +196,15 @@ def plot_time_history(
         _legend(ax)
         row += 1
 
-    ax = axes[row]
-    slide_factor, slide_unit = _scale(result.slide, 1.0, ("mm", "m"))
-    for block, name in enumerate(names):
-        ax.plot(
-            time, slide_factor * result.slide[:, block], color=_colour(block),
-            linewidth=1.0, label=name, gid=f"slide:{block}",
-        )  # fmt: skip
-    _mark_events(ax, result, result.slide, SLIDING_EVENTS, slide_factor)
-    ax.set_ylabel(f"slide on body below\n[{slide_unit}]")
-    _legend(ax)
+    _block_panel(
+        axes[row], result, result.slide, 1.0, ("mm", "m"), SLIDING_EVENTS,
+        "slide on body below", "slide",
+    )  # fmt: skip
     row += 1
-
-    ax = axes[row]
-    rotation_factor, rotation_unit = _scale(result.relative_rotation, 0.1, ("mrad", "rad"))
-    for block, name in enumerate(names):
-        ax.plot(
-            time, rotation_factor * result.relative_rotation[:, block], color=_colour(block),
-            linewidth=1.0, label=name, gid=f"rotation:{block}",
-        )  # fmt: skip
-    _mark_events(ax, result, result.relative_rotation, ROCKING_EVENTS, rotation_factor)
-    ax.set_ylabel(f"rotation rel. to\nbody below [{rotation_unit}]")
-    _legend(ax)
+    _block_panel(
+        axes[row], result, result.relative_rotation, 0.1, ("mrad", "rad"), ROCKING_EVENTS,
+        "rotation rel. to\nbody below", "rotation",
+    )  # fmt: skip
     row += 1
 
     for block, name in enumerate(names):
