@@ -844,10 +844,14 @@ def _excitation_arrays(excitation) -> tuple[int, np.ndarray, np.ndarray, np.ndar
     )
 
 
+def largest_step(block: RockingBlock) -> float:
+    """Largest step [s] that resolves the rocking: 0.02 / p, p the larger of both pivots."""
+    return _STEP_TIMES_P / max(block.about("pivot").p, block.about("other").p)
+
+
 def default_step(block: RockingBlock, excitation=None) -> float:
     """Default fixed time step [s]: 0.02 / p and 1/400 of a pulse, whichever is smaller."""
-    p = max(block.about("pivot").p, block.about("other").p)
-    h = _STEP_TIMES_P / p
+    h = largest_step(block)
     if isinstance(excitation, Pulse):
         h = min(h, excitation.length / _STEPS_PER_PULSE)
     if isinstance(excitation, SampledAcceleration):

@@ -52,7 +52,7 @@ import numpy as np
 from freestand.core.ground_motion import GroundMotion
 from freestand.core.model import Block, Sliding, Stack
 from freestand.core.rocking import RockingBlock
-from freestand.core.rocking_dynamics import SampledAcceleration
+from freestand.core.rocking_dynamics import SampledAcceleration, largest_step
 from freestand.core.rocking_dynamics import simulate as simulate_rocking
 from freestand.core.screening import GRAVITY
 from freestand.core.sliding import slide_block
@@ -66,9 +66,6 @@ from freestand.core.timehistory import (
     TimeHistoryResult,
     _peak_magnitude,
 )
-
-#: Largest rocking step as a fraction of 1 / p [-] (as in the rocking integrator).
-_STEP_TIMES_P = 0.02
 
 
 @dataclass(frozen=True)
@@ -157,8 +154,8 @@ def _rocking(
     record = SampledAcceleration(
         excitation.horizontal, excitation.time_step, vertical=excitation.vertical
     )
-    p = max(rocking_block.about("pivot").p, rocking_block.about("other").p)
-    step = _STEP_TIMES_P / p if max_step is None else min(max_step, _STEP_TIMES_P / p)
+    step = largest_step(rocking_block)
+    step = step if max_step is None else min(max_step, step)
     capacity = int(end / step) + 2 * excitation.horizontal.size + 1000
     # the block settles when its corners land slower than the general path's
     # contact velocity tolerance
