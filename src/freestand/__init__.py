@@ -1,5 +1,17 @@
 """freestand: seismic screening of free-standing rigid-block stacks.
 
+``import freestand as fs`` gives the public entry points (README, "Python
+API"); they are loaded on first use, so the command line starts fast:
+
+- models and records: :func:`load_model`, :func:`load_record`,
+  :func:`load_suite`, :class:`GroundMotion`, :class:`SupportMotion`,
+  :class:`Block`, :class:`Stack`, :class:`Friction`, :class:`Sliding`,
+  :class:`Excitation`;
+- analyses: :func:`screen` (paper Tables 2-5), :func:`simulate` (time
+  history), :func:`response_spectrum`, :class:`RockingBlock` and
+  :func:`overturning_limits` (paper Figs. 6-8);
+- :class:`FreestandError`, the one error class.
+
 The package is layered:
 
 - :mod:`freestand.core` -- the pure numerical core (SI floats, numpy arrays,
@@ -11,8 +23,46 @@ The package is layered:
 - :mod:`freestand.cli` -- the thin ``freestand`` command.
 """
 
+from __future__ import annotations
+
+from importlib import import_module
+
 from freestand.errors import FreestandError
 
 __version__ = "0.1.0"
 
-__all__ = ["FreestandError", "__version__"]
+#: Public name -> module that defines it.
+_PUBLIC = {
+    "load_model": "freestand.io.model_file",
+    "load_record": "freestand.io.records",
+    "load_suite": "freestand.io.suites",
+    "GroundMotion": "freestand.core.ground_motion",
+    "SupportMotion": "freestand.core.timehistory",
+    "TimeHistoryResult": "freestand.core.timehistory",
+    "Block": "freestand.core.model",
+    "Stack": "freestand.core.model",
+    "Friction": "freestand.core.model",
+    "Sliding": "freestand.core.model",
+    "Excitation": "freestand.core.model",
+    "screen": "freestand.api",
+    "simulate": "freestand.api",
+    "support_motion": "freestand.api",
+    "response_spectrum": "freestand.core.response_spectrum",
+    "RockingBlock": "freestand.core.rocking",
+    "overturning_limits": "freestand.core.overturning",
+}
+
+__all__ = ["FreestandError", "__version__", *_PUBLIC]
+
+
+def __getattr__(name: str):
+    module = _PUBLIC.get(name)
+    if module is None:
+        raise AttributeError(f"module 'freestand' has no attribute {name!r}")
+    value = getattr(import_module(module), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(__all__)
