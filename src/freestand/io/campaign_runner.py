@@ -157,10 +157,7 @@ def run_campaign(
             from distributed import as_completed as dask_completed
 
             shared = client.scatter(campaign, broadcast=True)
-            futures = {
-                client.submit(run_tasks, shared, *bounds(c), pure=False): c
-                for c in pending
-            }
+            futures = {client.submit(run_tasks, shared, *bounds(c), pure=False): c for c in pending}
             try:
                 for future in dask_completed(list(futures)):
                     finish(futures[future], future.result())

@@ -290,8 +290,8 @@ def _degenerate(levels, counts, totals, unit: str) -> str:
         if none.size and some.size and x[none].max() < x[some].min():
             return (
                 "the stripes separate perfectly (none up to "
-                f"{x[none].max():.4g}{_u(unit)}, all from {x[some].min():.4g}{_u(unit)}): the median "
-                "lies between them and beta cannot be estimated; add levels in between"
+                f"{x[none].max():.4g}{_u(unit)}, all from {x[some].min():.4g}{_u(unit)}): the "
+                "median lies between them and beta cannot be estimated; add levels in between"
             )
     return ""
 
