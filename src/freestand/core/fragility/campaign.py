@@ -281,7 +281,7 @@ def columns(campaign: Campaign) -> list[str]:
         "task", "record", "record_name", "level", "im", "sample", "polarity", "scale_factor",
     ]  # fmt: skip
     names += [f"input:{v.parameter.label}" for v in campaign.variations]
-    names += ["status", "message", "simulated_time"]
+    names += ["status", "message", "solver", "simulated_time"]
     for block in campaign.stack.blocks:
         names += [f"{block.name}.{q}" for q in _VALUE_NAMES]
     names += [f"outcome:{o.key}" for o in campaign.outcomes]
@@ -299,7 +299,8 @@ def run_tasks(campaign: Campaign, start: int, stop: int) -> dict[str, np.ndarray
     dict of str to numpy.ndarray
         The columns of :func:`columns`: the task's indices, the record's name,
         the IM of the scaled record, the drawn inputs (in SI, a factor for
-        ``*=``), the status and message, the simulated time [s], the per-block
+        ``*=``), the status and message, the solver path
+        (``diagnostics.method``), the simulated time [s], the per-block
         values of :data:`freestand.core.fragility.outcomes.BLOCK_VALUES` (NaN
         for failed and invalid simulations) and whether each outcome occurred.
     """
@@ -326,16 +327,20 @@ def run_tasks(campaign: Campaign, start: int, stop: int) -> dict[str, np.ndarray
             rows[f"input:{variation.parameter.label}"].append(value)
         stack, reason = sample_stack(campaign.stack, campaign.variations, drawn)
         values: dict[str, float] = {}
+        solver = ""
         if stack is None:
             status, message, simulated = "invalid", reason, math.nan
         else:
             result, status, message, simulated = simulate_task(
                 stack, campaign.motions[r], factor, polarity, campaign
             )
+            if result is not None:
+                solver = result.diagnostics.method
             if status != "failed":
                 values = block_values(result, stack)
         rows["status"].append(status)
         rows["message"].append(message)
+        rows["solver"].append(solver)
         rows["simulated_time"].append(simulated)
         for name in blocks:
             for quantity in _VALUE_NAMES:
@@ -345,7 +350,7 @@ def run_tasks(campaign: Campaign, start: int, stop: int) -> dict[str, np.ndarray
             rows[f"outcome:{outcome.key}"].append(occurred)
     out = {}
     for name in names:
-        if name in ("record_name", "status", "message"):
+        if name in ("record_name", "status", "message", "solver"):
             out[name] = np.array(rows[name], dtype=object)
         elif name.startswith("outcome:"):
             out[name] = np.array(rows[name], dtype=bool)
