@@ -22,6 +22,7 @@ from rich.text import Text
 
 from freestand.cli.common import console
 from freestand.errors import FreestandError
+from freestand.io.fragility_results import im_label
 
 _FIGURE_SUFFIXES = (".png", ".svg", ".pdf")
 
@@ -64,17 +65,6 @@ def _check_outputs(plot: Path | None) -> None:
         raise FreestandError(
             f"the folder of {str(plot)!r} does not exist; create it first", source="--plot"
         )
-
-
-def _im_label(im: dict) -> str:
-    kind = im["kind"]
-    if kind == "sa":
-        name = f"Sa({im['frequency']:g} Hz, {100 * im['damping']:g} %)"
-    elif kind == "pga-alpha":
-        name = f"PGA / (g tan alpha) of {im['block']}"
-    else:
-        name = kind.upper()
-    return f"{name} [{im['unit']}]"
 
 
 def fragility(
@@ -173,7 +163,7 @@ def fragility(
 
         title = f"{definition['model']} / {definition['configuration']}: {result.simulations} sims"
         written = save_fragility_figure(
-            plot_fragility(result, _im_label(definition["im"]), title), plot
+            plot_fragility(result, im_label(definition["im"]), title), plot
         )
     if as_json:
         typer.echo(json.dumps(document, indent=2))
@@ -183,15 +173,11 @@ def fragility(
 
 def _run(model_file, configuration, suite, im, levels, vary, samples, outcome, both_polarities,
          cloud, workers, scheduler, store, seed, free_time, chunk, quiet):  # fmt: skip
-    from freestand.core.fragility.campaign import Campaign
-    from freestand.core.fragility.outcomes import default_outcomes
     from freestand.io.campaign_runner import default_chunk_size, run_campaign
-    from freestand.io.fragility_options import parse_intensity, parse_levels, parse_outcome
+    from freestand.io.fragility_options import build_campaign
     from freestand.io.fragility_results import campaign_definition
     from freestand.io.model_file import load_model
-    from freestand.io.parameters import check_parameters, parse_variation
     from freestand.io.store import CampaignStore
-    from freestand.io.suites import load_suite
 
     if model_file is None:
         raise FreestandError("give the model file (or --from-store DIR)", source="MODEL_FILE")
@@ -210,51 +196,11 @@ def _run(model_file, configuration, suite, im, levels, vary, samples, outcome, b
     if chunk is not None and chunk < 1:
         raise FreestandError(f"{chunk}: give 1 or more", source="--chunk")
     model = load_model(model_file)
-    stack = model.configuration(configuration) if configuration else model.configurations[0]
-    measure = parse_intensity(im, stack)
-    level_values = [] if cloud else parse_levels(levels, measure, model.gravity)
-    variations = [parse_variation(text, "--vary", model.gravity) for text in vary or []]
-    check_parameters(
-        [(v.parameter, t) for v, t in zip(variations, vary or [], strict=True)], [stack], "--vary"
-    )
-    for variation, text in zip(variations, vary or [], strict=True):
-        if variation.parameter.field in ("horizontal", "vertical"):
-            raise FreestandError(
-                f"{text!r}: the excitation is set by the records and --levels; vary block "
-                "inputs only (mass, inertia, centre, base, friction)",
-                source="--vary",
-            )
-    count = samples if samples is not None else (10 if variations else 1)
-    if count < 1:
-        raise FreestandError(f"{count} samples: give 1 or more", source="--samples")
-    names = [b.name for b in stack.blocks]
-    outcomes = (
-        tuple(parse_outcome(text, names) for text in outcome)
-        if outcome
-        else default_outcomes(stack)
-    )
-    keys = [o.key for o in outcomes]
-    if len(set(keys)) != len(keys):
-        raise FreestandError(f"an outcome repeats in {keys}; give each once", source="--outcome")
-    records = load_suite(suite, gravity=model.gravity)
-    try:
-        campaign = Campaign(
-            stack=stack,
-            motions=records.motions,
-            measure=measure,
-            levels=level_values,
-            variations=tuple(variations),
-            samples=count,
-            polarities=(1, -1) if both_polarities else (1,),
-            seed=seed,
-            outcomes=outcomes,
-            gravity=model.gravity,
-            free_time=free_time,
-        )
-    except ValueError as error:
-        raise FreestandError(f"{error}", source=str(suite)) from None
-    if campaign.cloud and (campaign.record_intensity <= 0).any():
-        raise FreestandError("a record has zero intensity; remove it", source=str(suite))
+    campaign, records = build_campaign(
+        model, configuration, suite, im, levels, vary, samples, outcome, both_polarities,
+        seed, free_time,
+    )  # fmt: skip
+    outcomes = campaign.outcomes
     size = chunk or default_chunk_size(campaign)
     definition = campaign_definition(
         campaign,
@@ -293,7 +239,7 @@ def _print(document: dict, result, written) -> None:
     out.print(
         f"[bold]{escape(document['model'])}[/] / {escape(document['configuration'])}: "
         f"{document['simulations']} simulations ({escape(document['suite']['name'])}, "
-        f"{len(document['suite']['records'])} records), IM {escape(_im_label(document['im']))}"
+        f"{len(document['suite']['records'])} records), IM {escape(im_label(document['im']))}"
     )
     if document["failed"]:
         out.print(

@@ -191,3 +191,94 @@ def _is_float(text: str) -> bool:
     except ValueError:
         return False
     return True
+
+
+def build_campaign(
+    model, configuration, suite, im, levels, vary, samples, outcome, both_polarities, seed,
+    free_time, *, source: str = "",
+):  # fmt: skip
+    """The campaign of the command-line options (or of a model's ``[fragility]`` table).
+
+    Parameters
+    ----------
+    model : ModelFile
+    configuration : str or None
+        Configuration name (None: the first).
+    suite : str or Path
+        Record suite file.
+    im, levels : str
+        ``--im`` and ``--levels`` (None for a cloud analysis).
+    vary : list of str or None
+        ``--vary`` options.
+    samples : int or None
+        Samples per record and level (None: 1, or 10 with variations).
+    outcome : list of str or None
+        ``--outcome`` options (None: the configuration's defaults).
+    both_polarities : bool
+    seed : int
+    free_time : float
+        Cap on the time simulated after a record [s].
+    source : str, optional
+        Prefix of option names in messages (e.g. the model file's table).
+
+    Returns
+    -------
+    tuple
+        (Campaign, RecordSuite).
+    """
+    from freestand.core.fragility.campaign import Campaign
+    from freestand.core.fragility.outcomes import default_outcomes
+    from freestand.io.parameters import check_parameters, parse_variation
+    from freestand.io.suites import load_suite
+
+    cloud = levels is None
+    stack = model.configuration(configuration) if configuration else model.configurations[0]
+    measure = parse_intensity(im, stack, source + "--im")
+    level_values = (
+        [] if cloud else parse_levels(levels, measure, model.gravity, source + "--levels")
+    )
+    variations = [parse_variation(text, "--vary", model.gravity) for text in vary or []]
+    check_parameters(
+        [(v.parameter, t) for v, t in zip(variations, vary or [], strict=True)], [stack], "--vary"
+    )
+    for variation, text in zip(variations, vary or [], strict=True):
+        if variation.parameter.field in ("horizontal", "vertical"):
+            raise FreestandError(
+                f"{text!r}: the excitation is set by the records and --levels; vary block "
+                "inputs only (mass, inertia, centre, base, friction)",
+                source=source + "--vary",
+            )
+    count = samples if samples is not None else (10 if variations else 1)
+    if count < 1:
+        raise FreestandError(f"{count} samples: give 1 or more", source=source + "--samples")
+    names = [b.name for b in stack.blocks]
+    outcomes = (
+        tuple(parse_outcome(text, names, source + "--outcome") for text in outcome)
+        if outcome
+        else default_outcomes(stack)
+    )
+    keys = [o.key for o in outcomes]
+    if len(set(keys)) != len(keys):
+        raise FreestandError(
+            f"an outcome repeats in {keys}; give each once", source=source + "--outcome"
+        )
+    records = load_suite(suite, gravity=model.gravity)
+    try:
+        campaign = Campaign(
+            stack=stack,
+            motions=records.motions,
+            measure=measure,
+            levels=level_values,
+            variations=tuple(variations),
+            samples=count,
+            polarities=(1, -1) if both_polarities else (1,),
+            seed=seed,
+            outcomes=outcomes,
+            gravity=model.gravity,
+            free_time=free_time,
+        )
+    except ValueError as error:
+        raise FreestandError(f"{error}", source=str(suite)) from None
+    if campaign.cloud and (campaign.record_intensity <= 0).any():
+        raise FreestandError("a record has zero intensity; remove it", source=str(suite))
+    return campaign, records

@@ -152,3 +152,15 @@ def fragility_document(definition: dict, result: FragilityResult, bootstrap: int
         "versions": definition["versions"],
         "fingerprint": definition["fingerprint"],
     }
+
+
+def im_label(im: dict) -> str:
+    """Axis label of an IM document with its unit, e.g. ``"PGA [m/s^2]"``."""
+    kind = im["kind"]
+    if kind == "sa":
+        name = f"Sa({im['frequency']:g} Hz, {100 * im['damping']:g} %)"
+    elif kind == "pga-alpha":
+        name = f"PGA / (g tan alpha) of {im['block']}"
+    else:
+        name = kind.upper()
+    return f"{name} [{im['unit']}]"
