@@ -175,42 +175,54 @@ class Campaign:
         return draw_samples(self.variations, self.samples, self.sample_seed(record, level))
 
 
-def sample_stack(stack: Stack, variations, values) -> tuple[Stack | None, str]:
-    """The stack with the varied inputs applied; (None, reason) if they make no model.
+def sample_stacks(stack: Stack, variations, values) -> list[Stack | None]:
+    """The stack with the varied inputs of each sample applied (None where they make no model).
 
-    Kinetic friction follows :func:`freestand.core.batch.case_inputs`: it
-    stays at or below static friction.
+    Parameters
+    ----------
+    stack : Stack
+        Nominal model.
+    variations : sequence of Variation
+    values : sequence of numpy.ndarray
+        The K drawn values of each variation.
+
+    Notes
+    -----
+    The values act as :func:`freestand.core.batch.case_inputs` applies them
+    (set, add or scale; kinetic friction stays at or below static friction).
     """
     if not variations:
-        return stack, ""
+        return [stack] * (len(values[0]) if values else 1)
+    count = len(values[0])
     inputs = case_inputs(
-        stack,
-        0.0,
-        0.0,
-        1,
-        [(v.parameter, np.array([x])) for v, x in zip(variations, values, strict=True)],
-        1,
-    )
+        stack, 0.0, 0.0, 1, [(v.parameter, x) for v, x in zip(variations, values, strict=True)],
+        count,
+    )  # fmt: skip
     batch = inputs.stack
-    if not bool(batch.valid()[0]):
-        return None, "the sampled inputs make no model (check masses, inertias, geometry)"
-    blocks = []
-    for b, block in enumerate(stack.blocks):
-        blocks.append(
-            replace(
-                block,
-                mass=float(batch.mass[0, b]),
-                inertia=float(batch.inertia[0, b]),
-                centre=(float(batch.centre_x[0, b]), float(batch.centre_z[0, b])),
-                base_left=float(batch.base_left[0, b]),
-                base_right=float(batch.base_right[0, b]),
-                base_level=float(batch.base_level[0, b]),
-                friction=Friction(
-                    float(batch.static_friction[0, b]), float(batch.kinetic_friction[0, b])
-                ),
+    valid = batch.valid()
+    stacks: list[Stack | None] = []
+    for k in range(count):
+        if not valid[k]:
+            stacks.append(None)
+            continue
+        blocks = []
+        for b, block in enumerate(stack.blocks):
+            blocks.append(
+                replace(
+                    block,
+                    mass=float(batch.mass[k, b]),
+                    inertia=float(batch.inertia[k, b]),
+                    centre=(float(batch.centre_x[k, b]), float(batch.centre_z[k, b])),
+                    base_left=float(batch.base_left[k, b]),
+                    base_right=float(batch.base_right[k, b]),
+                    base_level=float(batch.base_level[k, b]),
+                    friction=Friction(
+                        float(batch.static_friction[k, b]), float(batch.kinetic_friction[k, b])
+                    ),
+                )
             )
-        )
-    return replace(stack, blocks=tuple(blocks)), ""
+        stacks.append(replace(stack, blocks=tuple(blocks)))
+    return stacks
 
 
 def at_rest(result, stack: Stack) -> bool:
@@ -306,14 +318,17 @@ def run_tasks(campaign: Campaign, start: int, stop: int) -> dict[str, np.ndarray
     """
     names = columns(campaign)
     rows: dict[str, list] = {name: [] for name in names}
-    cache: dict[tuple[int, int], tuple[np.ndarray, ...]] = {}
+    cache: dict[tuple[int, int], tuple] = {}
     blocks = [block.name for block in campaign.stack.blocks]
     for index in range(start, min(stop, campaign.size)):
         r, level, k, polarity = campaign.task(index)
         if (r, level) not in cache:
             cache.clear()
-            cache[(r, level)] = campaign.input_values(r, level)
-        drawn = [float(values[k]) for values in cache[(r, level)]]
+            drawn_values = campaign.input_values(r, level)
+            stacks = sample_stacks(campaign.stack, campaign.variations, drawn_values)
+            cache[(r, level)] = (drawn_values, stacks)
+        drawn_values, stacks = cache[(r, level)]
+        drawn = [float(values[k]) for values in drawn_values]
         factor = campaign.factor(r, level)
         rows["task"].append(index)
         rows["record"].append(r)
@@ -325,11 +340,12 @@ def run_tasks(campaign: Campaign, start: int, stop: int) -> dict[str, np.ndarray
         rows["scale_factor"].append(factor)
         for variation, value in zip(campaign.variations, drawn, strict=True):
             rows[f"input:{variation.parameter.label}"].append(value)
-        stack, reason = sample_stack(campaign.stack, campaign.variations, drawn)
+        stack = stacks[k]
         values: dict[str, float] = {}
         solver = ""
         if stack is None:
-            status, message, simulated = "invalid", reason, math.nan
+            status, simulated = "invalid", math.nan
+            message = "the sampled inputs make no model (check masses, inertias, geometry)"
         else:
             result, status, message, simulated = simulate_task(
                 stack, campaign.motions[r], factor, polarity, campaign
