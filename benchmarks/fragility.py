@@ -3,6 +3,9 @@
 Anchor (measured in the same run): one bare ``simulate`` call of the single
 block under one 10 s record (the single-block fast path), best of 50.
 
+A0. The same block and records up to 1.3 g tan(alpha) (rest and gentle
+   rocking, nearly every simulation on the fast path): the cost of the campaign
+   itself against the anchor, 1 and 2 workers.
 A. Single block (0.6 m x 2.0 m, tan(alpha) = 0.3, no sliding) under 50
    synthetic 10 s records (``synthetic_ground_motion``, seeds 1000...), IM
    PGA / (g tan alpha) from 0.5 to 1.5 (the fast path's range: rocking
@@ -94,6 +97,17 @@ def main(full: bool) -> None:
         best = min(best, time.perf_counter() - start)
     print(f"anchor: one simulate() of the block, 10 s record: {1e3 * best:.2f} ms "
           f"({anchor.diagnostics.method})")  # fmt: skip
+
+    # A0: gentle shaking (nearly every simulation on the fast path): the campaign's own cost
+    gentle = block_campaign(np.linspace(0.5, 1.3, 10), 2, motions)  # 2,000
+    one, rows = timed(gentle, 1)
+    two, _ = timed(gentle, 2)
+    rate1, rate2 = gentle.size / one, gentle.size / two
+    print(f"A0: {gentle.size} simulations up to 1.3 g tan(alpha): 1 worker {one:.1f} s "
+          f"({rate1:.0f} sims/s/core, {1e3 / rate1:.2f} ms per simulation = "
+          f"{1e3 / rate1 / (1e3 * best):.2f} x the anchor), 2 workers {two:.1f} s "
+          f"({rate2:.0f} sims/s, scaling x{rate2 / rate1:.2f}); projected 100,000: "
+          f"{1e5 / rate2:.0f} s; solvers {dict(Counter(rows['solver']))}")  # fmt: skip
 
     # A: fast-path range
     levels = np.linspace(0.5, 1.5, 20)
