@@ -283,16 +283,16 @@ def _degenerate(levels, counts, totals, unit: str) -> str:
         return f"occurred in every simulation ({int(n.sum())}, from {x.min():.4g}{_u(unit)})"
     order = np.argsort(x, kind="stable")
     z, n, x = z[order], n[order], x[order]
-    partial = (z > 0) & (z < n)
-    if not partial.any():
-        some = np.flatnonzero(z > 0)
-        none = np.flatnonzero(z == 0)
-        if none.size and some.size and x[none].max() < x[some].min():
-            return (
-                "the stripes separate perfectly (none up to "
-                f"{x[none].max():.4g}{_u(unit)}, all from {x[some].min():.4g}{_u(unit)}): the "
-                "median lies between them and beta cannot be estimated; add levels in between"
-            )
+    # a finite MLE needs overlap: an occurrence at some level below a level with
+    # a non-occurrence; otherwise the data are (quasi-)separated and beta -> 0
+    first_hit = x[np.flatnonzero(z > 0)[0]]
+    last_miss = x[np.flatnonzero(z < n)[-1]]
+    if not first_hit < last_miss:
+        return (
+            f"the stripes separate (no occurrence below {first_hit:.4g}{_u(unit)}, every "
+            f"simulation above {last_miss:.4g}{_u(unit)}): the median lies near there and "
+            "beta cannot be estimated; add levels or records in between"
+        )
     return ""
 
 
