@@ -6,6 +6,9 @@ block under one 10 s record (the single-block fast path), best of 50.
 A0. The same block and records up to 1.3 g tan(alpha) (rest and gentle
    rocking, nearly every simulation on the fast path): the cost of the campaign
    itself against the anchor, 1 and 2 workers.
+A1. 1,000 tasks of A0 in this process, timed one by one: the time per
+   solver path, the campaign's own overhead per simulation, and the 100,000
+   projected from the fast-path simulations alone.
 A. Single block (0.6 m x 2.0 m, tan(alpha) = 0.3, no sliding) under 50
    synthetic 10 s records (``synthetic_ground_motion``, seeds 1000...), IM
    PGA / (g tan alpha) from 0.5 to 1.5 (the fast path's range: rocking
@@ -33,7 +36,12 @@ from pathlib import Path
 
 import numpy as np
 
-from freestand.core.fragility.campaign import Campaign, run_tasks
+from freestand.core.fragility.campaign import (
+    Campaign,
+    run_tasks,
+    sample_stacks,
+    simulate_task,
+)
 from freestand.core.fragility.intensity import IntensityMeasure
 from freestand.core.fragility.outcomes import Outcome, default_outcomes
 from freestand.core.ground_motion import synthetic_ground_motion
@@ -108,6 +116,34 @@ def main(full: bool) -> None:
           f"{1e3 / rate1 / (1e3 * best):.2f} x the anchor), 2 workers {two:.1f} s "
           f"({rate2:.0f} sims/s, scaling x{rate2 / rate1:.2f}); projected 100,000: "
           f"{1e5 / rate2:.0f} s; solvers {dict(Counter(rows['solver']))}")  # fmt: skip
+
+    # A1: where the time goes, per solver path (in this process, 1,000 tasks of A0)
+    spent: dict[str, list[float]] = {}
+    start = time.perf_counter()
+    stacks: dict[tuple[int, int], list] = {}
+    for index in range(1000):
+        r, level, k, polarity = gentle.task(index)
+        if (r, level) not in stacks:
+            values = gentle.input_values(r, level)
+            stacks[(r, level)] = sample_stacks(gentle.stack, gentle.variations, values)
+        start_one = time.perf_counter()
+        result, _, _, _ = simulate_task(
+            stacks[(r, level)][k], gentle.motions[r], gentle.factor(r, level), polarity, gentle
+        )
+        spent.setdefault(result.diagnostics.method, []).append(time.perf_counter() - start_one)
+    loop = time.perf_counter() - start
+    start = time.perf_counter()
+    run_tasks(gentle, 0, 1000)
+    whole = time.perf_counter() - start
+    simulated = sum(sum(v) for v in spent.values())
+    fast = [t for m, v in spent.items() if m != "general" for t in v]
+    print("A1: per solver path: " + ", ".join(
+        f"{m} {len(v)} x {1e3 * np.mean(v):.2f} ms" for m, v in sorted(spent.items())))  # fmt: skip
+    overhead = (whole - simulated) / 1000
+    print(f"    campaign overhead (sampling, rows, outcomes) {1e3 * overhead:.2f} "
+          f"ms per simulation (loop of simulate_task {loop:.1f} s, run_tasks {whole:.1f} s); "
+          f"fast-path simulations alone: {1e3 * np.mean(fast):.2f} ms each -> 100,000 on 2 "
+          f"workers ~{1e5 * (np.mean(fast) + overhead) / 2:.0f} s")  # fmt: skip
 
     # A: fast-path range
     levels = np.linspace(0.5, 1.5, 20)

@@ -215,16 +215,26 @@ def _run(model_file, configuration, suite, im, levels, vary, samples, outcome, b
     if store is not None:
         target = CampaignStore(store)
         target.open(definition)
-    with _progress(quiet) as bar:
-        task = bar.add_task("simulating", total=campaign.size)
-        rows = run_campaign(
-            campaign,
-            chunk_size=size,
-            workers=workers,
-            scheduler=scheduler,
-            store=target,
-            progress=lambda n: bar.advance(task, n),
+    try:
+        with _progress(quiet) as bar:
+            task = bar.add_task("simulating", total=campaign.size)
+            rows = run_campaign(
+                campaign,
+                chunk_size=size,
+                workers=workers,
+                scheduler=scheduler,
+                store=target,
+                progress=lambda n: bar.advance(task, n),
+            )
+    except KeyboardInterrupt:
+        kept = (
+            f"{len(target.chunks())} chunk(s) of {size} simulations are in {store}; run the "
+            "same command again to resume"
+            if target is not None
+            else "nothing was kept (give --store DIR to keep finished simulations)"
         )
+        console().print(f"[yellow]interrupted:[/] {escape(kept)}")
+        raise typer.Exit(130) from None
     return definition, rows, outcomes
 
 
@@ -268,8 +278,11 @@ def _print(document: dict, result, written) -> None:
                 _fmt(item["hclpf"]), "",
             )  # fmt: skip
         else:
-            summary.add_row(item["name"], "-", "-", "-", "-", "-", escape(item["reason"] or ""))
+            summary.add_row(item["name"], "-", "-", "-", "-", "-", "not fitted (below)")
     out.print(summary)
+    for item in document["outcomes"]:
+        if not item["fitted"]:
+            out.print(f"  {escape(item['name'])}: not fitted, {escape(item['reason'] or '')}")
     conf = 100 * document["fit"]["confidence"]
     for item in document["outcomes"]:
         table = Table(title=f"{item['name']}: counts per level", title_justify="left")

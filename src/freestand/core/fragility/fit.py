@@ -289,9 +289,9 @@ def _degenerate(levels, counts, totals, unit: str) -> str:
     last_miss = x[np.flatnonzero(z < n)[-1]]
     if not first_hit < last_miss:
         return (
-            f"the stripes separate (no occurrence below {first_hit:.4g}{_u(unit)}, every "
-            f"simulation above {last_miss:.4g}{_u(unit)}): the median lies near there and "
-            "beta cannot be estimated; add levels or records in between"
+            f"the stripes separate (it occurs at no level below {first_hit:.4g}{_u(unit)} "
+            f"and in every simulation above {last_miss:.4g}{_u(unit)}): the median lies "
+            "there and beta cannot be estimated; add levels or records in between"
         )
     return ""
 
