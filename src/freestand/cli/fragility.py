@@ -77,7 +77,9 @@ def fragility(
         "pga", "--im", help="Intensity measure: pga, pgv, sa:F[,DAMPING], pga-alpha[:BLOCK]."
     ),
     levels: str = typer.Option(
-        None, "--levels", help="IM levels A:B:N (SI, or with units, e.g. 0.05g:1g:20) or a list."
+        None,
+        "--levels",
+        help="IM levels LOW:HIGH:N (SI, or with units, e.g. 0.05g:1g:20) or a list.",
     ),
     vary: list[str] = typer.Option(
         None, "--vary", help="Uncertain input NAME=DISTRIBUTION (as for sample), repeatable."
