@@ -273,7 +273,7 @@ def simulate_task(
             method=campaign.method,
             gravity=campaign.gravity,
         )
-    except (ValueError, ArithmeticError, RuntimeError) as error:
+    except Exception as error:  # noqa: BLE001 - any solver error is one failed simulation
         return None, "failed", f"{type(error).__name__}: {error}", math.nan
     if result.status != "completed":
         return result, "failed", result.message, float(result.time[-1])
