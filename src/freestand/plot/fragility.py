@@ -24,7 +24,8 @@ def plot_fragility(result: FragilityResult, im_label: str, title: str = "") -> F
     -------
     matplotlib.figure.Figure
         Lines labelled ``"<outcome>: median ..., beta ..."`` (fitted) and
-        markers ``"<outcome>: fractions"`` with Wilson intervals as error bars;
+        markers ``"<outcome>: fractions"`` with Wilson intervals as error bars
+        (outcomes drawn slightly apart at each level so that none hides another);
         outcomes not fitted are named in the legend with the words "not fitted".
     """
     fig = Figure(figsize=(7.5, 5.0), layout="constrained")
@@ -46,7 +47,9 @@ def plot_fragility(result: FragilityResult, im_label: str, title: str = "") -> F
         else:
             fraction = f.fraction[used]
             err = np.vstack([fraction - f.fraction_low[used], f.fraction_high[used] - fraction])
-            ax.errorbar(f.levels[used], fraction, yerr=err, fmt="o", ms=4, capsize=2,
+            # outcomes side by side at each level (markers drawn 0.8 % of the axis apart)
+            dodge = (number - 0.5 * (len(result.outcomes) - 1)) * 0.008 * x[-1]
+            ax.errorbar(f.levels[used] + dodge, fraction, yerr=err, fmt="o", ms=4, capsize=2,
                         color=colour, label=f"{name}: fractions")  # fmt: skip
         if f.fitted:
             ax.plot(x, f.probability(x), "-", color=colour,
@@ -60,7 +63,7 @@ def plot_fragility(result: FragilityResult, im_label: str, title: str = "") -> F
     ax.set_ylabel("probability [-]")
     ax.set_ylim(-0.02, 1.02)
     ax.set_xlim(0.0, x[-1])
-    ax.legend(fontsize=7, loc="lower right")
+    ax.legend(fontsize=7, loc="best")
     if title:
         ax.set_title(title, fontsize=10)
     return fig
