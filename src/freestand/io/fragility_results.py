@@ -73,6 +73,7 @@ def campaign_definition(
         "method": campaign.method,
         "gravity": campaign.gravity,
         "chunk_size": chunk_size,
+        "freestand": _versions()["freestand"],
     }
     fingerprint = hashlib.sha256(json.dumps(defining, sort_keys=True).encode()).hexdigest()
     return {
