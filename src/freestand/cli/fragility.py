@@ -169,8 +169,11 @@ def fragility(
         )
     if as_json:
         typer.echo(json.dumps(document, indent=2))
-        return
-    _print(document, result, written)
+    else:
+        _print(document, result, written)
+    if result.simulations and result.failed == result.simulations:
+        console().print("[bold red]every simulation failed or was invalid[/]: nothing to fit")
+        raise typer.Exit(1)
 
 
 def _run(model_file, configuration, suite, im, levels, vary, samples, outcome, both_polarities,
