@@ -172,7 +172,11 @@ def fragility(
     else:
         _print(document, result, written)
     if result.simulations and result.failed == result.simulations:
-        console().print("[bold red]every simulation failed or was invalid[/]: nothing to fit")
+        from rich.console import Console
+
+        Console(stderr=True).print(
+            "[bold red]error:[/] every simulation failed or was invalid; nothing to fit"
+        )
         raise typer.Exit(1)
 
 
