@@ -142,3 +142,19 @@ def test_crane_defaults_name_every_block():
     assert "overturn:bridge" in keys and "overturn:cart" in keys
     assert "flight:cart" in keys and "slide:cart>0.01m" in keys
     assert not any(k.startswith("slide:bridge") for k in keys)  # the bridge cannot slide
+
+
+def test_every_simulation_invalid_exits_1(files, capsys, monkeypatch):
+    """Sampled inputs that make no model are counted, and a campaign of nothing else fails."""
+    from freestand.cli import main
+
+    monkeypatch.chdir(files)
+    status = main(["fragility", "block.toml", "--suite", "suite.toml", "--levels", "3:6:2",
+                   "--vary", "block.mass=uniform(-2,-1)", "--samples", "2", "--workers", "1",
+                   "--json"])  # fmt: skip
+    captured = capsys.readouterr()
+    assert status == 1
+    document = json.loads(captured.out)
+    assert document["failed"] == document["simulations"] == 16
+    assert document["statuses"] == {"invalid": 16}
+    assert "every simulation failed" in captured.err
