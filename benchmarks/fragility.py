@@ -117,9 +117,10 @@ def main(full: bool) -> None:
           f"({rate2:.0f} sims/s, scaling x{rate2 / rate1:.2f}); projected 100,000: "
           f"{1e5 / rate2:.0f} s; solvers {dict(Counter(rows['solver']))}")  # fmt: skip
 
-    # A1: where the time goes, per solver path (in this process, 1,000 tasks of A0)
+    # A1: where the time goes, per solver path (in this process, 1,000 tasks of A0): each
+    # task timed alone through run_tasks (sampling, simulation, row) and its simulation alone
     spent: dict[str, list[float]] = {}
-    start = time.perf_counter()
+    overheads = []
     stacks: dict[tuple[int, int], list] = {}
     for index in range(1000):
         r, level, k, polarity = gentle.task(index)
@@ -130,20 +131,20 @@ def main(full: bool) -> None:
         result, _, _, _ = simulate_task(
             stacks[(r, level)][k], gentle.motions[r], gentle.factor(r, level), polarity, gentle
         )
-        spent.setdefault(result.diagnostics.method, []).append(time.perf_counter() - start_one)
-    loop = time.perf_counter() - start
-    start = time.perf_counter()
-    run_tasks(gentle, 0, 1000)
-    whole = time.perf_counter() - start
-    simulated = sum(sum(v) for v in spent.values())
+        alone = time.perf_counter() - start_one
+        spent.setdefault(result.diagnostics.method, []).append(alone)
+        if result.diagnostics.method != "general":
+            start_one = time.perf_counter()
+            run_tasks(gentle, index, index + 1)
+            overheads.append(time.perf_counter() - start_one - alone)
     fast = [t for m, v in spent.items() if m != "general" for t in v]
+    overhead = float(np.median(overheads))
     print("A1: per solver path: " + ", ".join(
         f"{m} {len(v)} x {1e3 * np.mean(v):.2f} ms" for m, v in sorted(spent.items())))  # fmt: skip
-    overhead = (whole - simulated) / 1000
-    print(f"    campaign overhead (sampling, rows, outcomes) {1e3 * overhead:.2f} "
-          f"ms per simulation (loop of simulate_task {loop:.1f} s, run_tasks {whole:.1f} s); "
-          f"fast-path simulations alone: {1e3 * np.mean(fast):.2f} ms each -> 100,000 on 2 "
-          f"workers ~{1e5 * (np.mean(fast) + overhead) / 2:.0f} s")  # fmt: skip
+    print(f"    campaign overhead per simulation (sampling, rest check, row; median over the "
+          f"fast-path tasks) {1e3 * overhead:.2f} ms; fast-path simulations alone "
+          f"{1e3 * np.mean(fast):.2f} ms each -> 100,000 on 2 free workers "
+          f"~{1e5 * (np.mean(fast) + overhead) / 2:.0f} s")  # fmt: skip
 
     # A: fast-path range
     levels = np.linspace(0.5, 1.5, 20)
