@@ -24,7 +24,7 @@ app = typer.Typer(
 
 
 def _register() -> None:
-    from freestand.cli import frequency, maps, overturn, report, screen, simulate
+    from freestand.cli import fragility, frequency, maps, overturn, report, screen, simulate
 
     screen.register(app)
     frequency.register(app)
@@ -32,6 +32,7 @@ def _register() -> None:
     overturn.register(app)
     simulate.register(app)
     report.register(app)
+    fragility.register(app)
 
 
 _register()
@@ -40,7 +41,8 @@ _register()
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; return the exit status."""
     try:
-        app(args=argv, prog_name="freestand", standalone_mode=False)
+        # without standalone mode click returns a typer.Exit's code instead of raising it
+        status = app(args=argv, prog_name="freestand", standalone_mode=False)
     except FreestandError as error:
         from rich.console import Console
         from rich.markup import escape
@@ -62,7 +64,7 @@ def main(argv: list[str] | None = None) -> int:
         if isinstance(error, click.exceptions.Abort):
             return 1
         raise
-    return 0
+    return status if isinstance(status, int) else 0
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -53,6 +53,9 @@ class ModelFile:
     beam : BeamSection or None
         The ``[beam]`` table: the bridge as a simply supported beam and the
         cart's parking range (paper section 6).
+    fragility : dict or None
+        The ``[fragility]`` table as written (a fragility campaign for the
+        report; read by :func:`freestand.io.fragility_options.fragility_table`).
     """
 
     name: str
@@ -64,6 +67,7 @@ class ModelFile:
     base_dir: Path = field(default_factory=Path.cwd)
     spectra: dict = field(default_factory=dict)
     beam: BeamSection | None = None
+    fragility: dict | None = None
 
     def spectrum(self, direction: str) -> Spectrum | None:
         """The model's first spectrum for ``direction`` ("horizontal"/"vertical"), if any."""
@@ -326,6 +330,7 @@ class _ModelSpec(_Strict):
     configuration: list[_ConfigurationSpec]
     spectrum: list[dict] | None = None
     beam: dict | None = None
+    fragility: dict | None = None
 
     @model_validator(mode="after")
     def _unique(self):
@@ -564,6 +569,7 @@ def load_model_text(
         base_dir=base_dir,
         spectra=spectra,
         beam=beam,
+        fragility=spec.fragility,
     )
 
 
@@ -606,4 +612,5 @@ def load_model(path: str | Path) -> ModelFile:
         base_dir=model.base_dir,
         spectra=model.spectra,
         beam=model.beam,
+        fragility=model.fragility,
     )

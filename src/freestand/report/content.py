@@ -185,6 +185,9 @@ class ReportContent:
         When the model has a ``[beam]`` section.
     summary : tuple of str
         Conclusions in the engineer's terms, one sentence (or short paragraph) each.
+    fragility : FragilitySection or None
+        When the model file has a ``[fragility]`` table
+        (:mod:`freestand.report.fragility`).
     """
 
     model: ModelFile
@@ -197,6 +200,7 @@ class ReportContent:
     skipped: tuple[SkippedBlock, ...]
     frequency: FrequencyAssessment | None
     summary: tuple[str, ...]
+    fragility: object | None = None
 
     @property
     def flagged(self) -> tuple[InitialMotion, ...]:
@@ -602,4 +606,15 @@ def collect_report(
         skipped=tuple(skipped),
         frequency=frequency,
         summary=summary_sentences(model, cases, overturning, tuple(skipped), frequency),
+        fragility=_fragility(model, tell, total),
     )
+
+
+def _fragility(model: ModelFile, tell, total: int):
+    """The ``[fragility]`` campaign of the model, if it names one."""
+    if not model.fragility:
+        return None
+    from freestand.report.fragility import assess_fragility
+
+    tell("fragility campaign of the [fragility] table", total, total + 1)
+    return assess_fragility(model)

@@ -255,6 +255,8 @@ def _nav(content: ReportContent) -> str:
     if content.frequency is not None:
         items.append(("frequency", "Vertical frequency and jump check"))
     items += [("method", "Method, assumptions and limits"), ("references", "References")]
+    if content.fragility is not None:
+        items.append(("fragility", "Appendix A: fragility campaign"))
     links = "".join(f'<li><a href="#{key}">{title}</a></li>' for key, title in items)
     return f"<nav><b>Contents</b><ol>{links}</ol></nav>"
 
@@ -1019,6 +1021,10 @@ def render_html(content: ReportContent) -> str:
         body.append(_frequency(doc, content.frequency))
     last = 6 if content.frequency is not None else 5
     body += [_method(content), _references(last + 1)]
+    if content.fragility is not None:
+        from freestand.report.fragility import fragility_html
+
+        body.append(fragility_html(doc, content.fragility))
     title = f"Seismic screening report: {content.model.name}"
     return (
         "<!DOCTYPE html>\n"

@@ -1,0 +1,377 @@
+"""The simulations of a fragility campaign: records x levels x samples x polarities.
+
+Every task is one time-history simulation (:func:`freestand.core.timehistory.simulate`)
+of the stack, with its uncertain inputs drawn for that task, under one record
+scaled to one intensity level (or unscaled, for a cloud analysis), in one
+polarity (the sign of a horizontal record is arbitrary).
+
+Determinism: the inputs of sample k at record r and level l are drawn by
+:func:`freestand.core.sampling.draw_samples` with a seed derived from
+``numpy.random.SeedSequence(seed, spawn_key=(r, l))``; both polarities use
+the same inputs (common random numbers). Every task is thus a pure function
+of the campaign and its index, and the results do not depend on how the
+tasks are spread over workers or machines.
+
+After the record: a block can overturn in free rocking after the shaking has
+stopped, so every simulation goes on until the stack is back at rest or
+every block has overturned. The record is simulated first; when the stack is
+then still moving and not every block has overturned, the simulation is run
+again to ``record end + free_time`` (the cap, 10 s by default) and judged at
+its end (status ``"capped"`` when still moving there). At rest means every
+remaining block's velocities below :data:`REST_VELOCITY` and its rotation
+relative to the body below under :data:`REST_ROTATION`.
+
+Statuses: ``"completed"``, ``"capped"`` (moving at the cap; its peaks are
+those reached by then), ``"failed"`` (the solver failed; the message says
+why) and ``"invalid"`` (the sampled inputs make no model, e.g. a negative
+mass). Failed and invalid simulations are recorded and counted, and left out
+of the fits.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from freestand.core.batch import case_inputs
+from freestand.core.fragility.intensity import IntensityMeasure, intensity, scale_factor
+from freestand.core.fragility.outcomes import Outcome, block_values
+from freestand.core.ground_motion import GroundMotion
+from freestand.core.model import Friction, Stack
+from freestand.core.sampling import Variation, draw_samples
+from freestand.core.screening import GRAVITY
+
+#: A block is at rest when its centre's speed and ``|omega| * base width`` are
+#: below this [m/s] (1 mm/s) ...
+REST_VELOCITY = 1e-3
+#: ... and its rotation relative to the body below is below this [rad] (a residual
+#: rocking of 1 mrad cannot lead to any outcome).
+REST_ROTATION = 1e-3
+#: Default time simulated after the end of a record, at most [s].
+FREE_TIME = 10.0
+
+STATUSES = ("completed", "capped", "failed", "invalid")
+
+
+@dataclass(frozen=True)
+class Campaign:
+    """Everything that defines the simulations of a fragility campaign.
+
+    Parameters
+    ----------
+    stack : Stack
+        The configuration with its nominal inputs.
+    motions : tuple of GroundMotion
+        The records.
+    measure : IntensityMeasure
+    levels : numpy.ndarray
+        IM levels of the stripes [IM unit], increasing; empty for a cloud.
+    variations : tuple of Variation
+        Uncertain inputs (block fields only).
+    samples : int
+        K samples per record and level (1 without variations).
+    polarities : tuple of int
+        (+1,) or (+1, -1).
+    seed : int
+        Seed of the input samples.
+    outcomes : tuple of Outcome
+    gravity : float
+        g [m/s^2].
+    free_time : float
+        Cap on the time simulated after the end of a record [s].
+    method : str
+        Solver choice of :func:`~freestand.core.timehistory.simulate`.
+    record_intensity : numpy.ndarray
+        IM of each record as given [IM unit] (computed when omitted).
+    """
+
+    stack: Stack
+    motions: tuple[GroundMotion, ...] = field(repr=False)
+    measure: IntensityMeasure
+    levels: np.ndarray
+    variations: tuple[Variation, ...] = ()
+    samples: int = 1
+    polarities: tuple[int, ...] = (1,)
+    seed: int = 0
+    outcomes: tuple[Outcome, ...] = ()
+    gravity: float = GRAVITY
+    free_time: float = FREE_TIME
+    method: str = "auto"
+    record_intensity: np.ndarray | None = None
+
+    def __post_init__(self) -> None:
+        levels = np.asarray(self.levels, dtype=float).ravel()
+        object.__setattr__(self, "levels", levels)
+        if not self.motions:
+            raise ValueError("a campaign needs at least one record")
+        if levels.size and (np.any(~(levels > 0)) or np.any(np.diff(levels) <= 0)):
+            raise ValueError("levels must be positive and increasing")
+        if self.samples < 1:
+            raise ValueError(f"samples must be >= 1, not {self.samples}")
+        if not self.polarities or any(p not in (1, -1) for p in self.polarities):
+            raise ValueError("polarities must be +1 and/or -1")
+        if not (self.free_time >= 0 and math.isfinite(self.free_time)):
+            raise ValueError(f"free_time must be >= 0, not {self.free_time!r}")
+        for variation in self.variations:
+            if variation.parameter.block is None and variation.parameter.field in (
+                "horizontal",
+                "vertical",
+            ):
+                raise ValueError(
+                    f"{variation.parameter.name} cannot be varied: the records and the "
+                    "levels set the excitation"
+                )
+        if self.record_intensity is None:
+            values = [intensity(m, self.measure, self.stack, self.gravity) for m in self.motions]
+            object.__setattr__(self, "record_intensity", np.array(values, dtype=float))
+        else:
+            object.__setattr__(
+                self, "record_intensity", np.asarray(self.record_intensity, dtype=float)
+            )
+
+    @property
+    def cloud(self) -> bool:
+        """Whether the records run unscaled (cloud analysis)."""
+        return self.levels.size == 0
+
+    @property
+    def level_count(self) -> int:
+        """Stripes (1 for a cloud)."""
+        return 1 if self.cloud else int(self.levels.size)
+
+    @property
+    def size(self) -> int:
+        """Number of simulations."""
+        return len(self.motions) * self.level_count * self.samples * len(self.polarities)
+
+    def task(self, index: int) -> tuple[int, int, int, int]:
+        """(record, level, sample, polarity) of task ``index``."""
+        rest, p = divmod(int(index), len(self.polarities))
+        rest, k = divmod(rest, self.samples)
+        r, level = divmod(rest, self.level_count)
+        return r, level, k, self.polarities[p]
+
+    def factor(self, record: int, level: int) -> float:
+        """Scale factor [-] of a record at a level (1 for a cloud)."""
+        if self.cloud:
+            return 1.0
+        return scale_factor(float(self.record_intensity[record]), float(self.levels[level]))
+
+    def level_value(self, record: int, level: int) -> float:
+        """IM of the scaled record [IM unit]."""
+        if self.cloud:
+            return float(self.record_intensity[record])
+        return float(self.levels[level])
+
+    def sample_seed(self, record: int, level: int) -> int:
+        """Seed of the input samples of one record and level."""
+        words = np.random.SeedSequence(self.seed, spawn_key=(record, level)).generate_state(2)
+        return int(words[0]) | (int(words[1]) << 32)
+
+    def input_values(self, record: int, level: int) -> tuple[np.ndarray, ...]:
+        """The K drawn values of every variation at one record and level."""
+        return draw_samples(self.variations, self.samples, self.sample_seed(record, level))
+
+
+def sample_stacks(stack: Stack, variations, values) -> list[Stack | None]:
+    """The stack with the varied inputs of each sample applied (None where they make no model).
+
+    Parameters
+    ----------
+    stack : Stack
+        Nominal model.
+    variations : sequence of Variation
+    values : sequence of numpy.ndarray
+        The K drawn values of each variation.
+
+    Notes
+    -----
+    The values act as :func:`freestand.core.batch.case_inputs` applies them
+    (set, add or scale; kinetic friction stays at or below static friction).
+    """
+    if not variations:
+        return [stack] * (len(values[0]) if values else 1)
+    count = len(values[0])
+    inputs = case_inputs(
+        stack, 0.0, 0.0, 1, [(v.parameter, x) for v, x in zip(variations, values, strict=True)],
+        count,
+    )  # fmt: skip
+    batch = inputs.stack
+    valid = batch.valid()
+    stacks: list[Stack | None] = []
+    for k in range(count):
+        if not valid[k]:
+            stacks.append(None)
+            continue
+        blocks = []
+        for b, block in enumerate(stack.blocks):
+            blocks.append(
+                replace(
+                    block,
+                    mass=float(batch.mass[k, b]),
+                    inertia=float(batch.inertia[k, b]),
+                    centre=(float(batch.centre_x[k, b]), float(batch.centre_z[k, b])),
+                    base_left=float(batch.base_left[k, b]),
+                    base_right=float(batch.base_right[k, b]),
+                    base_level=float(batch.base_level[k, b]),
+                    friction=Friction(
+                        float(batch.static_friction[k, b]), float(batch.kinetic_friction[k, b])
+                    ),
+                )
+            )
+        stacks.append(replace(stack, blocks=tuple(blocks)))
+    return stacks
+
+
+def at_rest(result, stack: Stack) -> bool:
+    """Whether every block not overturned is at rest at the end of a result."""
+    velocity = result.velocity[-1]
+    rotation = result.relative_rotation[-1]
+    for b, block in enumerate(stack.blocks):
+        if result.overturned[b]:
+            continue
+        width = block.base_right - block.base_left
+        vx, vz, omega = (float(v) for v in velocity[b])
+        if not all(math.isfinite(v) for v in (vx, vz, omega)):
+            return False
+        if max(abs(vx), abs(vz), abs(omega) * width) > REST_VELOCITY:
+            return False
+        if abs(float(rotation[b])) > REST_ROTATION:
+            return False
+    return True
+
+
+def simulate_task(
+    stack: Stack, motion: GroundMotion, factor: float, polarity: int, campaign: Campaign
+):
+    """Simulate one task; (result or None, status, message, simulated time [s]).
+
+    The record (times ``factor``, its horizontal component times
+    ``polarity``) is simulated; if the stack is still moving at its end,
+    again to ``free_time`` after it (see the module notes).
+    """
+    from freestand.core.timehistory import SupportMotion, simulate
+
+    horizontal = np.asarray(motion.horizontal) * (factor * polarity)
+    vertical = None if motion.vertical is None else np.asarray(motion.vertical) * factor
+    support = SupportMotion(motion.dt, horizontal, vertical)
+    end = support.duration
+    try:
+        result = simulate(stack, support, None, method=campaign.method, gravity=campaign.gravity)
+        if result.status != "completed":
+            return result, "failed", result.message, float(result.time[-1])
+        if result.overturned.all() or at_rest(result, stack):
+            return result, "completed", "", float(result.time[-1])
+        if campaign.free_time <= 0:
+            return result, "capped", "moving at the end of the record", end
+        result = simulate(
+            stack,
+            support,
+            end + campaign.free_time,
+            method=campaign.method,
+            gravity=campaign.gravity,
+        )
+    except Exception as error:  # noqa: BLE001 - any solver error is one failed simulation
+        return None, "failed", f"{type(error).__name__}: {error}", math.nan
+    if result.status != "completed":
+        return result, "failed", result.message, float(result.time[-1])
+    if result.overturned.all() or at_rest(result, stack):
+        return result, "completed", "", float(result.time[-1])
+    return (
+        result,
+        "capped",
+        f"still moving {campaign.free_time:g} s after the record",
+        float(result.time[-1]),
+    )
+
+
+def columns(campaign: Campaign) -> list[str]:
+    """Column names of the rows of :func:`run_tasks`, in order."""
+    names = [
+        "task", "record", "record_name", "level", "im", "sample", "polarity", "scale_factor",
+    ]  # fmt: skip
+    names += [f"input:{v.parameter.label}" for v in campaign.variations]
+    names += ["status", "message", "solver", "simulated_time"]
+    for block in campaign.stack.blocks:
+        names += [f"{block.name}.{q}" for q in _VALUE_NAMES]
+    names += [f"outcome:{o.key}" for o in campaign.outcomes]
+    return names
+
+
+_VALUE_NAMES = ("overturned", "max_rotation", "max_slide", "uplift", "flight", "alpha")
+
+
+def run_tasks(campaign: Campaign, start: int, stop: int) -> dict[str, np.ndarray]:
+    """Run tasks ``start`` to ``stop - 1``; one row per simulation.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        The columns of :func:`columns`: the task's indices, the record's name,
+        the IM of the scaled record, the drawn inputs (in SI, a factor for
+        ``*=``), the status and message, the solver path
+        (``diagnostics.method``), the simulated time [s], the per-block
+        values of :data:`freestand.core.fragility.outcomes.BLOCK_VALUES` (NaN
+        for failed and invalid simulations) and whether each outcome occurred.
+    """
+    names = columns(campaign)
+    rows: dict[str, list] = {name: [] for name in names}
+    cache: dict[tuple[int, int], tuple] = {}
+    blocks = [block.name for block in campaign.stack.blocks]
+    for index in range(start, min(stop, campaign.size)):
+        r, level, k, polarity = campaign.task(index)
+        if (r, level) not in cache:
+            cache.clear()
+            drawn_values = campaign.input_values(r, level)
+            stacks = sample_stacks(campaign.stack, campaign.variations, drawn_values)
+            cache[(r, level)] = (drawn_values, stacks)
+        drawn_values, stacks = cache[(r, level)]
+        drawn = [float(values[k]) for values in drawn_values]
+        factor = campaign.factor(r, level)
+        rows["task"].append(index)
+        rows["record"].append(r)
+        rows["record_name"].append(campaign.motions[r].name or f"record {r + 1}")
+        rows["level"].append(level)
+        rows["im"].append(campaign.level_value(r, level))
+        rows["sample"].append(k)
+        rows["polarity"].append(polarity)
+        rows["scale_factor"].append(factor)
+        for variation, value in zip(campaign.variations, drawn, strict=True):
+            rows[f"input:{variation.parameter.label}"].append(value)
+        stack = stacks[k]
+        values: dict[str, float] = {}
+        solver = ""
+        if stack is None:
+            status, simulated = "invalid", math.nan
+            message = "the sampled inputs make no model (check masses, inertias, geometry)"
+        else:
+            result, status, message, simulated = simulate_task(
+                stack, campaign.motions[r], factor, polarity, campaign
+            )
+            if result is not None:
+                solver = result.diagnostics.method
+            if status != "failed":
+                values = block_values(result, stack)
+        rows["status"].append(status)
+        rows["message"].append(message)
+        rows["solver"].append(solver)
+        rows["simulated_time"].append(simulated)
+        for name in blocks:
+            for quantity in _VALUE_NAMES:
+                rows[f"{name}.{quantity}"].append(values.get(f"{name}.{quantity}", math.nan))
+        for outcome in campaign.outcomes:
+            occurred = bool(outcome.occurred(values)[()]) if values else False
+            rows[f"outcome:{outcome.key}"].append(occurred)
+    out = {}
+    for name in names:
+        if name in ("record_name", "status", "message", "solver"):
+            out[name] = np.array(rows[name], dtype=object)
+        elif name.startswith("outcome:"):
+            out[name] = np.array(rows[name], dtype=bool)
+        elif name in ("task", "record", "level", "sample", "polarity"):
+            out[name] = np.array(rows[name], dtype=np.int64)
+        else:
+            out[name] = np.array(rows[name], dtype=float)
+    return out

@@ -1,0 +1,284 @@
+"""Reading the options of a fragility campaign: intensity measure, levels, outcomes.
+
+Syntax::
+
+    --im pga | pgv | sa:2.5[,5%] | sa:2.5Hz,0.02 | pga-alpha[:BLOCK]
+    --levels 0.5:10:20           20 levels from 0.5 to 10 (IM unit, or with units:
+                                 0.05g:1g:20), or a list 1,2,4,8
+    --outcome overturn:cart | rotation:cart>0.5alpha | rotation:cart>0.1rad
+              | slide:cart>0.05m | slide:cart>5cm | uplift:bridge | flight:cart
+
+Every problem raises :class:`freestand.errors.FreestandError` naming the
+option, the value and the fix.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+
+from freestand.core.fragility.intensity import KINDS, IntensityMeasure
+from freestand.core.fragility.outcomes import KINDS as OUTCOME_KINDS
+from freestand.core.fragility.outcomes import Outcome
+from freestand.core.model import Stack
+from freestand.errors import FreestandError
+from freestand.io.units import to_si
+
+_QUANTITY = {"m/s^2": "acceleration", "-": "dimensionless"}
+
+
+def parse_intensity(text: str, stack: Stack, option: str = "--im") -> IntensityMeasure:
+    """Read ``pga``, ``pgv``, ``sa:F[,DAMPING]`` or ``pga-alpha[:BLOCK]``."""
+    kind, _, rest = text.strip().partition(":")
+    kind = kind.strip().lower()
+    if kind not in KINDS:
+        raise FreestandError(
+            f"{text!r} is not an intensity measure; use pga, pgv, sa:FREQUENCY[,DAMPING] "
+            "(e.g. sa:2.5Hz,5%) or pga-alpha[:BLOCK]",
+            source=option,
+        )
+    if kind == "sa":
+        if not rest.strip():
+            raise FreestandError(
+                f"{text!r} needs a frequency; e.g. sa:2.5Hz or sa:2.5,5%", source=option
+            )
+        from freestand.io.records import parse_spectral_target
+
+        target = parse_spectral_target(f"1@{rest}", source=option)
+        return IntensityMeasure("sa", frequency=target.frequency, damping=target.damping)
+    if kind == "pga-alpha":
+        block = rest.strip() or stack.blocks[-1].name
+        names = [b.name for b in stack.blocks]
+        if block not in names:
+            raise FreestandError(
+                f"configuration {stack.name!r} has no block {block!r}; its blocks are "
+                f"{', '.join(names)}",
+                source=option,
+            )
+        return IntensityMeasure("pga-alpha", block=block)
+    if rest.strip():
+        raise FreestandError(f"{kind} takes no argument, not {rest!r}", source=option)
+    return IntensityMeasure(kind)
+
+
+def _level(text: str, unit: str, option: str, gravity: float) -> float:
+    text = text.strip()
+    try:
+        return float(text)
+    except ValueError:
+        pass
+    if unit == "-":
+        raise FreestandError(f"{text!r} is not a number (the IM is dimensionless)", source=option)
+    if unit == "m/s":
+        return _pint(text, "m/s", option)
+    return to_si(text, _QUANTITY[unit], field="level", source=option, gravity=gravity)
+
+
+def _pint(text: str, unit: str, option: str) -> float:
+    """``text`` with a unit (e.g. ``"30 cm/s"``, ``"5 deg"``) in ``unit``."""
+    import pint
+
+    try:
+        return float(pint.UnitRegistry().Quantity(text).to(unit).magnitude)
+    except (pint.errors.PintError, ValueError, TypeError, AttributeError):
+        raise FreestandError(
+            f"{text!r} is not a value in {unit} (or with a unit such as cm/s, deg)", source=option
+        ) from None
+
+
+def parse_levels(
+    text: str, measure: IntensityMeasure, gravity: float = 9.81, option: str = "--levels"
+) -> np.ndarray:
+    """Read ``A:B:N`` (N levels evenly from A to B) or a list ``x1,x2,...`` [IM unit, SI]."""
+    parts = text.split(":")
+    if len(parts) == 3:
+        try:
+            count = int(parts[2])
+        except ValueError:
+            raise FreestandError(
+                f"{parts[2]!r} is not a number of levels; write A:B:N, e.g. 0.5:10:20",
+                source=option,
+            ) from None
+        start = _level(parts[0], measure.unit, option, gravity)
+        stop = _level(parts[1], measure.unit, option, gravity)
+        if count < 2 or count > 1000:
+            raise FreestandError(f"{count} levels: give 2 to 1000", source=option)
+        levels = np.linspace(start, stop, count)
+    elif len(parts) == 1:
+        levels = np.array(
+            [_level(p, measure.unit, option, gravity) for p in text.split(",") if p.strip()]
+        )
+    else:
+        raise FreestandError(
+            f"{text!r} is not A:B:N or a list; e.g. 0.5:10:20 or 1,2,4", source=option
+        )
+    if levels.size == 0 or np.any(~(levels > 0)) or np.any(np.diff(levels) <= 0):
+        raise FreestandError(
+            f"{text!r}: the levels must be positive and increasing; e.g. 0.5:10:20",
+            source=option,
+        )
+    return levels
+
+
+_OUTCOME = re.compile(
+    r"^\s*(?P<kind>[a-z]+)\s*:\s*(?P<block>[^>]+?)\s*(?:>\s*(?P<threshold>.+?))?\s*$"
+)
+
+
+def parse_outcome(text: str, blocks, option: str = "--outcome") -> Outcome:
+    """Read an outcome such as ``overturn:cart`` or ``slide:cart>0.05m``.
+
+    Parameters
+    ----------
+    text : str
+    blocks : sequence of str
+        The block names of the configuration.
+    option : str, optional
+        Option name for messages.
+    """
+    match = _OUTCOME.match(text)
+    if not match or match["kind"] not in OUTCOME_KINDS:
+        raise FreestandError(
+            f"{text!r} is not an outcome; use overturn:BLOCK, rotation:BLOCK>0.5alpha, "
+            "slide:BLOCK>0.05m, uplift:BLOCK or flight:BLOCK",
+            source=option,
+        )
+    kind, block, threshold = match["kind"], match["block"], match["threshold"]
+    if block not in blocks:
+        raise FreestandError(
+            f"{text!r}: no block {block!r}; the blocks are {', '.join(blocks)}", source=option
+        )
+    if kind in ("overturn", "uplift", "flight"):
+        if threshold is not None:
+            raise FreestandError(f"{text!r}: {kind} takes no threshold", source=option)
+        return Outcome(kind, block)
+    if threshold is None:
+        example = "0.5alpha" if kind == "rotation" else "0.05m"
+        raise FreestandError(
+            f"{text!r}: give a threshold, e.g. {kind}:{block}>{example}", source=option
+        )
+    threshold = threshold.replace(" ", "")
+    if kind == "rotation":
+        if threshold.endswith("alpha"):
+            number, unit = threshold[: -len("alpha")] or "1", "alpha"
+            try:
+                value = float(number)
+            except ValueError:
+                raise FreestandError(
+                    f"{text!r}: {number!r} is not a number; e.g. rotation:{block}>0.5alpha",
+                    source=option,
+                ) from None
+        else:
+            value = float(threshold) if _is_float(threshold) else _pint(threshold, "rad", option)
+            unit = "rad"
+    else:
+        value = (
+            float(threshold)
+            if _is_float(threshold)
+            else to_si(threshold, "length", field="threshold", source=option)
+        )
+        unit = "m"
+    try:
+        return Outcome(kind, block, value, unit)
+    except ValueError as error:
+        raise FreestandError(f"{text!r}: {error}", source=option) from None
+
+
+def _is_float(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def build_campaign(
+    model, configuration, suite, im, levels, vary, samples, outcome, both_polarities, seed,
+    free_time, *, source: str = "",
+):  # fmt: skip
+    """The campaign of the command-line options (or of a model's ``[fragility]`` table).
+
+    Parameters
+    ----------
+    model : ModelFile
+    configuration : str or None
+        Configuration name (None: the first).
+    suite : str or Path
+        Record suite file.
+    im, levels : str
+        ``--im`` and ``--levels`` (None for a cloud analysis).
+    vary : list of str or None
+        ``--vary`` options.
+    samples : int or None
+        Samples per record and level (None: 1, or 10 with variations).
+    outcome : list of str or None
+        ``--outcome`` options (None: the configuration's defaults).
+    both_polarities : bool
+    seed : int
+    free_time : float
+        Cap on the time simulated after a record [s].
+    source : str, optional
+        Prefix of option names in messages (e.g. the model file's table).
+
+    Returns
+    -------
+    tuple
+        (Campaign, RecordSuite).
+    """
+    from freestand.core.fragility.campaign import Campaign
+    from freestand.core.fragility.outcomes import default_outcomes
+    from freestand.io.parameters import check_parameters, parse_variation
+    from freestand.io.suites import load_suite
+
+    cloud = levels is None
+    stack = model.configuration(configuration) if configuration else model.configurations[0]
+    measure = parse_intensity(im, stack, source + "--im")
+    level_values = (
+        [] if cloud else parse_levels(levels, measure, model.gravity, source + "--levels")
+    )
+    variations = [parse_variation(text, "--vary", model.gravity) for text in vary or []]
+    check_parameters(
+        [(v.parameter, t) for v, t in zip(variations, vary or [], strict=True)], [stack], "--vary"
+    )
+    for variation, text in zip(variations, vary or [], strict=True):
+        if variation.parameter.field in ("horizontal", "vertical"):
+            raise FreestandError(
+                f"{text!r}: the excitation is set by the records and --levels; vary block "
+                "inputs only (mass, inertia, centre, base, friction)",
+                source=source + "--vary",
+            )
+    count = samples if samples is not None else (10 if variations else 1)
+    if count < 1:
+        raise FreestandError(f"{count} samples: give 1 or more", source=source + "--samples")
+    names = [b.name for b in stack.blocks]
+    outcomes = (
+        tuple(parse_outcome(text, names, source + "--outcome") for text in outcome)
+        if outcome
+        else default_outcomes(stack)
+    )
+    keys = [o.key for o in outcomes]
+    if len(set(keys)) != len(keys):
+        raise FreestandError(
+            f"an outcome repeats in {keys}; give each once", source=source + "--outcome"
+        )
+    records = load_suite(suite, gravity=model.gravity)
+    try:
+        campaign = Campaign(
+            stack=stack,
+            motions=records.motions,
+            measure=measure,
+            levels=level_values,
+            variations=tuple(variations),
+            samples=count,
+            polarities=(1, -1) if both_polarities else (1,),
+            seed=seed,
+            outcomes=outcomes,
+            gravity=model.gravity,
+            free_time=free_time,
+        )
+    except ValueError as error:
+        raise FreestandError(f"{error}", source=str(suite)) from None
+    if campaign.cloud and (campaign.record_intensity <= 0).any():
+        raise FreestandError("a record has zero intensity; remove it", source=str(suite))
+    return campaign, records

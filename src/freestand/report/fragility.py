@@ -1,0 +1,169 @@
+"""The fragility section of the report, for a model file with a ``[fragility]`` table.
+
+The table names the campaign (paths relative to the model file)::
+
+    [fragility]
+    suite = "records/suite.toml"     # required
+    configuration = "x-z cart right" # default: the first
+    im = "pga"                       # as --im
+    levels = "1:8:15"                # as --levels; or cloud = true
+    outcomes = ["overturn:cart", "slide:cart>0.05m"]   # default: per configuration
+    vary = ["friction.static=uniform(0.15,0.35)"]      # optional
+    samples = 10                     # optional
+    both_polarities = true           # optional
+    seed = 0                         # optional
+    bootstrap = 1000                 # optional
+
+The campaign runs on every local core, as ``freestand fragility`` would.
+"""
+
+from __future__ import annotations
+
+import html
+import math
+from dataclasses import dataclass
+
+from freestand.core.fragility.analysis import FragilityResult
+from freestand.errors import FreestandError
+
+_KEYS = {
+    "suite", "configuration", "im", "levels", "cloud", "outcomes", "vary", "samples",
+    "both_polarities", "seed", "bootstrap", "free_time",
+}  # fmt: skip
+
+
+@dataclass(frozen=True)
+class FragilitySection:
+    """A fragility campaign run for the report.
+
+    Attributes
+    ----------
+    document : dict
+        The ``freestand fragility --json`` document.
+    result : FragilityResult
+    im_label : str
+        Axis label with unit.
+    """
+
+    document: dict
+    result: FragilityResult
+    im_label: str
+
+
+def assess_fragility(model, workers: int | None = None) -> FragilitySection | None:
+    """Run the ``[fragility]`` campaign of ``model`` (None when it has none)."""
+    table = model.fragility
+    if not table:
+        return None
+    source = f"{model.source} [fragility] "
+    unknown = sorted(set(table) - _KEYS)
+    if unknown:
+        raise FreestandError(
+            f"unknown key(s) {', '.join(unknown)}; use {', '.join(sorted(_KEYS))}", source=source
+        )
+    if not isinstance(table.get("suite"), str):
+        raise FreestandError('give the record suite, e.g. suite = "suite.toml"', source=source)
+    cloud = bool(table.get("cloud", False))
+    if cloud == ("levels" in table):
+        raise FreestandError('give levels = "A:B:N" or cloud = true', source=source)
+    from freestand.core.fragility.analysis import analyse
+    from freestand.io.campaign_runner import default_chunk_size, run_campaign
+    from freestand.io.fragility_options import build_campaign
+    from freestand.io.fragility_results import (
+        campaign_definition,
+        fragility_document,
+        im_label,
+    )
+
+    suite = model.base_dir / table["suite"]
+    campaign, records = build_campaign(
+        model, table.get("configuration"), suite, str(table.get("im", "pga")),
+        None if cloud else str(table["levels"]), list(table.get("vary", [])) or None,
+        table.get("samples"), list(table.get("outcomes", [])) or None,
+        bool(table.get("both_polarities", False)), int(table.get("seed", 0)),
+        float(table.get("free_time", 10.0)), source=source,
+    )  # fmt: skip
+    size = default_chunk_size(campaign)
+    definition = campaign_definition(
+        campaign, model_name=model.name, model_source=model.source,
+        model_sha256=model.sha256, suite_name=records.name, suite_source=str(table["suite"]),
+        chunk_size=size,
+    )  # fmt: skip
+    rows = run_campaign(campaign, chunk_size=size, workers=workers)
+    bootstrap = int(table.get("bootstrap", 1000))
+    seed = int(table.get("seed", 0))
+    result = analyse(
+        rows, campaign.outcomes, campaign.levels, unit=campaign.measure.unit,
+        bootstrap=bootstrap, seed=seed,
+    )  # fmt: skip
+    document = fragility_document(definition, result, bootstrap, 0.95)
+    return FragilitySection(document, result, im_label(definition["im"]))
+
+
+def _n(value, digits: int = 4) -> str:
+    if value is None or (isinstance(value, float) and not math.isfinite(value)):
+        return "&#8211;"
+    return f"{value:.{digits}g}"
+
+
+def fragility_html(doc, section: FragilitySection) -> str:
+    """The report section (an appendix after the references): method, table, figure."""
+    from freestand.plot.fragility import plot_fragility
+
+    d = section.document
+    e = html.escape
+    unit = e(d["im"]["unit"])
+    rows = []
+    for item in d["outcomes"]:
+        if item["fitted"]:
+            cells = (
+                f"<td>{_n(item['median'])}</td>"
+                f"<td>{_n(item['median_interval'][0])} &#8211; "
+                f"{_n(item['median_interval'][1])}</td>"
+                f"<td>{_n(item['beta'], 3)}</td>"
+                f"<td>{_n(item['beta_interval'][0], 3)} &#8211; "
+                f"{_n(item['beta_interval'][1], 3)}</td><td>{_n(item['hclpf'])}</td><td></td>"
+            )
+        else:
+            cells = "<td></td>" * 5 + f"<td>{e(item['reason'] or '')}</td>"
+        counts = ", ".join(f"{c}/{t}" for c, t in zip(item["counts"], item["totals"], strict=True))
+        rows.append(
+            f'<tr data-outcome="{e(item["name"])}"><th>{e(item["name"])}</th>{cells}'
+            f"<td>{counts}</td></tr>"
+        )
+    head = (
+        f"<thead><tr><th>outcome</th><th>median [{unit}]</th><th>95 % interval</th>"
+        f"<th>beta [-]</th><th>95 % interval</th><th>HCLPF [{unit}]</th><th>note</th>"
+        "<th>occurred / simulations per level</th></tr></thead>"
+    )
+    suite = d["suite"]
+    varied = "; ".join(d["variations"]) or "none"
+    versions = ", ".join(f"{k} {v}" for k, v in d["versions"].items() if v)
+    levels = ", ".join(f"{x:.4g}" for x in d["levels"]) or "each record unscaled (cloud)"
+    table = doc.table(
+        f"Lognormal fragility of each outcome against {e(section.im_label)}: maximum likelihood "
+        "on the binomial counts, bootstrap intervals.",
+        head,
+        rows,
+    )
+    figure = doc.figure(
+        plot_fragility(section.result, section.im_label),
+        "Fitted fragility curves with their 95 % bootstrap bands, and the fraction of "
+        "simulations in which each outcome occurred at each level (Wilson intervals).",
+    )
+    return (
+        '<section id="fragility"><h2>A Fragility campaign</h2>'
+        f"<p>Configuration <b>{e(d['configuration'])}</b> under the {len(suite['records'])} "
+        f"records of suite <code>{e(suite['name'])}</code> (<code>{e(suite['file'])}</code>), "
+        f"scaled to the levels {levels} {unit} of {e(section.im_label)}; "
+        f"{d['samples']} sample(s) of the uncertain inputs per record and level "
+        f"({e(varied)})"
+        f"{', both polarities' if len(d['polarities']) == 2 else ''}; seed {d['seed']}. "
+        f"{d['simulations']} simulations, {d['failed']} failed or invalid (left out of the "
+        f"fits). Each simulation runs until the stack is at rest after the record, at most "
+        f"{d['free_time']:g} s after it. The HCLPF is the {e(d['fit']['hclpf'])}.</p>"
+        f"{table}{figure}"
+        f'<p class="note">Reproduce with <code>freestand fragility</code> and the same '
+        f"options; campaign fingerprint <code>{e(d['fingerprint'][:16])}</code>; {e(versions)}."
+        "</p></section>"
+    )
