@@ -653,7 +653,6 @@ def generate_suite(
         if spectrum.damping not in plans:
             plans[spectrum.damping] = SpectrumPlan.build(frequencies, dt, spectrum.damping)
     results: dict[str, list[MatchedRecord]] = {d: [] for d, _ in components}
-    next_attempt: dict[tuple[int, int], int] = {}
     accepted_histories: list[np.ndarray] = []
     failures: list[str] = []
     for index in range(count):
@@ -670,12 +669,11 @@ def generate_suite(
                 r = correlation_matrix([record.acceleration, *accepted_histories])[0, 1:]
                 if np.max(np.abs(r)) < criteria.max_correlation:
                     break
-            next_attempt[(index, c)] = start
             results[direction].append(record)
             accepted_histories.append(record.acceleration)
             if progress is not None:
                 progress()
-    for c, (direction, spectrum) in enumerate(components):
+    for direction, spectrum in components:
         results[direction] = _refine_mean(
             results[direction], spectrum, criteria, settings, plans[spectrum.damping], n, dt
         )
