@@ -347,7 +347,17 @@ def _fixed_width_values(line: str, width: int | None) -> list[str]:
     return text.replace(",", " ").split()
 
 
-def read_v2_component(path: str | Path, *, gravity: float = 9.81) -> RecordComponent:
+def _is_v2_acceleration_line(line: str) -> bool:
+    csmip = _V2_CSMIP.match(line)
+    if csmip:
+        return csmip.group(2).upper().startswith("ACCEL")
+    cosmos = _V2_COSMOS.match(line)
+    return bool(cosmos) and cosmos.group(2).lower() == "acceleration"
+
+
+def read_v2_component(
+    path: str | Path, *, gravity: float = 9.81, channel: int = 1
+) -> RecordComponent:
     """Read the acceleration of a COSMOS / CSMIP ``.V2`` processed record (CESMD).
 
     Two layouts are read, both by keyword, never by line number:
@@ -367,9 +377,12 @@ def read_v2_component(path: str | Path, *, gravity: float = 9.81) -> RecordCompo
     Parameters
     ----------
     path : str or Path
-        The ``.V2`` file (one channel).
+        The ``.V2`` file; a file with several channels holds one acceleration
+        block per channel, one after the other.
     gravity : float, optional
         g [m/s^2] for values in g (default 9.81).
+    channel : int, optional
+        Which acceleration block to read, 1 for the first (default).
 
     Returns
     -------
@@ -386,8 +399,18 @@ def read_v2_component(path: str | Path, *, gravity: float = 9.81) -> RecordCompo
     path = Path(path)
     source = str(path)
     lines = _read_lines(path)
+    blocks = [index for index, line in enumerate(lines) if _is_v2_acceleration_line(line)]
+    if blocks and not 1 <= channel <= len(blocks):
+        raise FreestandError(
+            f"channel {channel} asked for, but the file holds {len(blocks)} acceleration "
+            f"block(s); give a channel from 1 to {len(blocks)}",
+            source=source,
+        )
+    first = blocks[channel - 1] if blocks else 0
     start = None
     for index, line in enumerate(lines):
+        if index < first:
+            continue
         match = _V2_CSMIP.match(line)
         if match and match.group(2).upper().startswith("ACCEL"):
             npts = int(match.group(1))
@@ -435,12 +458,6 @@ def read_v2_component(path: str | Path, *, gravity: float = 9.81) -> RecordCompo
                 )
             start = index
             break
-        if _V2_CSMIP.match(line) or _V2_COSMOS.match(line):
-            raise FreestandError(
-                f"line {index + 1} starts a {line.split()[1].lower()} block before any "
-                "acceleration block; give the processed .V2 file with acceleration data",
-                source=source,
-            )
     if start is None:
         raise FreestandError(
             "no acceleration data line in this .V2 file: a CSMIP file has a line like "
@@ -479,12 +496,18 @@ def read_v2_component(path: str | Path, *, gravity: float = 9.81) -> RecordCompo
         )
     acceleration = np.asarray(values[:npts], dtype=float)
     _check_finite(acceleration, line_numbers, source, "acceleration")
+    previous = 0  # the channel's header starts after the previous channel's end marker
+    for index in range(start - 1, -1, -1):
+        marker = lines[index].strip().lower()
+        if marker.startswith("/&") or marker.startswith("end-of-data"):
+            previous = index + 1
+            break
     return RecordComponent(
         acceleration=acceleration * factor,
         dt=float(dt),
         source=source,
-        header=tuple(lines[: start + 1]),
-        unit=unit,
+        header=tuple(lines[previous : start + 1]),
+        unit=f"{unit} (channel {channel} of {len(blocks)})",
     )
 
 
