@@ -139,6 +139,9 @@ def spectrum(
         help="Target spectrum, as --spectrum takes it: CSV file, "
         "'rg1.60:pga=0.3g,damping=5%', 'en1998:ag=2.5,ground=B,type=1', 'record:FILE'.",
     ),
+    vertical_target: str = typer.Option(
+        None, "--vertical-target", help="Target spectrum of the vertical components."
+    ),
     dt: float = typer.Option(None, "--dt", help="Time step [s] of single-column records."),
     unit: str = typer.Option(None, "--unit", help="Unit of single-column records, e.g. g."),
     plot: Path = typer.Option(None, "--plot", help="Figure file (.png, .svg or .pdf)."),
@@ -152,6 +155,14 @@ def spectrum(
     _check_output_file(plot, "--plot", _FIGURE_SUFFIXES)
     _check_output_file(csv_file, "--csv", (".csv",))
     target_spectrum = None if target is None else _target(target, "--target")
+    targets = {}
+    if target_spectrum is not None:
+        targets[target_spectrum.direction] = target_spectrum
+    if vertical_target is not None:
+        spectrum_v = _target(vertical_target, "--vertical-target")
+        targets["vertical"] = spectrum_v
+        if target_spectrum is None:
+            target_spectrum = spectrum_v
     if damping is not None:
         zeta = _damping(damping, "--damping")
     else:
@@ -188,8 +199,9 @@ def spectrum(
                 "peak_psa_frequency": float(frequency[k]),
                 "psa": psa,
             }
-            if target_spectrum is not None and component == target_spectrum.direction:
-                ratio = psa / np.maximum(target_values, 1e-300)
+            if component in targets:
+                goal = np.asarray(targets[component].acceleration_at(frequency))
+                ratio = psa / np.maximum(goal, 1e-300)
                 low = int(np.argmin(np.where(in_band, ratio, np.inf)))
                 high = int(np.argmax(np.where(in_band, ratio, -np.inf)))
                 row.update(
@@ -282,17 +294,17 @@ def spectrum(
                 cells += ["-", "-", "-", "-"]
         table.add_row(*cells)
     out.print(table)
-    if target_spectrum is not None:
+    for direction, spectrum_d in targets.items():
         out.print(
             escape(
-                f"target: {target_spectrum.label} ({target_spectrum.direction}); ratios over "
+                f"{direction} target: {spectrum_d.label}; ratios over "
                 f"{check_band.lowest_frequency:g}-{check_band.highest_frequency:g} Hz"
             )
         )
-        if abs(target_spectrum.damping - zeta) > 1e-12:
+        if abs(spectrum_d.damping - zeta) > 1e-12:
             out.print(
-                f"[yellow]note:[/] the target is for {100 * target_spectrum.damping:g} % damping, "
-                f"the spectra for {100 * zeta:g} %"
+                f"[yellow]note:[/] the {direction} target is for {100 * spectrum_d.damping:g} % "
+                f"damping, the spectra for {100 * zeta:g} %"
             )
     for path in written:
         out.print(f"wrote {escape(str(path))}")
