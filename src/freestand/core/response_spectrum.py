@@ -250,11 +250,14 @@ def _peak_displacement_kernel(acceleration, dt, omegas, coefficients, substeps, 
     The same recursion and the same cubic peak search between sub-steps as
     :func:`_peak_response_kernel` (so the same values of max |u|), without the
     velocity and absolute-acceleration peaks: the inner loop of spectral
-    matching, which needs only the pseudo-acceleration.
+    matching, which needs only the pseudo-acceleration. Returns the peak over
+    the record and its free vibration, and the peak over the record alone
+    (up to the end of the last sample's ramp to zero).
     """
     n_freq = omegas.size
     n = acceleration.size
     peak_u = np.zeros(n_freq)
+    peak_u_record = np.zeros(n_freq)
     for k in numba.prange(n_freq):
         m = substeps[k]
         h = dt / m
@@ -269,21 +272,26 @@ def _peak_displacement_kernel(acceleration, dt, omegas, coefficients, substeps, 
         u = 0.0
         v = 0.0
         pu = 0.0
-        record_steps = n * m
-        for step in range(record_steps + free_steps[k]):
-            if step < record_steps:
-                i = step // m
-                j = step - i * m
-                a_start = acceleration[i]
-                a_end = acceleration[i + 1] if i + 1 < n else 0.0
-                slope = (a_end - a_start) / m
+        for i in range(n):
+            a_start = acceleration[i]
+            a_end = acceleration[i + 1] if i + 1 < n else 0.0
+            slope = (a_end - a_start) / m
+            for j in range(m):
                 p0 = a_start + slope * j
                 p1 = a_start + slope * (j + 1)
-            else:
-                p0 = 0.0
-                p1 = 0.0
-            u1 = a11 * u + a12 * v + b11 * p0 + b12 * p1
-            v1 = a21 * u + a22 * v + b21 * p0 + b22 * p1
+                u1 = a11 * u + a12 * v + b11 * p0 + b12 * p1
+                v1 = a21 * u + a22 * v + b21 * p0 + b22 * p1
+                x = abs(u1)
+                if v * v1 < 0.0:
+                    x = max(x, _cubic_extreme(u, u1, v, v1, h))
+                if x > pu:
+                    pu = x
+                u = u1
+                v = v1
+        peak_u_record[k] = pu
+        for _ in range(free_steps[k]):
+            u1 = a11 * u + a12 * v
+            v1 = a21 * u + a22 * v
             x = abs(u1)
             if v * v1 < 0.0:
                 x = max(x, _cubic_extreme(u, u1, v, v1, h))
@@ -292,7 +300,7 @@ def _peak_displacement_kernel(acceleration, dt, omegas, coefficients, substeps, 
             u = u1
             v = v1
         peak_u[k] = pu
-    return peak_u
+    return peak_u, peak_u_record
 
 
 @numba.njit(cache=True)
@@ -502,7 +510,17 @@ class SpectrumPlan:
 
         Only the displacement peaks are followed (frequencies in parallel).
         """
-        peak_u = _peak_displacement_kernel(
+        return self.pseudo_acceleration_bounds(acceleration)[0]
+
+    def pseudo_acceleration_bounds(self, acceleration: np.ndarray) -> tuple[np.ndarray, ...]:
+        """PSA [m/s^2] with the free vibration after the record, and over the record alone.
+
+        Spectra computed without following the free vibration (a common
+        simplification) lie between the two; acceptance checks that hold for
+        the second as a lower bound and the first as an upper bound hold for
+        either convention.
+        """
+        peak_u, peak_u_record = _peak_displacement_kernel(
             np.ascontiguousarray(acceleration, dtype=float),
             self.dt,
             self.omegas,
@@ -510,7 +528,8 @@ class SpectrumPlan:
             self.substeps,
             self.free_steps,
         )
-        return self.omegas**2 * peak_u
+        w2 = self.omegas**2
+        return w2 * peak_u, w2 * peak_u_record
 
 
 def _check_damping(damping: float) -> None:
