@@ -71,6 +71,8 @@ def test_baseline_corrected_motion_ends_at_rest(suite):
         # end values against the peaks: round-off only
         assert abs(velocity[-1]) < 1e-9 * np.max(np.abs(velocity))
         assert abs(displacement[-1]) < 1e-9 * np.max(np.abs(displacement))
+        # the support starts and ends at rest: no jump in acceleration at either end
+        assert record.acceleration[0] == 0.0 and record.acceleration[-1] == 0.0
 
 
 def test_same_seed_same_suite_other_seed_other_suite():
