@@ -37,13 +37,13 @@ _FIGURE_SUFFIXES = (".png", ".svg", ".pdf")
 def _damping(text: str, option: str) -> float:
     from freestand.io.spectrum_input import damping_fraction
 
-    return damping_fraction(text.strip(), field=option, source=option)
+    return damping_fraction(text.strip(), field="damping", source=option)
 
 
 def _frequency(text: str, option: str) -> float:
     from freestand.io.units import to_si
 
-    value = to_si(text.strip(), "frequency", field=option, source=option)
+    value = to_si(text.strip(), "frequency", field="frequency", source=option)
     if not value > 0:
         raise FreestandError(f"{text!r} is not a positive frequency; e.g. 2.5Hz", source=option)
     return value
