@@ -93,11 +93,12 @@ def draw_seed_parameters(
 ) -> SeedParameters:
     """Random parameters of a seed record of length ``duration`` [s].
 
-    The ranges cover the parameters Rezaeian and Der Kiureghian (2010) fitted
-    to recorded strong motions (their Table III: envelope peaks in the first
-    third of the record, f_mid of a few Hz, f' slightly negative, zeta_f 0.1 to
-    0.5), scaled to the requested duration; vertical seeds have stiffer
-    content (f_mid about twice as high).
+    The ranges are chosen to resemble the parameters Rezaeian and Der
+    Kiureghian (2010) fitted to recorded strong motions (envelope peak in the
+    first third of the record, f_mid of a few Hz, f' zero or negative, zeta_f
+    of a few tenths), scaled to the requested duration; vertical seeds have
+    stiffer content (f_mid about twice as high). They shape the seed only:
+    the matching sets the spectrum.
 
     Parameters
     ----------
