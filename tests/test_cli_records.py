@@ -157,3 +157,23 @@ def test_csv_format(tmp_path):
     assert np.max(np.abs(motion.horizontal)) == pytest.approx(
         document["horizontal"]["records"][0]["peak_acceleration"], rel=1e-6
     )
+
+
+def test_floor_command_with_a_vertical_mode(generated, tmp_path):
+    folder = generated[1]["a"][0]
+    output = tmp_path / "floor.AT2"
+    result = run_freestand(
+        "records", "floor", str(folder / "rec01_H.AT2"), "--vertical", str(folder / "rec01_UP.AT2"),
+        "--frequency", "2.5Hz", "--vertical-frequency", "8 Hz", "--output", str(output), "--json",
+    )  # fmt: skip
+    assert result.returncode == 0, result.stderr
+    summary = json.loads(result.stdout)
+    assert summary["vertical_frequency"] == 8.0
+    assert summary["floor_peak_vertical"] > summary["ground_peak_vertical"]
+    floor = load_record(output, vertical=tmp_path / "floor_UP.AT2")
+    assert floor.peak_vertical == pytest.approx(summary["floor_peak_vertical"], rel=1e-6)
+    text = run_freestand(
+        "records", "floor", str(folder / "rec01_H.AT2"), "--frequency", "2.5Hz",
+        "--vertical-frequency", "8Hz",
+    )  # fmt: skip
+    assert text.returncode == 2 and "--vertical FILE" in text.stderr

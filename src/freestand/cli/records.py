@@ -591,10 +591,18 @@ def floor(
     ),
     damping: str = typer.Option("5%", "--damping", help="Damping ratio of the mode, e.g. 5%."),
     output: Path = typer.Option(
-        None, "--output", help="Write the floor motion (.AT2 or .csv; CSV keeps the vertical)."
+        None,
+        "--output",
+        help="Write the floor motion (.AT2 or .csv); a vertical goes to NAME_UP.AT2/.csv.",
     ),
     vertical: Path = typer.Option(
-        None, "--vertical", help="Vertical ground record (passes unchanged)."
+        None,
+        "--vertical",
+        help="Vertical ground record (positive up); passes unchanged unless "
+        "--vertical-frequency is given.",
+    ),
+    vertical_frequency: str = typer.Option(
+        None, "--vertical-frequency", help="Frequency of a vertical mode filtering the vertical."
     ),
     dt: float = typer.Option(None, "--dt", help="Time step [s] of single-column records."),
     unit: str = typer.Option(None, "--unit", help="Unit of single-column records, e.g. g."),
@@ -607,12 +615,20 @@ def floor(
 
     f = _frequency(frequency, "--frequency")
     zeta = _damping(damping, "--damping")
+    f_v = None
+    if vertical_frequency is not None:
+        f_v = _frequency(vertical_frequency, "--vertical-frequency")
+        if vertical is None:
+            raise FreestandError(
+                "a vertical mode filters a vertical record; give it with --vertical FILE",
+                source="--vertical-frequency",
+            )
     _check_output_file(output, "--output", (".at2", ".csv"))
     _check_output_file(plot, "--plot", _FIGURE_SUFFIXES)
     ground = load_record(record, dt=dt, unit=unit, gravity=GRAVITY, vertical=vertical)
     # follow the structure's free vibration after the record (5 periods of decay)
-    extended = ground.with_trailing_zeros(ground.duration + 5.0 / f)
-    result = floor_motion(extended, f, zeta)
+    extended = ground.with_trailing_zeros(ground.duration + 5.0 / min(f, f_v or f))
+    result = floor_motion(extended, f, zeta, vertical_frequency=f_v)
     response = spectral_response(ground, None, [f], zeta)
     ground_peak = ground.peak_horizontal
     floor_peak = result.peak_horizontal
@@ -626,24 +642,36 @@ def floor(
         "spectral_absolute_acceleration": float(response.absolute_acceleration[0]),
         "spectral_pseudo_acceleration": float(response.pseudo_acceleration[0]),
         "duration": result.duration,
+        "vertical_frequency": f_v,
+        "ground_peak_vertical": ground.peak_vertical,
+        "floor_peak_vertical": result.peak_vertical,
         "output": None if output is None else str(output),
     }
     if output is not None:
-        if output.suffix.lower() == ".at2":
-            description = f"{ground.name}: floor motion, {f:g} Hz, {100 * zeta:g} % damping"
-            _write_atomic(
-                output,
-                lambda tmp: write_at2(tmp, result, description=description, gravity=GRAVITY),
-            )
-        else:
-            comments = (
-                f"{ground.name}: floor motion (absolute acceleration of a {f:g} Hz, "
-                f"{100 * zeta:g} % oscillator), freestand records floor",
-            )
-            _write_atomic(
-                output,
-                lambda tmp: write_csv_record(tmp, result, gravity=GRAVITY, comments=comments),
-            )
+        label = (
+            f"{ground.name}: floor motion (absolute acceleration of a {f:g} Hz, "
+            f"{100 * zeta:g} % oscillator)"
+        )
+        files = [("horizontal", output)]
+        if result.vertical is not None:
+            vertical_path = output.with_name(output.stem + "_UP" + output.suffix)
+            files.append(("vertical", vertical_path))
+            summary["output_vertical"] = str(vertical_path)
+        for component, path in files:
+            if path.suffix.lower() == ".at2":
+                _write_atomic(
+                    path,
+                    lambda tmp, c=component: write_at2(
+                        tmp, result, component=c, description=label, gravity=GRAVITY
+                    ),
+                )
+            else:
+                _write_atomic(
+                    path,
+                    lambda tmp, c=component: write_csv_record(
+                        tmp, result, component=c, gravity=GRAVITY, comments=(label,)
+                    ),
+                )
     if plot is not None:
         from freestand.plot.records import plot_floor_motion
 
@@ -672,8 +700,18 @@ def floor(
             f"{summary['spectral_pseudo_acceleration']:.4g} m/s^2"
         )
     )
+    if result.vertical is not None:
+        how = "unchanged" if f_v is None else f"filtered by a {f_v:g} Hz, {100 * zeta:g} % mode"
+        out.print(
+            escape(
+                f"vertical ({how}): ground peak {ground.peak_vertical:.4g} m/s^2, floor peak "
+                f"{result.peak_vertical:.4g} m/s^2"
+            )
+        )
     if output is not None:
         out.print(f"wrote {escape(str(output))}")
+        if "output_vertical" in summary:
+            out.print(f"wrote {escape(summary['output_vertical'])}")
     if plot is not None:
         out.print(f"wrote {escape(str(plot))}")
 
