@@ -127,3 +127,23 @@ def test_v2_errors_name_the_problem(tmp_path):
     path.write_text(_csmip_channel(ACC))
     with pytest.raises(FreestandError, match="do not give dt or unit"):
         load_record(path, dt=0.01)
+
+
+@pytest.mark.parametrize(
+    "data_line",
+    [
+        "  12 POINTS OF ACCEL DATA EQUALLY SPACED AT  .005 SEC, IN CM/SEC2.  (FORMAT=(8F10.3))",
+        "      12 points of accel data equally spaced at 0.005 sec, in cm/sec/sec. (8F10.3)",
+        "  12 POINTS OF ACCELERATION DATA EQUALLY SPACED AT 5 MSEC, IN CM/SEC/SEC",
+    ],
+)
+def test_csmip_data_line_variants(tmp_path, data_line):
+    text = _csmip_channel(ACC)
+    lines = text.splitlines()
+    index = next(i for i, line in enumerate(lines) if "POINTS OF ACCEL" in line)
+    lines[index] = data_line
+    path = tmp_path / "variant.V2"
+    path.write_text("\n".join(lines) + "\n")
+    motion = load_record(path)
+    assert motion.dt == pytest.approx(0.005)
+    assert np.allclose(motion.horizontal, ACC / 100.0)
