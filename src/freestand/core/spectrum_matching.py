@@ -13,8 +13,9 @@ in three steps for each record:
    iterated to convergence. Because each detail keeps its place in time, the
    record keeps the seed's nonstationary character. With a scale factor that
    is constant in time, the operation is a zero-phase filter whose gain is the
-   ratio interpolated between the matching frequencies; it is applied here by
-   FFT (zero-padded, no wrap-around). Each iteration also trims the peak ground
+   ratios weighted by the wavelets' spectra; here, a simplification, the gain
+   is the ratio interpolated (log-log) between the 241 closely spaced check
+   frequencies, applied by FFT (zero-padded, no wrap-around). Each iteration also trims the peak ground
    acceleration towards the target's zero-period value with short wavelets at
    the peaks, as the time-domain corrections of Al Atik and Abrahamson (2010);
 3. **baseline correction**: an envelope-weighted linear correction makes the
