@@ -15,9 +15,10 @@ in three steps for each record:
    is constant in time, the operation is a zero-phase filter whose gain is the
    ratios weighted by the wavelets' spectra; here, a simplification, the gain
    is the ratio interpolated (log-log) between the 241 closely spaced check
-   frequencies, applied by FFT (zero-padded, no wrap-around). Each iteration also trims the peak ground
-   acceleration towards the target's zero-period value with short wavelets at
-   the peaks, as the time-domain corrections of Al Atik and Abrahamson (2010);
+   frequencies, applied by FFT (zero-padded, no wrap-around). Each iteration
+   also trims the peak ground acceleration towards the target's zero-period
+   value with short wavelets at the peaks, as the time-domain corrections of
+   Al Atik and Abrahamson (2010);
 3. **baseline correction**: an envelope-weighted linear correction makes the
    final velocity and displacement zero
    (:func:`freestand.core.ground_motion.baseline_correct`).
