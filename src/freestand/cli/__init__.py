@@ -24,7 +24,16 @@ app = typer.Typer(
 
 
 def _register() -> None:
-    from freestand.cli import fragility, frequency, maps, overturn, report, screen, simulate
+    from freestand.cli import (
+        fragility,
+        frequency,
+        maps,
+        overturn,
+        records,
+        report,
+        screen,
+        simulate,
+    )
 
     screen.register(app)
     frequency.register(app)
@@ -32,6 +41,7 @@ def _register() -> None:
     overturn.register(app)
     simulate.register(app)
     report.register(app)
+    records.register(app)
     fragility.register(app)
 
 

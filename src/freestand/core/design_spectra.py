@@ -128,7 +128,11 @@ def rg160_spectrum(
             f"RG 1.60 {direction}, PGA {peak_ground_acceleration / gravity:.3g} g, "
             f"{percent:g} % damping"
         ),
-        metadata={"source": "US NRC Regulatory Guide 1.60", "pga": peak_ground_acceleration},
+        metadata={
+            "source": "US NRC Regulatory Guide 1.60",
+            "pga": peak_ground_acceleration,
+            "zero_period_acceleration": factor_a * peak_ground_acceleration,
+        },
     )
 
 
@@ -244,7 +248,11 @@ def en1998_spectrum(
         damping=damping,
         direction=direction,
         label=label,
-        metadata={"source": "EN 1998-1:2004 section 3.2.2", "ag": a_g},
+        metadata={
+            "source": "EN 1998-1:2004 section 3.2.2",
+            "ag": a_g,
+            "zero_period_acceleration": acceleration * soil,
+        },
     )
 
 

@@ -627,11 +627,42 @@ def synthetic_acceleration(
     a = sosfiltfilt(sos, a)
     # (5) baseline: subtract envelope * (c0 + c1 t) so that the support ends at
     # rest where it started (final velocity and displacement zero)
-    basis = [envelope, envelope * t / t[-1]]
+    a = baseline_correct(a, dt, envelope)
+    return a * (peak / np.max(np.abs(a)))
+
+
+def baseline_correct(acceleration: np.ndarray, dt: float, weight: np.ndarray) -> np.ndarray:
+    """Remove the drift of velocity and displacement: the support ends at rest where it started.
+
+    Parameters
+    ----------
+    acceleration : numpy.ndarray
+        Accelerations a(t_i) [m/s^2] at t_i = i dt, piecewise linear.
+    dt : float
+        Time step [s].
+    weight : numpy.ndarray
+        Non-negative shape w(t_i) [-] of the correction, e.g. the time envelope
+        of the record, so that the correction follows the record's intensity
+        and leaves its quiet start and end quiet.
+
+    Returns
+    -------
+    numpy.ndarray
+        a(t) - w(t) (c0 + c1 t / t_end) [m/s^2], with c0, c1 [m/s^2] solving the
+        2 x 2 linear system that makes the final velocity v(t_end) and
+        displacement d(t_end) zero (integrals from rest of the piecewise-linear
+        record, exact). A low-order, envelope-weighted variant of the
+        polynomial baseline correction of Boore (2001), "Effect of baseline
+        corrections on displacements and response spectra for several
+        recordings of the 1999 Chi-Chi, Taiwan, earthquake", BSSA 91(5).
+    """
+    a = np.asarray(acceleration, dtype=float)
+    w = np.asarray(weight, dtype=float)
+    t = np.arange(a.size) * dt
+    basis = [w, w * t / t[-1]]
     ends = np.array([_final_velocity_displacement(b, dt) for b in basis]).T
     c = np.linalg.solve(ends, _final_velocity_displacement(a, dt))
-    a = a - c[0] * basis[0] - c[1] * basis[1]
-    return a * (peak / np.max(np.abs(a)))
+    return a - c[0] * basis[0] - c[1] * basis[1]
 
 
 def _final_velocity_displacement(a: np.ndarray, dt: float) -> np.ndarray:

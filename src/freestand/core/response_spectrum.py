@@ -243,6 +243,66 @@ def _peak_response_kernel(acceleration, dt, omegas, zeta, coefficients, substeps
     return peak_u, peak_v, peak_abs
 
 
+@numba.njit(cache=True, parallel=True)
+def _peak_displacement_kernel(acceleration, dt, omegas, coefficients, substeps, free_steps):
+    """Peaks of |u| only, for each circular frequency, frequencies in parallel.
+
+    The same recursion and the same cubic peak search between sub-steps as
+    :func:`_peak_response_kernel` (so the same values of max |u|), without the
+    velocity and absolute-acceleration peaks: the inner loop of spectral
+    matching, which needs only the pseudo-acceleration. Returns the peak over
+    the record and its free vibration, and the peak over the record alone
+    (up to the end of the last sample's ramp to zero).
+    """
+    n_freq = omegas.size
+    n = acceleration.size
+    peak_u = np.zeros(n_freq)
+    peak_u_record = np.zeros(n_freq)
+    for k in numba.prange(n_freq):
+        m = substeps[k]
+        h = dt / m
+        a11 = coefficients[k, 0]
+        a12 = coefficients[k, 1]
+        a21 = coefficients[k, 2]
+        a22 = coefficients[k, 3]
+        b11 = coefficients[k, 4]
+        b12 = coefficients[k, 5]
+        b21 = coefficients[k, 6]
+        b22 = coefficients[k, 7]
+        u = 0.0
+        v = 0.0
+        pu = 0.0
+        for i in range(n):
+            a_start = acceleration[i]
+            a_end = acceleration[i + 1] if i + 1 < n else 0.0
+            slope = (a_end - a_start) / m
+            for j in range(m):
+                p0 = a_start + slope * j
+                p1 = a_start + slope * (j + 1)
+                u1 = a11 * u + a12 * v + b11 * p0 + b12 * p1
+                v1 = a21 * u + a22 * v + b21 * p0 + b22 * p1
+                x = abs(u1)
+                if v * v1 < 0.0:
+                    x = max(x, _cubic_extreme(u, u1, v, v1, h))
+                if x > pu:
+                    pu = x
+                u = u1
+                v = v1
+        peak_u_record[k] = pu
+        for _ in range(free_steps[k]):
+            u1 = a11 * u + a12 * v
+            v1 = a21 * u + a22 * v
+            x = abs(u1)
+            if v * v1 < 0.0:
+                x = max(x, _cubic_extreme(u, u1, v, v1, h))
+            if x > pu:
+                pu = x
+            u = u1
+            v = v1
+        peak_u[k] = pu
+    return peak_u, peak_u_record
+
+
 @numba.njit(cache=True)
 def _history_kernel(acceleration, coefficients):
     """Relative displacement and velocity at the samples (exact recursion)."""
@@ -371,6 +431,107 @@ class OscillatorResponse:
     metadata: dict = field(default_factory=dict, compare=False)
 
 
+@dataclass(frozen=True)
+class SpectrumPlan:
+    """Step coefficients of the recursion for fixed frequencies, step and damping.
+
+    Building the coefficients costs more than one pass over a short record at
+    low frequencies (matrix exponential); a plan computes them once, so that
+    many records of the same step (spectral matching, record suites) reuse them.
+
+    Parameters
+    ----------
+    frequency : numpy.ndarray
+        Oscillator natural frequencies f [Hz].
+    dt : float
+        Record time step [s].
+    damping : float
+        Damping ratio zeta [-].
+    omegas, coefficients, substeps, free_steps : numpy.ndarray
+        omega = 2 pi f [rad/s], the eight step coefficients per frequency for
+        the sub-step dt / substeps, the sub-steps per record step [-] and the
+        free-vibration sub-steps after the record [-].
+    """
+
+    frequency: np.ndarray
+    dt: float
+    damping: float
+    omegas: np.ndarray
+    coefficients: np.ndarray
+    substeps: np.ndarray
+    free_steps: np.ndarray
+
+    @classmethod
+    def build(
+        cls,
+        frequencies,
+        dt: float,
+        damping: float = 0.05,
+        min_steps_per_period: int = MIN_STEPS_PER_PERIOD,
+        free_vibration: bool = True,
+    ) -> SpectrumPlan:
+        """Coefficients for ``frequencies`` [Hz] at step ``dt`` [s] and ``damping`` [-]."""
+        _check_damping(damping)
+        f = np.ascontiguousarray(np.atleast_1d(np.asarray(frequencies, dtype=float)))
+        if f.ndim != 1 or f.size == 0 or not np.all(np.isfinite(f)) or np.any(f <= 0):
+            raise ValueError("frequencies must be a non-empty 1-D array of positive values")
+        if not (dt > 0 and math.isfinite(dt)):
+            raise ValueError(f"dt must be positive and finite, got {dt!r}")
+        if min_steps_per_period < 1:
+            raise ValueError("min_steps_per_period must be at least 1")
+        omegas = 2.0 * np.pi * f
+        substeps = np.maximum(1, np.ceil(min_steps_per_period * dt * f - 1e-9)).astype(np.int64)
+        if free_vibration:
+            free_steps = np.ceil(1.0 / (f * (dt / substeps))).astype(np.int64) + 1
+        else:
+            free_steps = np.zeros(f.size, dtype=np.int64)
+        coefficients = np.array(
+            [
+                _step_coefficients(w, float(damping), dt / m)
+                for w, m in zip(omegas, substeps, strict=True)
+            ]
+        )
+        return cls(f, float(dt), float(damping), omegas, coefficients, substeps, free_steps)
+
+    def peaks(self, acceleration: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Peaks of |u| [m], |u'| [m/s] and |u'' + a_g| [m/s^2] under ``acceleration``."""
+        return _peak_response_kernel(
+            np.ascontiguousarray(acceleration, dtype=float),
+            self.dt,
+            self.omegas,
+            self.damping,
+            self.coefficients,
+            self.substeps,
+            self.free_steps,
+        )
+
+    def pseudo_acceleration(self, acceleration: np.ndarray) -> np.ndarray:
+        """PSA = omega^2 max|u| [m/s^2] at each frequency of the plan.
+
+        Only the displacement peaks are followed (frequencies in parallel).
+        """
+        return self.pseudo_acceleration_bounds(acceleration)[0]
+
+    def pseudo_acceleration_bounds(self, acceleration: np.ndarray) -> tuple[np.ndarray, ...]:
+        """PSA [m/s^2] with the free vibration after the record, and over the record alone.
+
+        Spectra computed without following the free vibration (a common
+        simplification) lie between the two; acceptance checks that hold for
+        the second as a lower bound and the first as an upper bound hold for
+        either convention.
+        """
+        peak_u, peak_u_record = _peak_displacement_kernel(
+            np.ascontiguousarray(acceleration, dtype=float),
+            self.dt,
+            self.omegas,
+            self.coefficients,
+            self.substeps,
+            self.free_steps,
+        )
+        w2 = self.omegas**2
+        return w2 * peak_u, w2 * peak_u_record
+
+
 def _check_damping(damping: float) -> None:
     if not (0.0 <= damping < 1.0):
         raise ValueError(f"damping ratio must satisfy 0 <= damping < 1, got {damping!r}")
@@ -463,27 +624,9 @@ def spectral_response(
         raise ValueError("frequencies must be positive and finite")
     if min_steps_per_period < 1:
         raise ValueError("min_steps_per_period must be at least 1")
-    omegas = 2.0 * np.pi * f
-    substeps = np.maximum(1, np.ceil(min_steps_per_period * dt * f - 1e-9)).astype(np.int64)
-    if free_vibration:
-        free_steps = np.ceil(1.0 / (f * (dt / substeps))).astype(np.int64) + 1
-    else:
-        free_steps = np.zeros(f.size, dtype=np.int64)
-    coefficients = np.array(
-        [
-            _step_coefficients(w, float(damping), dt / m)
-            for w, m in zip(omegas, substeps, strict=True)
-        ]
-    )
-    peak_u, peak_v, peak_abs = _peak_response_kernel(
-        acceleration,
-        dt,
-        np.ascontiguousarray(omegas),
-        float(damping),
-        coefficients,
-        substeps,
-        free_steps,
-    )
+    plan = SpectrumPlan.build(f, dt, damping, min_steps_per_period, free_vibration)
+    peak_u, peak_v, peak_abs = plan.peaks(acceleration)
+    substeps = plan.substeps
     return SpectralResponse(
         frequency=f.copy(),
         damping=float(damping),
@@ -619,4 +762,71 @@ def oscillator_response(
         frequency=float(frequency),
         damping=float(damping),
         metadata={"record": name},
+    )
+
+
+def floor_motion(
+    motion,
+    frequency: float,
+    damping: float = 0.05,
+    *,
+    vertical_frequency: float | None = None,
+    vertical_damping: float | None = None,
+):
+    """In-structure (floor) motion: a record filtered by a linear oscillator.
+
+    Equipment standing on a structure that does not interact with it (its
+    mass is small against the structure's modal mass) feels the absolute
+    acceleration of the structure at its location. When one mode of frequency
+    f and damping zeta dominates, that is the absolute acceleration of a linear
+    oscillator on the ground:
+
+        u'' + 2 zeta omega u' + omega^2 u = -a_g(t),   a_floor = u'' + a_g
+                                                     = -(2 zeta omega u' + omega^2 u),
+
+    computed at the samples by the exact piecewise-linear recursion of Nigam
+    and Jennings (1969) (:func:`oscillator_response`). The peak of a_floor is
+    the ground's absolute-acceleration spectrum at f, which is the peak the
+    paper uses for its horizontally elastic structure (2.5 Hz, 5 %, paper
+    section 4).
+
+    Parameters
+    ----------
+    motion : GroundMotion
+        The ground record [m/s^2].
+    frequency : float
+        Natural frequency of the structure's horizontal mode f [Hz], positive.
+    damping : float, optional
+        Its damping ratio zeta [-] (default 0.05).
+    vertical_frequency : float, optional
+        Frequency [Hz] of a vertical mode that filters the vertical component;
+        by default the vertical component passes unchanged (a structure rigid
+        vertically, as the paper's crane support).
+    vertical_damping : float, optional
+        Damping ratio [-] of the vertical mode (default ``damping``).
+
+    Returns
+    -------
+    GroundMotion
+        The floor motion, same step and length; ``metadata["floor"]`` records
+        the filter. The record is not extended: follow it with zeros
+        (``with_trailing_zeros``) first to keep the structure's free vibration.
+    """
+    horizontal = oscillator_response(motion, frequency, damping, component="horizontal")
+    vertical = motion.vertical
+    note = {"frequency": float(frequency), "damping": float(damping)}
+    if vertical_frequency is not None and motion.vertical is not None:
+        zeta_v = damping if vertical_damping is None else vertical_damping
+        vertical = oscillator_response(
+            motion, vertical_frequency, zeta_v, component="vertical"
+        ).absolute_acceleration
+        note.update(vertical_frequency=float(vertical_frequency), vertical_damping=float(zeta_v))
+    metadata = dict(motion.metadata)
+    metadata["floor"] = note
+    name = f"{motion.name} floor {frequency:g} Hz {100 * damping:g} %"
+    return motion._replace(
+        horizontal=horizontal.absolute_acceleration,
+        vertical=vertical,
+        name=name.strip(),
+        metadata=metadata,
     )

@@ -304,10 +304,33 @@ class _ConfigurationSpec(_Strict):
         return self
 
 
+class _FloorSpec(_Strict):
+    """``floor = { frequency = "2.5 Hz", damping = "5 %" }``: a mode that filters the record."""
+
+    frequency: float
+    damping: float = 0.05
+
+    @field_validator("frequency", mode="before")
+    @classmethod
+    def _frequency(cls, value, info):
+        return _positive(_quantity(value, "frequency", info), "floor frequency", '"2.5 Hz"')
+
+    @field_validator("damping", mode="before")
+    @classmethod
+    def _damping(cls, value, info):
+        from freestand.io.spectrum_input import damping_fraction
+
+        return damping_fraction(value, field="floor.damping", source="")
+
+
 class _ExcitationSpec(_Strict):
     name: str
-    horizontal: Quantity
+    horizontal: Quantity | None = None
     vertical: Quantity = 0.0
+    # a ground record (relative to the model file) whose peak, after the optional floor
+    # filter, is the horizontal acceleration (freestand.core.response_spectrum.floor_motion)
+    record: str | None = None
+    floor: _FloorSpec | None = None
 
     @field_validator("horizontal", "vertical", mode="before")
     @classmethod
@@ -320,6 +343,32 @@ class _ExcitationSpec(_Strict):
                 "adds stability)"
             )
         return result
+
+    @model_validator(mode="after")
+    def _one_source(self):
+        if (self.horizontal is None) == (self.record is None):
+            raise ValueError(
+                "give either horizontal (a peak acceleration) or record (a ground record "
+                'file, optionally with floor = { frequency = "2.5 Hz", damping = "5 %" })'
+            )
+        if self.floor is not None and self.record is None:
+            raise ValueError('floor filters a record; give record = "FILE" with it')
+        return self
+
+    def horizontal_peak(self, base_dir: Path, gravity: float) -> float:
+        """Horizontal acceleration [m/s^2]: given, or the peak of the (floor-filtered) record."""
+        if self.record is None:
+            return float(self.horizontal)
+        from freestand.core.response_spectrum import floor_motion
+        from freestand.io.records import load_record
+
+        path = Path(self.record)
+        motion = load_record(path if path.is_absolute() else base_dir / path, gravity=gravity)
+        if self.floor is None:
+            return motion.peak_horizontal
+        # the structure's free vibration after the record is kept (five periods)
+        motion = motion.with_trailing_zeros(motion.duration + 5.0 / self.floor.frequency)
+        return floor_motion(motion, self.floor.frequency, self.floor.damping).peak_horizontal
 
 
 class _ModelSpec(_Strict):
@@ -544,11 +593,15 @@ def load_model_text(
                     field=f"configuration[{index}] ({configuration.name!r}).paper",
                 ) from None
         configurations.append(Stack(name=configuration.name, blocks=blocks))
+    base_dir = base_dir or Path.cwd()
     excitations = tuple(
-        Excitation(name=e.name, horizontal=float(e.horizontal), vertical=float(e.vertical))
+        Excitation(
+            name=e.name,
+            horizontal=e.horizontal_peak(base_dir, gravity),
+            vertical=float(e.vertical),
+        )
         for e in spec.excitation
     )
-    base_dir = base_dir or Path.cwd()
     spectra = (
         parse_spectrum_sections(spec.spectrum, source=source, base_dir=base_dir, gravity=gravity)
         if spec.spectrum is not None

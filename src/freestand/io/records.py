@@ -1,4 +1,4 @@
-"""Reading ground-motion records: PEER NGA ``.AT2``, CSV and single-column files.
+"""Reading ground-motion records: PEER NGA ``.AT2``, COSMOS ``.V2``, CSV, single column.
 
 Formats (details in ``docs/records.md``):
 
@@ -10,6 +10,10 @@ Formats (details in ``docs/records.md``):
   line. NPTS and DT are found by their keywords, in either order and with any
   spacing; the older form ``  4000   0.0050   NPTS, DT`` is read too. Values
   are in g unless the units line names another acceleration unit.
+- **COSMOS / CSMIP ``.V2``** (processed records from CESMD): the acceleration
+  block found by its data line (``8000 POINTS OF ACCEL DATA EQUALLY SPACED AT
+  .005 SEC, IN CM/SEC/SEC`` or ``8000 acceleration pts, ... units=cm/sec2``);
+  see :func:`read_v2_component`.
 - **CSV**: a header row naming each column with its unit in brackets, then one
   row per sample: ``time [s], acceleration [g]`` (or ``horizontal [m/s^2]``),
   optionally a third column ``vertical [g]``. Time must be uniform; lines
@@ -308,6 +312,210 @@ def read_at2(path: str | Path, *, gravity: float = 9.81, name: str | None = None
     return _motion_from(component, name)
 
 
+# ---------------------------------------------------------------- COSMOS V2
+
+_V2_CSMIP = re.compile(
+    r"^\s*(\d+)\s+POINTS\s+OF\s+(ACCEL|VELOC|DISPL)\w*\s+DATA\s+EQUALLY\s+SPACED\s+AT\s+("
+    + _NUMBER
+    + r")\s*(SEC|MSEC|S|MS)\w*\s*,?\s*(?:IN\s+([^.(]+?))?\s*\.?\s*(\(.*\))?\s*$",
+    re.IGNORECASE,
+)
+_V2_COSMOS = re.compile(
+    r"^\s*(\d+)\s+(acceleration|velocity|displacement)\s+pts\b(.*)$", re.IGNORECASE
+)
+_V2_UNITS = re.compile(r"units\s*=\s*([^(,]+)", re.IGNORECASE)
+_V2_FORMAT = re.compile(r"\(\s*(\d+)\s*[FE]\s*(\d+)\s*\.\s*\d+\s*\)", re.IGNORECASE)
+_V2_STEP = (
+    re.compile(r"\bdt\s*[=:]\s*(" + _NUMBER + r")\s*(ms|msec|s|sec)?\b", re.IGNORECASE),
+    re.compile(r"\bsampling\s+interval\s*[=:]?\s*(" + _NUMBER + r")\s*(ms|msec|s|sec)?\b",
+               re.IGNORECASE),
+)  # fmt: skip
+_V2_RATE = re.compile(r"(" + _NUMBER + r")\s*(?:sps|samples?\s*/\s*s(?:ec)?)\b", re.IGNORECASE)
+
+
+def _fixed_width_values(line: str, width: int | None) -> list[str]:
+    """Tokens of a data line: fixed-width fields when a Fortran format gives them.
+
+    Fixed-width fields may run together (``-123.456-234.567`` in F8.3); a line
+    is cut by width when its length fits the format, by whitespace otherwise.
+    """
+    text = line.rstrip()
+    if width and len(text) % width == 0 and len(text) >= width:
+        fields = [text[i : i + width] for i in range(0, len(text), width)]
+        if all(field.strip() for field in fields):
+            return [field.strip() for field in fields]
+    return text.replace(",", " ").split()
+
+
+def _is_v2_acceleration_line(line: str) -> bool:
+    csmip = _V2_CSMIP.match(line)
+    if csmip:
+        return csmip.group(2).upper().startswith("ACCEL")
+    cosmos = _V2_COSMOS.match(line)
+    return bool(cosmos) and cosmos.group(2).lower() == "acceleration"
+
+
+def read_v2_component(
+    path: str | Path, *, gravity: float = 9.81, channel: int = 1
+) -> RecordComponent:
+    """Read the acceleration of a COSMOS / CSMIP ``.V2`` processed record (CESMD).
+
+    Two layouts are read, both by keyword, never by line number:
+
+    - CSMIP (as distributed by CESMD): a text header, then a line such as
+      ``8000 POINTS OF ACCEL DATA EQUALLY SPACED AT  .005 SEC, IN CM/SEC/SEC.
+      (8F10.3)`` followed by the accelerations; the velocity (``VELOC``) and
+      displacement (``DISPL``) blocks that follow are skipped;
+    - COSMOS v1.20: a line ``8000 acceleration pts, approx 40 secs,
+      units=cm/sec2 (04), Format=(8F10.5)`` followed by the accelerations;
+      the time step comes from a ``dt = 0.005 sec``, ``sampling interval`` or
+      ``200 sps`` keyword in the header.
+
+    Values in Fortran fixed-width fields that run together are split by the
+    field width of the data line's format.
+
+    Parameters
+    ----------
+    path : str or Path
+        The ``.V2`` file; a file with several channels holds one acceleration
+        block per channel, one after the other.
+    gravity : float, optional
+        g [m/s^2] for values in g (default 9.81).
+    channel : int, optional
+        Which acceleration block to read, 1 for the first (default).
+
+    Returns
+    -------
+    RecordComponent
+        Accelerations [m/s^2] with the sign of the file, the step [s], the
+        header lines and the unit.
+
+    Raises
+    ------
+    FreestandError
+        No acceleration data line, no time step, a non-acceleration unit,
+        too few or non-numeric values.
+    """
+    path = Path(path)
+    source = str(path)
+    lines = _read_lines(path)
+    blocks = [index for index, line in enumerate(lines) if _is_v2_acceleration_line(line)]
+    if blocks and not 1 <= channel <= len(blocks):
+        raise FreestandError(
+            f"channel {channel} asked for, but the file holds {len(blocks)} acceleration "
+            f"block(s); give a channel from 1 to {len(blocks)}",
+            source=source,
+        )
+    first = blocks[channel - 1] if blocks else 0
+    start = None
+    for index, line in enumerate(lines):
+        if index < first:
+            continue
+        match = _V2_CSMIP.match(line)
+        if match and match.group(2).upper().startswith("ACCEL"):
+            npts = int(match.group(1))
+            dt = _parse_float(match.group(3), source, f"line {index + 1}")
+            if match.group(4).lower().startswith("m"):
+                dt *= 1e-3
+            unit = (match.group(5) or "cm/sec/sec").strip()
+            fmt = match.group(6) or ""
+            start = index
+            break
+        match = _V2_COSMOS.match(line)
+        if match and match.group(2).lower() == "acceleration":
+            npts = int(match.group(1))
+            rest = match.group(3)
+            unit_match = _V2_UNITS.search(rest)
+            unit = unit_match.group(1).strip() if unit_match else ""
+            fmt = rest
+            dt = None
+            for header_line in lines[:index]:
+                for pattern in _V2_STEP:
+                    step = pattern.search(header_line)
+                    if step:
+                        dt = _parse_float(step.group(1), source, "dt")
+                        if (step.group(2) or "").lower().startswith("m"):
+                            dt *= 1e-3
+                        break
+                if dt is None:
+                    rate = _V2_RATE.search(header_line)
+                    if rate:
+                        dt = 1.0 / _parse_float(rate.group(1), source, "sps")
+                if dt is not None:
+                    break
+            if dt is None:
+                raise FreestandError(
+                    f"the acceleration data line {index + 1} has no time step and the header "
+                    "states none; a COSMOS .V2 header must give it as 'dt = 0.005 sec', "
+                    "'sampling interval 0.005 sec' or '200 sps'",
+                    source=source,
+                )
+            if not unit:
+                raise FreestandError(
+                    f"the acceleration data line {index + 1} states no units "
+                    "('units=cm/sec2'); fix the file",
+                    source=source,
+                )
+            start = index
+            break
+    if start is None:
+        raise FreestandError(
+            "no acceleration data line in this .V2 file: a CSMIP file has a line like "
+            "'8000 POINTS OF ACCEL DATA EQUALLY SPACED AT .005 SEC, IN CM/SEC/SEC', a COSMOS "
+            "file one like '8000 acceleration pts, approx 40 secs, units=cm/sec2'; give a "
+            "processed (V2) record, or a .AT2 or CSV file",
+            source=source,
+        )
+    if npts < 2:
+        raise FreestandError(
+            f"line {start + 1} announces {npts} acceleration points; a record needs at least 2",
+            source=source,
+        )
+    if not (dt > 0 and math.isfinite(dt)):
+        raise FreestandError(
+            f"time step {dt!r} s on or before line {start + 1} is not positive", source=source
+        )
+    width_match = _V2_FORMAT.search(fmt)
+    width = int(width_match.group(2)) if width_match else None
+    factor = _unit_factor(unit, "acceleration", source=source, field="units", gravity=gravity)
+    values: list[float] = []
+    line_numbers: list[int] = []
+    for number, line in enumerate(lines[start + 1 :], start=start + 2):
+        if len(values) >= npts:
+            break
+        if _V2_CSMIP.match(line) or _V2_COSMOS.match(line) or line.lower().startswith("end-of"):
+            break
+        for token in _fixed_width_values(line, width):
+            values.append(_parse_float(token, source, f"line {number}"))
+            line_numbers.append(number)
+    if len(values) < npts:
+        raise FreestandError(
+            f"line {start + 1} announces {npts} acceleration points but only {len(values)} "
+            "follow; the file is truncated",
+            source=source,
+        )
+    acceleration = np.asarray(values[:npts], dtype=float)
+    _check_finite(acceleration, line_numbers, source, "acceleration")
+    previous = 0  # the channel's header starts after the previous channel's end marker
+    for index in range(start - 1, -1, -1):
+        marker = lines[index].strip().lower()
+        if marker.startswith("/&") or marker.startswith("end-of-data"):
+            previous = index + 1
+            break
+    return RecordComponent(
+        acceleration=acceleration * factor,
+        dt=float(dt),
+        source=source,
+        header=tuple(lines[previous : start + 1]),
+        unit=f"{unit} (channel {channel} of {len(blocks)})",
+    )
+
+
+def read_v2(path: str | Path, *, gravity: float = 9.81, name: str | None = None) -> GroundMotion:
+    """Read a COSMOS / CSMIP ``.V2`` file as a horizontal record (see :func:`read_v2_component`)."""
+    return _motion_from(read_v2_component(path, gravity=gravity), name)
+
+
 # ---------------------------------------------------------------------- CSV
 
 _HEADER_CELL = re.compile(r"^\s*([A-Za-z_ ]+?)\s*[\[(]\s*([^\])]*)\s*[\])]\s*$")
@@ -570,6 +778,14 @@ def _read_component(path: Path, dt, unit, gravity) -> tuple[RecordComponent, np.
                 source=source,
             )
         return component, None
+    if suffix == ".v2":
+        component = read_v2_component(path, gravity=gravity)
+        if unit is not None or dt is not None:
+            raise FreestandError(
+                "a .V2 file states its time step and unit in its header; do not give dt or unit",
+                source=source,
+            )
+        return component, None
     if suffix == ".csv":
         if dt is not None or unit is not None:
             raise FreestandError(
@@ -598,7 +814,7 @@ def load_record(
     Parameters
     ----------
     path : str or Path
-        Horizontal record: ``.AT2`` (PEER), ``.csv`` (header with units) or
+        Horizontal record: ``.AT2`` (PEER), ``.V2`` (COSMOS/CSMIP), ``.csv`` (header with units) or
         any other extension as a single-column file.
     dt : float, optional
         Time step [s]; needed for single-column files only.
@@ -786,3 +1002,41 @@ def parse_spectral_target(
         else 0.05
     )
     return SpectralTarget(acceleration, frequency, damping)
+
+
+def write_csv_record(
+    path: str | Path,
+    motion: GroundMotion,
+    *,
+    component: str = "horizontal",
+    gravity: float = 9.81,
+    comments: tuple[str, ...] = (),
+) -> None:
+    """Write one component of a record as a CSV file ``time [s], acceleration [g]``.
+
+    Parameters
+    ----------
+    path : str or Path
+        File to write.
+    motion : GroundMotion
+        The record.
+    component : str, optional
+        ``"horizontal"`` or ``"vertical"``; the vertical is written positive
+        upward, as recorded (and as :func:`load_record` expects).
+    gravity : float, optional
+        g [m/s^2] for the conversion to g.
+    comments : tuple of str, optional
+        Lines written first, each after ``# ``.
+
+    Notes
+    -----
+    Fixed formatting (time with 4 decimals, accelerations ``%.7e``), so the
+    same record gives the same bytes.
+    """
+    values = motion.component(component) / gravity
+    if component == "vertical":
+        values = -values
+    lines = [f"# {line}" for line in comments]
+    lines.append("time [s], acceleration [g]")
+    lines.extend(f"{i * motion.dt:.4f}, {value:.7e}" for i, value in enumerate(values.tolist()))
+    Path(path).write_text("\n".join(lines) + "\n", encoding="ascii")

@@ -188,7 +188,9 @@ def _toml_string(text: str) -> str:
     return f'"{escaped}"'
 
 
-def suite_text(name: str, records: list[dict]) -> str:
+def suite_text(
+    name: str, records: list[dict], *, description: str = "", comments: tuple[str, ...] = ()
+) -> str:
     """The TOML text of a suite file.
 
     Parameters
@@ -199,8 +201,16 @@ def suite_text(name: str, records: list[dict]) -> str:
         One dict per record with ``horizontal`` and optionally ``vertical``,
         ``scale``, ``name``, ``dt`` [s] and ``unit``; file names relative to
         the suite file.
+    description : str, optional
+        The suite's ``description``.
+    comments : tuple of str, optional
+        Comment lines written at the top (each after ``# ``).
     """
-    lines = [f"name = {_toml_string(name)}", ""]
+    lines = [f"# {line}" if line else "#" for line in comments]
+    lines.append(f"name = {_toml_string(name)}")
+    if description:
+        lines.append(f"description = {_toml_string(description)}")
+    lines.append("")
     for record in records:
         lines.append("[[record]]")
         for key in ("name", "horizontal", "vertical", "scale", "dt", "unit"):
@@ -213,3 +223,76 @@ def suite_text(name: str, records: list[dict]) -> str:
                 lines.append(f"{key} = {float(value)!r}")
         lines.append("")
     return "\n".join(lines)
+
+
+def write_suite(
+    folder: str | Path,
+    motions: list[GroundMotion],
+    *,
+    name: str,
+    file_format: str = "at2",
+    suite_file: str = "suite.toml",
+    description: str = "",
+    comments: tuple[str, ...] = (),
+    gravity: float = 9.81,
+) -> Path:
+    """Write records and the suite file that lists them into ``folder``.
+
+    Parameters
+    ----------
+    folder : str or Path
+        An existing folder.
+    motions : list of GroundMotion
+        The records; each gives ``recNN_H`` and, with a vertical component,
+        ``recNN_UP`` (positive up, as recorded).
+    name : str
+        Suite name.
+    file_format : {"at2", "csv"}
+        PEER ``.AT2`` (values in g, ``%15.7E``) or CSV ``time [s], acceleration [g]``.
+    suite_file : str, optional
+        Name of the suite file (default ``suite.toml``).
+    description, comments : optional
+        Written into the suite file.
+    gravity : float, optional
+        g [m/s^2] for values in g.
+
+    Returns
+    -------
+    Path
+        The suite file. Fixed formatting: the same records give the same bytes.
+    """
+    from freestand.io.records import write_at2, write_csv_record
+
+    if file_format not in ("at2", "csv"):
+        raise FreestandError(
+            f"format {file_format!r} is not known; use at2 or csv", field="--format"
+        )
+    folder = Path(folder)
+    width = max(2, len(str(len(motions))))
+    extension = ".AT2" if file_format == "at2" else ".csv"
+    entries = []
+    for index, motion in enumerate(motions, start=1):
+        stem = f"rec{index:0{width}d}"
+        entry = {"name": stem, "horizontal": f"{stem}_H{extension}"}
+        components = [("horizontal", entry["horizontal"])]
+        if motion.vertical is not None:
+            entry["vertical"] = f"{stem}_UP{extension}"
+            components.append(("vertical", entry["vertical"]))
+        for component, file_name in components:
+            label = f"{name}, {stem} {component}"
+            if file_format == "at2":
+                write_at2(
+                    folder / file_name, motion, component=component, description=label,
+                    gravity=gravity,
+                )  # fmt: skip
+            else:
+                write_csv_record(
+                    folder / file_name, motion, component=component, gravity=gravity,
+                    comments=(label,),
+                )  # fmt: skip
+        entries.append(entry)
+    path = folder / suite_file
+    path.write_text(
+        suite_text(name, entries, description=description, comments=comments), encoding="utf-8"
+    )
+    return path
