@@ -537,10 +537,17 @@ def _check_damping(damping: float) -> None:
         raise ValueError(f"damping ratio must satisfy 0 <= damping < 1, got {damping!r}")
 
 
-def _record_arrays(motion_or_array, dt, component):
-    from freestand.core.ground_motion import GroundMotion
+def _is_record(value) -> bool:
+    """A record in the sense of :class:`freestand.core.ground_motion.GroundMotion`.
 
-    if isinstance(motion_or_array, GroundMotion):
+    Read by its attributes (``dt``, ``horizontal``, ``vertical``, ``name``),
+    so that spectra need not import the record type that uses them.
+    """
+    return all(hasattr(value, name) for name in ("dt", "horizontal", "vertical", "name"))
+
+
+def _record_arrays(motion_or_array, dt, component):
+    if _is_record(motion_or_array):
         if dt is not None and not math.isclose(dt, motion_or_array.dt, rel_tol=1e-12):
             raise ValueError(f"dt={dt!r} differs from the motion's dt={motion_or_array.dt!r}")
         motion = motion_or_array
