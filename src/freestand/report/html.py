@@ -492,7 +492,7 @@ def _screening(doc: _Document, content: ReportContent) -> str:
                     f'<td>&#8212;</td><td>none found</td><td colspan="3"></td>'
                     f'<td class="case">{_e(paper)} {flag}</td></tr>'
                 )
-            for k, state in enumerate(reversed(case.blocks)):
+            for k, state in enumerate(case.blocks):
                 block = stack.blocks[stack.block_index(state.name)]
                 note = (
                     f'<td class="case" rowspan="{len(case.blocks)}">{_e(paper)} {flag}</td>'
