@@ -74,6 +74,28 @@ def _print_error(message: str) -> None:
     )
 
 
+def _is_usage_error(error: BaseException) -> bool:
+    """A click/typer usage error (typer may vendor click, so no import of click here)."""
+    return callable(getattr(error, "show", None)) and isinstance(
+        getattr(error, "exit_code", None), int
+    )
+
+
+def _given_value(error: BaseException, args: list[str]) -> str | None:
+    """The value typed for the option a usage error is about, if it can be found."""
+    param = getattr(error, "param", None)
+    names = list(getattr(param, "opts", ()) or ()) + list(getattr(param, "secondary_opts", ()))
+    for k, arg in enumerate(args):
+        for name in names:
+            if not name.startswith("-"):
+                continue
+            if arg == name and k + 1 < len(args):
+                return args[k + 1]
+            if arg.startswith(name + "="):
+                return arg[len(name) + 1 :]
+    return None
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; return the exit status.
 
@@ -89,27 +111,33 @@ def main(argv: list[str] | None = None) -> int:
 
     import numpy as np
 
+    args = list(sys.argv[1:] if argv is None else argv)
     try:
         with warnings.catch_warnings(), np.errstate(all="ignore"):
             # numerical warnings (overflow in a record of absurd values...) are not
             # for the user: the inputs are checked, and the results carry a status
             warnings.simplefilter("ignore", RuntimeWarning)
-            app(args=argv, prog_name="freestand", standalone_mode=True)
-    except SystemExit as exit_:  # usage errors (exit 2), --help, --version, typer.Exit
-        code = exit_.code
-        if code is None:
-            return 0
-        if isinstance(code, int):
-            return code
-        _print_error(str(code))
-        return 1
+            result = app(args=args, prog_name="freestand", standalone_mode=False)
     except FreestandError as error:
         _print_error(str(error))
         return 2
     except KeyboardInterrupt:
         _print_error("interrupted")
         return 130
-    except Exception as error:  # a defect of freestand: one line, not a traceback
+    except SystemExit as exit_:
+        code = exit_.code
+        return code if isinstance(code, int) else (0 if code is None else 1)
+    except Exception as error:
+        if _is_usage_error(error):
+            value = _given_value(error, args)
+            message = getattr(error, "message", None)
+            if value is not None and isinstance(message, str) and repr(value) not in message:
+                error.message = f"{message} (got {value!r})"
+            error.show()
+            return error.exit_code
+        if type(error).__name__ == "Abort":
+            _print_error("aborted")
+            return 1
         if os.environ.get("FREESTAND_DEBUG"):
             raise
         _print_error(
@@ -117,7 +145,7 @@ def main(argv: list[str] | None = None) -> int:
             "please report it with the command line (FREESTAND_DEBUG=1 shows the traceback)"
         )
         return 1
-    return 0
+    return result if isinstance(result, int) else 0
 
 
 if __name__ == "__main__":  # pragma: no cover

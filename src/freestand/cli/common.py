@@ -3,10 +3,12 @@
 Output paths follow one rule in every command:
 
 - ``--plot FOLDER`` is a folder; the figures are written into it under fixed
-  names (``map.png``, ``fig7_half_sine_pulse.svg``...). The folder is created
-  if missing, but its parent must exist.
+  names (``map.png``, ``fig7_half_sine_pulse.svg``...).
 - every other output (``--csv``, ``--samples``, ``--animate``, ``report -o``)
-  is a file with one of the suffixes the option names, in an existing folder.
+  is a file with one of the suffixes the option names.
+- missing folders on the way are created (like ``mkdir -p``), but only once
+  everything is computed; a path under a file, onto a folder, in a folder that
+  cannot be written or with another suffix is refused.
 
 They are checked before any computation (:func:`check_folder`,
 :func:`check_file`), and written through :class:`Staging`: into temporary
@@ -31,9 +33,6 @@ from freestand.errors import FreestandError
 from freestand.io.model_file import ModelFile, load_model
 from freestand.io.spectrum_input import parse_spectrum_option
 from freestand.io.units import to_si
-
-#: Suffixes that mark a path as a figure file rather than a folder.
-FIGURE_SUFFIXES = (".png", ".svg", ".pdf", ".jpg", ".jpeg", ".gif", ".eps", ".ps", ".tif")
 
 
 def console() -> Console:
@@ -111,7 +110,9 @@ def resolve_spectrum(option: str | None, model: ModelFile, direction: str) -> Sp
         option, model_spectra=model.spectra, base_dir=model.base_dir, gravity=model.gravity
     )
     if spectrum.direction != direction:
-        other = ", ".join(repr(s.name) for s in model.spectra.values() if s.direction == direction)
+        other = ", ".join(
+            repr(name) for name, s in model.spectra.items() if s.direction == direction
+        )
         raise FreestandError(
             f"{option!r} is a {spectrum.direction} spectrum; this check needs a {direction} one"
             + (f" (the model has {other})" if other else "")
@@ -138,21 +139,24 @@ def _check_writable(folder: Path, option: str, what: Path) -> None:
     os.unlink(scratch)
 
 
-def _check_parent(path: Path, option: str) -> None:
+def _existing_ancestor(path: Path) -> Path:
+    """The nearest folder (or file) above ``path`` that exists."""
     parent = path.parent
-    if not parent.exists():
+    while not parent.exists() and parent != parent.parent:
+        parent = parent.parent
+    return parent
+
+
+def _check_parent(path: Path, option: str) -> None:
+    """The folders above ``path`` exist, or can be made, and can be written into."""
+    existing = _existing_ancestor(path)
+    if not existing.is_dir():
         raise FreestandError(
-            f"the folder {str(parent)!r} of {str(path)!r} does not exist; create it first "
-            f"(mkdir -p {parent}) or choose another path",
+            f"{str(existing)!r} is a file, not a folder, so {str(path)!r} cannot be written "
+            "under it; choose another path",
             source=option,
         )
-    if not parent.is_dir():
-        raise FreestandError(
-            f"{str(parent)!r} is a file, not a folder, so {str(path)!r} cannot be written; "
-            "choose another path",
-            source=option,
-        )
-    _check_writable(parent, option, path)
+    _check_writable(existing, option, path)
 
 
 def check_folder(path: Path | None, option: str = "--plot") -> Path | None:
@@ -168,11 +172,11 @@ def check_folder(path: Path | None, option: str = "--plot") -> Path | None:
             )
         _check_writable(path, option, path)
         return path
-    if path.suffix.lower() in FIGURE_SUFFIXES:
+    if path.suffix:
         raise FreestandError(
-            f"{str(path)!r} looks like a file; {option} takes a folder that the figures are "
-            f"written into (PNG and SVG, under fixed names), e.g. {option} "
-            f"{path.with_suffix('') if path.stem else 'figures'}",
+            f"{str(path)!r} looks like a file name ({path.suffix}); {option} takes a folder "
+            f"that the figures are written into (PNG and SVG, under fixed names), e.g. "
+            f"{option} {path.with_suffix('') if path.stem else 'figures'}",
             source=option,
         )
     _check_parent(path, option)
@@ -213,9 +217,11 @@ class Staging:
         self._folders: list[tuple[Path, Path]] = []
 
     def file(self, target: Path) -> Path:
-        """A temporary file beside ``target``, with the same suffix."""
+        """A temporary file for ``target``, with the same suffix."""
         handle, name = tempfile.mkstemp(
-            prefix=f".{target.stem}.", suffix=f".tmp{target.suffix}", dir=target.parent
+            prefix=f".{target.stem}.",
+            suffix=f".tmp{target.suffix}",
+            dir=_existing_ancestor(target) if not target.parent.is_dir() else target.parent,
         )
         os.close(handle)
         self._files.append((Path(name), target))
@@ -223,21 +229,26 @@ class Staging:
 
     def folder(self, target: Path) -> Path:
         """A temporary folder whose files go into ``target`` (created if missing)."""
-        base = target if target.is_dir() else target.parent
+        base = target if target.is_dir() else _existing_ancestor(target)
         name = tempfile.mkdtemp(prefix=f".{target.name or 'figures'}.tmp-", dir=base)
         self._folders.append((Path(name), target))
         return Path(name)
+
+    def forget(self, temporary: Path) -> None:
+        """Drop a temporary that was only a step (already removed)."""
+        self._files = [(t, target) for t, target in self._files if t != temporary]
 
     def commit(self) -> list[Path]:
         """Rename everything into place; the target paths, in the order written."""
         written = []
         for temporary, target in self._folders:
-            target.mkdir(exist_ok=True)
+            target.mkdir(parents=True, exist_ok=True)
             for item in sorted(temporary.iterdir()):
                 os.replace(item, target / item.name)
                 written.append(target / item.name)
             shutil.rmtree(temporary, ignore_errors=True)
         for temporary, target in self._files:
+            target.parent.mkdir(parents=True, exist_ok=True)
             os.chmod(temporary, 0o644)
             os.replace(temporary, target)
             written.append(target)
