@@ -307,6 +307,11 @@ def sample_command(
         excitations = [known[name] for name in excitation]
     else:
         excitations = list(model.excitations)
+    if not 0 <= seed < 2**63:
+        raise FreestandError(
+            f"{seed} is not a seed; give a whole number >= 0, e.g. --seed 1",
+            source="option --seed",
+        )
     if not 1 <= n <= MAX_SAMPLES:
         raise FreestandError(
             f"{n} samples per case is out of range; give 1 to {MAX_SAMPLES:,}, e.g. --n 10000",

@@ -34,6 +34,8 @@ from freestand.errors import FreestandError
 #: Highest pulse frequency accepted [Hz]: beyond, the pulse is far shorter than any rocking
 #: period and the overturning amplitude is beyond any support acceleration.
 MAX_FREQUENCY = 100.0
+#: Lowest pulse frequency accepted [Hz]: a pulse of 50 s, longer than any record.
+MIN_FREQUENCY = 0.01
 
 CONCLUSION = (
     "Housner's half-sine criterion, as the paper applies it, is unconservative (Makris and "
@@ -189,10 +191,10 @@ def overturn(
                 source="--amplitudes",
             )
     for value in frequency_values:
-        if not 0 < value <= MAX_FREQUENCY:
+        if not MIN_FREQUENCY <= value <= MAX_FREQUENCY:
             raise FreestandError(
-                f"{value:g} Hz is not a pulse frequency; give frequencies between 0 and "
-                f"{MAX_FREQUENCY:g} Hz, e.g. --frequencies 0.5,1,2",
+                f"{value:g} Hz is not a pulse frequency; give frequencies between "
+                f"{MIN_FREQUENCY:g} and {MAX_FREQUENCY:g} Hz, e.g. --frequencies 0.5,1,2",
                 source="--frequencies",
             )
     weight = (

@@ -110,6 +110,12 @@ class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
 
+def _name_value(value: Any) -> Any:
+    if isinstance(value, str) and not value.strip():
+        raise ValueError(f'{value!r} is an empty name; give a name, e.g. name = "bridge"')
+    return value
+
+
 def _gravity(info) -> float:
     return (info.context or {}).get("gravity", 9.81)
 
@@ -217,6 +223,7 @@ def _inertia_value(value: Any, info) -> float:
 
 class _BlockSpec(_Strict):
     name: str
+    _name = field_validator("name", mode="before")(_name_value)
     mass: Quantity
     inertia: Quantity
     centre: tuple[Quantity, Quantity]
@@ -267,6 +274,7 @@ class _BlockSpec(_Strict):
 
 class _PaperBody(_Strict):
     name: str
+    _name = field_validator("name", mode="before")(_name_value)
     mass: Quantity
     inertia: Quantity
     friction: _FrictionSpec | None = None
@@ -328,6 +336,7 @@ class _PaperSpec(_Strict):
 
 class _ConfigurationSpec(_Strict):
     name: str
+    _name = field_validator("name", mode="before")(_name_value)
     block: list[_BlockSpec] | None = None
     paper: _PaperSpec | None = None
 
@@ -364,6 +373,7 @@ class _ConfigurationSpec(_Strict):
 
 class _ExcitationSpec(_Strict):
     name: str
+    _name = field_validator("name", mode="before")(_name_value)
     horizontal: Quantity
     vertical: Quantity = 0.0
     vertical_senses: str = "given"
@@ -400,6 +410,7 @@ class _ExcitationSpec(_Strict):
 class _ModelSpec(_Strict):
     model_config = ConfigDict(extra="forbid", frozen=True)
     name: str
+    _name = field_validator("name", mode="before")(_name_value)
     gravity: Quantity = 9.81
     excitation: list[_ExcitationSpec]
     configuration: list[_ConfigurationSpec]
