@@ -106,9 +106,14 @@ def resolve_spectrum(option: str | None, model: ModelFile, direction: str) -> Sp
     """
     if option is None:
         return model.spectrum(direction)
-    spectrum = parse_spectrum_option(
-        option, model_spectra=model.spectra, base_dir=model.base_dir, gravity=model.gravity
-    )
+    with _busy(
+        f"computing the response spectrum of {option.partition(':')[2].partition(',')[0]}"
+        if option.strip().startswith("record:")
+        else None
+    ):
+        spectrum = parse_spectrum_option(
+            option, model_spectra=model.spectra, base_dir=model.base_dir, gravity=model.gravity
+        )
     if spectrum.direction != direction:
         other = ", ".join(
             repr(name) for name, s in model.spectra.items() if s.direction == direction
@@ -120,6 +125,21 @@ def resolve_spectrum(option: str | None, model: ModelFile, direction: str) -> Sp
             source="--spectrum",
         )
     return spectrum
+
+
+@contextlib.contextmanager
+def _busy(description: str | None) -> Iterator[None]:
+    """A spinner on stderr for work that may take a while (a line when not a terminal)."""
+    if description is None:
+        yield
+        return
+    err = error_console()
+    if not err.is_terminal:
+        err.print(f"{escape(description)} ...")
+        yield
+        return
+    with err.status(escape(description)):
+        yield
 
 
 # --- output paths ---------------------------------------------------------------------------

@@ -528,7 +528,9 @@ def _screening(doc: _Document, content: ReportContent) -> str:
         parts.append(
             doc.table(
                 f"Initial type of motion and accelerations, configuration "
-                f"<i>{_e(stack.name)}</i> (analogue of the paper's Tables 2 and 4).",
+                f"<i>{_e(stack.name)}</i> (analogue of the paper's Tables 2 and 4). "
+                "Accelerations are relative to the support: a block at rest on a body that "
+                "moves has that body's acceleration. Blocks bottom to top.",
                 _head(
                     "excitation",
                     "sense",
