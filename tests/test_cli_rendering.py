@@ -114,3 +114,10 @@ def test_map_points_are_the_cases_screen_computes():
                     m["sense"],
                     point,
                 )
+
+
+def test_frequency_outside_the_parking_range_is_a_note_not_an_error():
+    result = run_freestand("frequency", str(CRANE), "--positions", "0")
+    assert result.returncode == 0, result.stderr
+    assert "21.5" in result.stdout  # Dunkerley at the support (paper section 6)
+    assert "outside the parking range" in _flat(result.stdout)

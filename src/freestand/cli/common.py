@@ -79,7 +79,7 @@ def parse_numbers(
         return None
     values = []
     for item in filter(None, (part.strip() for part in text.split(","))):
-        if quantity is not None:
+        if quantity is not None and any(c.isdigit() for c in item):
             values.append(to_si(item, quantity, field="", source=option, gravity=gravity))
             continue
         try:
@@ -88,7 +88,7 @@ def parse_numbers(
             value = None
         if value is None or value != value or abs(value) == float("inf"):
             raise FreestandError(
-                f"{item!r} is not a finite number; give a comma-separated list in {unit}, "
+                f"{item!r} is not a number (or not finite); give a comma-separated list in {unit}, "
                 "e.g. 1.5,4.9",
                 source=option,
             )

@@ -27,8 +27,7 @@ def frequency(
     positions: str = typer.Option(
         None,
         "--positions",
-        help="Cart positions from the left support, within the parking range, e.g. 1.33,4.9 "
-        "(bare numbers in m) or '133 cm'.",
+        help="Cart positions from the left support, e.g. 1.33,4.9 (bare numbers in m) or '133 cm'.",
     ),
     spectrum: str = typer.Option(
         None,
@@ -63,18 +62,26 @@ def frequency(
                     "positions measured from the left support",
                     source="--positions",
                 )
-            if not parking[0] - 1e-9 * beam.span <= value <= parking[1] + 1e-9 * beam.span:
-                raise FreestandError(
-                    f"position {value:g} m is outside the cart's parking range "
-                    f"{parking[0]:g} .. {parking[1]:g} m ([beam] parking in {model.source}); "
-                    "give positions inside it, e.g. --positions "
-                    f"{parking[0]:g},{(parking[0] + parking[1]) / 2:g}",
-                    source="--positions",
-                )
     full_sweep = frequency_sweep(beam, parking=parking)
     sweep = full_sweep if values is None else frequency_sweep(beam, np.array(values))
     vertical = resolve_spectrum(spectrum, model, "vertical")
-    check = jump_check(sweep, vertical, model.gravity, parking=parking) if vertical else None
+    tolerance = 1e-9 * beam.span
+    parked = [parking[0] - tolerance <= p <= parking[1] + tolerance for p in sweep.position]
+    outside_note = None
+    if not all(parked):
+        outside = ", ".join(
+            f"{p:g}" for p, inside in zip(sweep.position, parked, strict=True) if not inside
+        )
+        outside_note = (
+            f"position(s) {outside} m lie outside the parking range {parking[0]:g}-"
+            f"{parking[1]:g} m: the cart does not park there"
+            + ("; their jump verdict is given as if it did" if vertical else "")
+        )
+    check = None
+    if vertical:
+        # the jump check counts parked positions only; for positions asked outside the
+        # parking range alone, it is made as if the cart parked there (and says so)
+        check = jump_check(sweep, vertical, model.gravity, parking=parking if any(parked) else None)
 
     written: list[Path] = []
     if plot is not None:
@@ -106,6 +113,8 @@ def frequency(
                 )
             rows.append(row)
         document = {"model": model.name, "parking": list(parking), "positions": rows}
+        if outside_note:
+            document["note"] = outside_note
         if check is not None:
             document["jump_check"] = {
                 "spectrum": check.spectrum_label,
@@ -157,6 +166,8 @@ def frequency(
         f"Parking range {parking[0]:g}-{parking[1]:g} m: Dunkerley {low:.1f}-{high:.1f} Hz, "
         f"exact {exact_low:.1f}-{exact_high:.1f} Hz (Dunkerley is a lower bound)."
     )
+    if outside_note:
+        out.print(f"[yellow]note:[/] {escape(outside_note)}")
     if check is not None:
         runs = ", ".join(f"{a:.2f}-{b:.2f} m" for a, b in check.risk_intervals) or "none"
         out.print(escape(f"Vertical spectrum: {check.spectrum_label}"))
