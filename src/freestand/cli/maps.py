@@ -27,6 +27,9 @@ _SENSES = {"+": (1,), "-": (-1,), "both": (1, -1)}
 #: beyond, a run lasts many minutes and its --samples file many gigabytes.
 MAX_SAMPLES = 10_000_000
 MAX_SOLVES = 20_000_000
+#: Most grid nodes of one ``map`` run (nodes per axis squared, times senses and
+#: configurations): about 1.5 GB of results and a minute of work.
+MAX_MAP_NODES = 10_000_000
 
 
 def _senses(value: str) -> tuple[int, ...]:
@@ -162,6 +165,15 @@ def map_command(
         )
     check_parameters([(x_axis.parameter, x), (y_axis.parameter, y)], stacks, "--x/--y")
     senses = _senses(sense)
+    total = n * n * len(senses) * len(stacks)
+    if total > MAX_MAP_NODES:
+        largest = int((MAX_MAP_NODES / (len(senses) * len(stacks))) ** 0.5)
+        raise FreestandError(
+            f"{n} x {n} nodes x {len(senses) * len(stacks)} map(s) is {total:,} nodes, beyond "
+            f"the {MAX_MAP_NODES:,} of one run (each takes about 150 bytes and a few "
+            f"microseconds); give --nodes {largest} or fewer, or --sense + / -",
+            source="--nodes",
+        )
     check_folder(plot, "--plot")
     check_file(csv_path, "--csv", (".csv",))
     maps = []

@@ -44,7 +44,9 @@ def simulate(
     vertical: Path = typer.Option(
         None, "--vertical", help="Vertical record (positive up, as recorded)."
     ),
-    dt: float = typer.Option(None, "--dt", help="Time step [s] of single-column records."),
+    dt: str = typer.Option(
+        None, "--dt", help="Time step of single-column records, e.g. 0.005 [s] or '5 ms'."
+    ),
     unit: str = typer.Option(
         None, "--unit", help="Unit of single-column records, e.g. g or m/s^2."
     ),
@@ -61,11 +63,14 @@ def simulate(
         help="Scale the records so that the horizontal pseudo-acceleration at one "
         "frequency is A: 'A@F[,DAMPING]', e.g. '1.05g@2.5Hz,5%' (instead of --scale).",
     ),
-    duration: float = typer.Option(
-        None, "--duration", help="Simulated time [s] (default: the record)."
+    duration: str = typer.Option(
+        None, "--duration", help="Simulated time, e.g. 10 [s] or '10 s' (default: the record)."
     ),
-    step: float = typer.Option(
-        None, "--step", help="Largest integration step [s] (default 1 ms; single block 0.02/p)."
+    step: str = typer.Option(
+        None,
+        "--step",
+        help="Largest integration step, e.g. 0.001 [s] or '1 ms' (default 1 ms; single block "
+        "0.02/p).",
     ),
     method: str = typer.Option(
         "auto", "--method", help="Solver: auto, general or single-block (one block only)."
@@ -93,6 +98,9 @@ def simulate(
         )
     target = None if spectral is None else parse_spectral_target(spectral, gravity=model.gravity)
     peak_value = number(peak, "--peak", "acceleration", model.gravity)
+    dt = number(dt, "--dt", "time")
+    duration = number(duration, "--duration", "time")
+    step = number(step, "--step", "time")
     if scale is not None and not (math.isfinite(scale) and scale != 0):
         raise FreestandError(
             f"{scale} is not a scale factor; give a finite, non-zero number, e.g. --scale 1.5",
