@@ -142,9 +142,10 @@ def to_si(
         raise FreestandError(f"{value!r} is not finite; {fix}", source=source, field=field)
     limit = LIMITS[quantity]
     if abs(result) > limit:
+        suffix = f" {unit}" if unit else ""
         raise FreestandError(
-            f"{value!r} is {result:.3g} {unit or '(no unit)'}, beyond the plausible "
-            f"{limit:g} {unit}; check the value and its unit ({fix})".replace(" )", ")"),
+            f"{value!r} is {result:.3g}{suffix}, beyond the plausible {limit:g}{suffix}; "
+            f"check the value and its unit ({fix})",
             source=source,
             field=field,
         )

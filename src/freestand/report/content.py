@@ -589,7 +589,7 @@ def summary_sentences(
     frequency: FrequencyAssessment | None,
 ) -> tuple[str, ...]:
     """The conclusions at the top of the report, like the paper's section 7."""
-    sentences = []
+    sentences = [f"Warning: {message}." for message in model.warnings()]
     for stack in model.configurations:
         own = [c for c in cases if c.configuration == stack.name]
         sentences.append(_configuration_sentence(stack, own))
