@@ -106,6 +106,8 @@ def to_si(
     elif isinstance(value, str) and _is_plain_number(value):
         # a bare number written as text (command-line options): already SI
         result = float(value)
+    elif isinstance(value, str) and not any(c.isdigit() for c in value):
+        raise FreestandError(f"{value!r} is not a number; {fix}", source=source, field=field)
     elif isinstance(value, str):
         text = value.strip()
         if quantity == "acceleration":
