@@ -107,7 +107,11 @@ def to_si(
         # a bare number written as text (command-line options): already SI
         result = float(value)
     elif isinstance(value, str) and not any(c.isdigit() for c in value):
-        raise FreestandError(f"{value!r} is not a number; {fix}", source=source, field=field)
+        raise FreestandError(
+            f"cannot read {value!r} as a quantity: it is not a number; {fix}",
+            source=source,
+            field=field,
+        )
     elif isinstance(value, str):
         text = value.strip()
         if quantity == "acceleration":
