@@ -33,7 +33,7 @@ def test_help_keeps_units_and_shows_flags_as_flags(command):
     [
         (
             "simulate",
-            ("Time step [s] of single-column records", "factor [-]", "Simulated time [s]"),
+            ("e.g. 0.005 [s] or '5 ms'", "factor [-]", "e.g. 10 [s] or '10 s'"),
         ),
         ("frequency", ("Model file (TOML) with a [beam] section",)),
         ("map", ("Grid nodes per axis",)),
