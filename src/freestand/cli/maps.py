@@ -14,7 +14,7 @@ from rich.markup import escape
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from freestand.cli.common import check_file, check_folder, load, staging
+from freestand.cli.common import check_file, check_folder, load, staging, warn
 from freestand.core.batch import MOTIONS, STATUS_NAMES
 from freestand.core.mode_map import ModeMap, mode_map, model_points, point_label
 from freestand.core.sampling import INTERVALS, monte_carlo
@@ -181,6 +181,15 @@ def map_command(
         for stack in stacks:
             for s in senses:
                 maps.append(mode_map(stack, x_axis, y_axis, nominal, s, n, model.gravity, advance))
+    for m in maps:
+        invalid = m.fractions().get("invalid input", 0.0)
+        if invalid:
+            warn(
+                f"{m.configuration}, sense {_sense_word(m.sense)}: {100 * invalid:.1f} % of the "
+                "nodes make no model (a mass or inertia <= 0, a negative friction coefficient, "
+                "contacts out of order or a centre below its contacts) and are shown as "
+                "'invalid input'; narrow the axis ranges"
+            )
     by_name = {stack.name: stack for stack in stacks}
     points = []
     for m in maps:
