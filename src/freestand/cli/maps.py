@@ -5,6 +5,7 @@ from __future__ import annotations
 import contextlib
 import csv
 import json
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -328,6 +329,16 @@ def sample_command(
         excitations = [known[name] for name in excitation]
     else:
         excitations = list(model.excitations)
+    excitations = [
+        replace(
+            e,
+            name=e.name if len(e.verticals()) == 1 else f"{e.name} (a_v {word})",
+            vertical=vertical,
+            vertical_senses="given",
+        )
+        for e in excitations
+        for vertical, word in zip(e.verticals(), ("down", "up"), strict=False)
+    ]
     if not 0 <= seed < 2**63:
         raise FreestandError(
             f"{seed} is not a seed; give a whole number >= 0, e.g. --seed 1",
