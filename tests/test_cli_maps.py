@@ -28,7 +28,7 @@ def run(*args: str) -> subprocess.CompletedProcess:
 
 
 def test_map_json_csv_and_plot(tmp_path):
-    plot = tmp_path / "map.png"
+    plot = tmp_path / "figures"
     table = tmp_path / "map.csv"
     done = run(
         "map",
@@ -53,7 +53,9 @@ def test_map_json_csv_and_plot(tmp_path):
     assert set(senses) == {"+", "-"}
     regions = {p["excitation"]: p["region"] for p in senses["+"]["points"]}
     assert regions == {"rigid": "bridge rests, cart rests", "elastic": "bridge rests, cart rocks"}
-    assert plot.stat().st_size > 10_000
+    assert (plot / "map.png").stat().st_size > 10_000
+    assert (plot / "map.svg").exists()
+    assert document["files"][:2] == [str(plot / "map.png"), str(plot / "map.svg")]
     with table.open() as handle:
         rows = list(csv.DictReader(handle))
     assert len(rows) == 2 * 40 * 40

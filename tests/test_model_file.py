@@ -153,11 +153,26 @@ BAD = [
         ["configuration[0]", "either"],
     ),
     (
-        "negative vertical",
-        BASE.replace('vertical = "2.35 m/s^2"', 'vertical = "-2.35 m/s^2"', 1),
-        ["vertical", "negative"],
+        "negative horizontal",
+        BASE.replace('horizontal = "2.70 m/s^2"', 'horizontal = "-2.70 m/s^2"', 1),
+        ["horizontal", "negative", "magnitude"],
+    ),
+    (
+        "vertical senses",
+        BASE.replace(
+            'vertical = "2.35 m/s^2"', 'vertical = "2.35 m/s^2"\nvertical_senses = "up"', 1
+        ),
+        ["vertical_senses", "'up'", "'both'"],
     ),
 ]
+
+
+def test_negative_vertical_is_an_upward_support_acceleration():
+    model = load_model_text(
+        BASE.replace('vertical = "2.35 m/s^2"', 'vertical = "-2.35 m/s^2"', 1), source="m.toml"
+    )
+    assert model.excitations[0].vertical == -2.35
+    assert model.excitations[0].verticals() == (-2.35,)
 
 
 @pytest.mark.parametrize(("label", "text", "fragments"), BAD, ids=[b[0] for b in BAD])

@@ -60,3 +60,20 @@ def test_fig7_and_fig8_analogues():
     assert spectrum.label in labels8
     assert sum("min margin" in s for s in labels8) == 3
     assert "[m/s^2]" in fig8.axes[0].get_ylabel()
+
+
+def test_fig8_legend_below_the_axes_and_margin_markers_apart():
+    limits = overturning_limits(CART, np.geomspace(0.2, 10.0, 12), operating_amplitude=10.31)
+    spectrum = crane_stand_in_spectra()[0]
+    checks = check_spectrum(limits, spectrum)
+    fig = plot_spectrum_check(limits, spectrum, checks)
+    ax = fig.axes[0]
+    assert ax.get_legend() is None  # no legend over the curves
+    assert len(fig.legends) == 1
+    fig.draw_without_rendering()  # runs the constrained layout
+    legend_box = fig.legends[0].get_window_extent()
+    assert legend_box.y1 <= ax.get_window_extent().y0  # below the axes
+    margins = [line for line in ax.get_lines() if "min margin" in line.get_label()]
+    # two limits may have their smallest margin at the same frequency: different
+    # shapes and sizes keep both markers visible
+    assert len({(line.get_marker(), line.get_markersize()) for line in margins}) == len(margins)

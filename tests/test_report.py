@@ -266,3 +266,29 @@ def test_model_without_spectra_or_beam_gets_no_verdicts():
     ]
     assert "no overturning verdict is given" in report.text
     assert "5 Vertical frequency" not in report.text
+
+
+def test_overturning_conclusions_name_the_weight_and_give_the_vertical_limits(crane_report):
+    content, html = crane_report
+    (item,) = [a for a in content.overturning if a.configuration == "x-z cart right"]
+    assert item.vertical == pytest.approx(2.35)
+    # independent check: the same block with the weight m (g - a_v)
+    from freestand.core.overturning import CURVE_FREQUENCIES, overturning_limits
+    from freestand.core.rocking import RockingBlock
+
+    stack = next(s for s in content.model.configurations if s.name == "x-z cart right")
+    lighter = RockingBlock.from_block(
+        stack.blocks[1], item.pivot, gravity=9.81, vertical_acceleration=2.35
+    )
+    limits = overturning_limits(
+        lighter, CURVE_FREQUENCIES, kind="half-sine", operating_amplitude=10.31
+    )
+    exact = limits.operating_frequency["exact"]
+    assert item.half_sine_vertical.operating_frequency["exact"] == pytest.approx(exact)
+    # lighter block: a pulse overturns it up to a higher frequency (shorter pulses)
+    assert exact > item.half_sine.operating_frequency["exact"]
+    summary = [s for s in content.summary if "x-z cart right the cart rocks" in s][0]
+    assert "use the weight m g" in summary
+    assert f"longer than {0.5 / exact:.2f} s (exact)" in summary
+    assert "m (g - a_v), a_v = 2.35 m/s^2" in summary
+    assert "with the weight m (g &#8722; a<sub>v</sub>)" in html

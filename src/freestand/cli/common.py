@@ -1,13 +1,38 @@
-"""Helpers shared by the sub-commands: option parsing and consoles."""
+"""Helpers shared by the sub-commands: option parsing, consoles, model loading, output paths.
+
+Output paths follow one rule in every command:
+
+- ``--plot FOLDER`` is a folder; the figures are written into it under fixed
+  names (``map.png``, ``fig7_half_sine_pulse.svg``...).
+- every other output (``--csv``, ``--samples``, ``--animate``, ``report -o``)
+  is a file with one of the suffixes the option names.
+- missing folders on the way are created (like ``mkdir -p``), but only once
+  everything is computed; a path under a file, onto a folder, in a folder that
+  cannot be written or with another suffix is refused.
+
+They are checked before any computation (:func:`check_folder`,
+:func:`check_file`), and written through :class:`Staging`: into temporary
+files first, renamed into place only when every output of the command is
+complete, so a failure never leaves a partial set of files behind.
+"""
 
 from __future__ import annotations
 
+import contextlib
+import os
+import shutil
+import tempfile
+from collections.abc import Iterator
+from pathlib import Path
+
 from rich.console import Console
+from rich.markup import escape
 
 from freestand.core.spectra import Spectrum
 from freestand.errors import FreestandError
-from freestand.io.model_file import ModelFile
+from freestand.io.model_file import ModelFile, load_model
 from freestand.io.spectrum_input import parse_spectrum_option
+from freestand.io.units import to_si
 
 
 def console() -> Console:
@@ -16,28 +41,256 @@ def console() -> Console:
     return terminal if terminal.is_terminal else Console(width=120)
 
 
-def parse_numbers(text: str | None, option: str, unit: str) -> list[float] | None:
-    """``"1.5,2,4.9"`` -> [1.5, 2.0, 4.9]; a FreestandError naming the option otherwise."""
+def error_console() -> Console:
+    """The console on stderr, for warnings and progress."""
+    return Console(stderr=True, highlight=False, soft_wrap=True)
+
+
+def warn(message: str) -> None:
+    """Print a warning on stderr (never on stdout, which may hold a JSON document)."""
+    error_console().print(f"[bold yellow]warning:[/] {escape(message)}")
+
+
+def load(path: Path) -> ModelFile:
+    """Load a model file and warn on stderr about what it allows but should not."""
+    model = load_model(path)
+    for message in model.warnings():
+        warn(message)
+    return model
+
+
+def number(text: str | None, option: str, quantity: str, gravity: float = 9.81) -> float | None:
+    """A quantity option (``"0.3g"``, ``"2.9 m/s^2"``, ``"5 ms"``, ``"2.9"``) in SI, or None."""
+    if text is None:
+        return None
+    return to_si(text, quantity, field="", source=option, gravity=gravity)
+
+
+def parse_numbers(
+    text: str | None, option: str, unit: str, quantity: str | None = None, gravity: float = 9.81
+) -> list[float] | None:
+    """``"1.5,2,4.9"`` -> [1.5, 2.0, 4.9]; a FreestandError naming the option otherwise.
+
+    With ``quantity`` (``"acceleration"``, ``"frequency"``, ``"length"``) each
+    item may carry a unit (``0.5g``, ``2.5 Hz``); bare numbers are in ``unit``
+    (SI). Every value must be finite.
+    """
     if text is None:
         return None
     values = []
     for item in filter(None, (part.strip() for part in text.split(","))):
+        if quantity is not None and any(c.isdigit() for c in item):
+            values.append(to_si(item, quantity, field="", source=option, gravity=gravity))
+            continue
         try:
-            values.append(float(item))
+            value = float(item)
         except ValueError:
+            value = None
+        if value is None or value != value or abs(value) == float("inf"):
             raise FreestandError(
-                f"{item!r} is not a number; give a comma-separated list in {unit}, e.g. 1.5,4.9",
+                f"{item!r} is not a number (or not finite); give a comma-separated list in {unit}, "
+                "e.g. 1.5,4.9",
                 source=option,
-            ) from None
+            )
+        values.append(value)
     if not values:
         raise FreestandError(f"no values given; e.g. {option} 1.5,4.9", source=option)
     return values
 
 
 def resolve_spectrum(option: str | None, model: ModelFile, direction: str) -> Spectrum | None:
-    """The spectrum named by ``--spectrum``, else the model's first one for ``direction``."""
+    """The spectrum named by ``--spectrum``, else the model's first one for ``direction``.
+
+    A spectrum of the other direction is refused: the horizontal overturning
+    check needs a horizontal spectrum, the jump check a vertical one.
+    """
     if option is None:
         return model.spectrum(direction)
-    return parse_spectrum_option(
-        option, model_spectra=model.spectra, base_dir=model.base_dir, gravity=model.gravity
-    )
+    with _busy(
+        f"computing the response spectrum of {option.partition(':')[2].partition(',')[0]}"
+        if option.strip().startswith("record:")
+        else None
+    ):
+        spectrum = parse_spectrum_option(
+            option, model_spectra=model.spectra, base_dir=model.base_dir, gravity=model.gravity
+        )
+    if spectrum.direction != direction:
+        other = ", ".join(
+            repr(name) for name, s in model.spectra.items() if s.direction == direction
+        )
+        raise FreestandError(
+            f"{option!r} is a {spectrum.direction} spectrum; this check needs a {direction} one"
+            + (f" (the model has {other})" if other else "")
+            + f", e.g. 'rg1.60:pga=0.3g,direction={direction}'",
+            source="--spectrum",
+        )
+    return spectrum
+
+
+@contextlib.contextmanager
+def _busy(description: str | None) -> Iterator[None]:
+    """A spinner on stderr for work that may take a while (a line when not a terminal)."""
+    if description is None:
+        yield
+        return
+    err = error_console()
+    if not err.is_terminal:
+        err.print(f"{escape(description)} ...")
+        yield
+        return
+    with err.status(escape(description)):
+        yield
+
+
+# --- output paths ---------------------------------------------------------------------------
+
+
+def _check_writable(folder: Path, option: str, what: Path) -> None:
+    """Create and remove a scratch file in ``folder``: the only sure test of writing."""
+    try:
+        handle, scratch = tempfile.mkstemp(prefix=".freestand-check-", dir=folder)
+    except OSError as error:
+        raise FreestandError(
+            f"cannot write into the folder {str(folder)!r} for {str(what)!r} "
+            f"({error.strerror}); choose a folder you can write to",
+            source=option,
+        ) from None
+    os.close(handle)
+    os.unlink(scratch)
+
+
+def _existing_ancestor(path: Path) -> Path:
+    """The nearest folder (or file) above ``path`` that exists."""
+    parent = path.parent
+    while not parent.exists() and parent != parent.parent:
+        parent = parent.parent
+    return parent
+
+
+def _check_parent(path: Path, option: str) -> None:
+    """The folders above ``path`` exist, or can be made, and can be written into."""
+    existing = _existing_ancestor(path)
+    if not existing.is_dir():
+        raise FreestandError(
+            f"{str(existing)!r} is a file, not a folder, so {str(path)!r} cannot be written "
+            "under it; choose another path",
+            source=option,
+        )
+    _check_writable(existing, option, path)
+
+
+def check_folder(path: Path | None, option: str = "--plot") -> Path | None:
+    """Check an output folder before computing: it is (or can be made) a writable folder."""
+    if path is None:
+        return None
+    if path.exists():
+        if not path.is_dir():
+            raise FreestandError(
+                f"{str(path)!r} is a file; {option} takes a folder that the figures are "
+                f"written into, e.g. {option} figures",
+                source=option,
+            )
+        _check_writable(path, option, path)
+        return path
+    if path.suffix:
+        raise FreestandError(
+            f"{str(path)!r} looks like a file name ({path.suffix}); {option} takes a folder "
+            f"that the figures are written into (PNG and SVG, under fixed names), e.g. "
+            f"{option} {path.with_suffix('') if path.stem else 'figures'}",
+            source=option,
+        )
+    _check_parent(path, option)
+    return path
+
+
+def check_file(path: Path | None, option: str, suffixes: tuple[str, ...]) -> Path | None:
+    """Check an output file before computing: a known suffix, in a writable existing folder."""
+    if path is None:
+        return None
+    if path.suffix.lower() not in suffixes:
+        example = path.with_suffix(suffixes[0]) if path.stem else f"out{suffixes[0]}"
+        raise FreestandError(
+            f"{str(path)!r} does not end in {' or '.join(suffixes)}; name the file with one of "
+            f"them, e.g. {option} {example}",
+            source=option,
+        )
+    if path.is_dir():
+        raise FreestandError(
+            f"{str(path)!r} is a folder; give a file name, e.g. {option} "
+            f"{path / ('out' + suffixes[0])}",
+            source=option,
+        )
+    _check_parent(path, option)
+    return path
+
+
+class Staging:
+    """Outputs written to temporary names and renamed into place together.
+
+    Use :meth:`file` and :meth:`folder` for the temporary path to write to;
+    :meth:`commit` renames them to their targets and returns the paths really
+    written. On an error (the ``staging()`` context) every temporary is removed.
+    """
+
+    def __init__(self) -> None:
+        self._files: list[tuple[Path, Path]] = []
+        self._folders: list[tuple[Path, Path]] = []
+
+    def file(self, target: Path) -> Path:
+        """A temporary file for ``target``, with the same suffix."""
+        handle, name = tempfile.mkstemp(
+            prefix=f".{target.stem}.",
+            suffix=f".tmp{target.suffix}",
+            dir=_existing_ancestor(target) if not target.parent.is_dir() else target.parent,
+        )
+        os.close(handle)
+        self._files.append((Path(name), target))
+        return Path(name)
+
+    def folder(self, target: Path) -> Path:
+        """A temporary folder whose files go into ``target`` (created if missing)."""
+        base = target if target.is_dir() else _existing_ancestor(target)
+        name = tempfile.mkdtemp(prefix=f".{target.name or 'figures'}.tmp-", dir=base)
+        self._folders.append((Path(name), target))
+        return Path(name)
+
+    def forget(self, temporary: Path) -> None:
+        """Drop a temporary that was only a step (already removed)."""
+        self._files = [(t, target) for t, target in self._files if t != temporary]
+
+    def commit(self) -> list[Path]:
+        """Rename everything into place; the target paths, in the order written."""
+        written = []
+        for temporary, target in self._folders:
+            target.mkdir(parents=True, exist_ok=True)
+            for item in sorted(temporary.iterdir()):
+                os.replace(item, target / item.name)
+                written.append(target / item.name)
+            shutil.rmtree(temporary, ignore_errors=True)
+        for temporary, target in self._files:
+            target.parent.mkdir(parents=True, exist_ok=True)
+            os.chmod(temporary, 0o644)
+            os.replace(temporary, target)
+            written.append(target)
+        self._files, self._folders = [], []
+        return written
+
+    def discard(self) -> None:
+        """Remove every temporary."""
+        for temporary, _ in self._folders:
+            shutil.rmtree(temporary, ignore_errors=True)
+        for temporary, _ in self._files:
+            temporary.unlink(missing_ok=True)
+        self._files, self._folders = [], []
+
+
+@contextlib.contextmanager
+def staging() -> Iterator[Staging]:
+    """A :class:`Staging` whose temporaries are removed if the block raises."""
+    stage = Staging()
+    try:
+        yield stage
+    except BaseException:
+        stage.discard()
+        raise
+    stage.discard()

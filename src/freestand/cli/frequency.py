@@ -7,18 +7,27 @@ from pathlib import Path
 
 import numpy as np
 import typer
+from rich.markup import escape
 from rich.table import Table
 
-from freestand.cli.common import console, parse_numbers, resolve_spectrum
+from freestand.cli.common import (
+    check_folder,
+    console,
+    load,
+    parse_numbers,
+    resolve_spectrum,
+    staging,
+)
 from freestand.core.beam import frequency_sweep, jump_check
 from freestand.errors import FreestandError
-from freestand.io.model_file import load_model
 
 
 def frequency(
     model_file: Path = typer.Argument(..., help="Model file (TOML) with a [beam] section."),
     positions: str = typer.Option(
-        None, "--positions", help="Cart positions from the left support [m], e.g. 1.33,4.9."
+        None,
+        "--positions",
+        help="Cart positions from the left support, e.g. 1.33,4.9 (bare numbers in m) or '133 cm'.",
     ),
     spectrum: str = typer.Option(
         None,
@@ -28,12 +37,15 @@ def frequency(
         "Default: the model's vertical spectrum.",
     ),
     plot: Path = typer.Option(
-        None, "--plot", help="Folder to write the Fig. 9 analogue to (PNG, SVG)."
+        None,
+        "--plot",
+        help="Folder to write the Fig. 9 analogue into (PNG, SVG); created if missing.",
     ),
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
     """Lowest vertical frequency against the cart's position, and whether the cart may jump."""
-    model = load_model(model_file)
+    model = load(model_file)
+    check_folder(plot, "--plot")
     if model.beam is None:
         raise FreestandError(
             "has no [beam] section; add span, youngs_modulus, second_moment, mass, load_mass "
@@ -41,33 +53,49 @@ def frequency(
             source=model.source,
         )
     beam, parking = model.beam.beam, model.beam.parking
-    values = parse_numbers(positions, "--positions", "m")
+    values = parse_numbers(positions, "--positions", "m", "length")
     if values is not None:
         for value in values:
             if not 0 <= value <= beam.span:
                 raise FreestandError(
-                    f"position {value} m is outside the span 0 .. {beam.span} m; give positions "
-                    "measured from the left support",
+                    f"position {value:g} m is outside the span 0 .. {beam.span:g} m; give "
+                    "positions measured from the left support",
                     source="--positions",
                 )
     full_sweep = frequency_sweep(beam, parking=parking)
     sweep = full_sweep if values is None else frequency_sweep(beam, np.array(values))
     vertical = resolve_spectrum(spectrum, model, "vertical")
-    check = jump_check(sweep, vertical, model.gravity, parking=parking) if vertical else None
+    tolerance = 1e-9 * beam.span
+    parked = [parking[0] - tolerance <= p <= parking[1] + tolerance for p in sweep.position]
+    outside_note = None
+    if not all(parked):
+        outside = ", ".join(
+            f"{p:g}" for p, inside in zip(sweep.position, parked, strict=True) if not inside
+        )
+        outside_note = (
+            f"position(s) {outside} m lie outside the parking range {parking[0]:g}-"
+            f"{parking[1]:g} m: the cart does not park there"
+            + ("; their jump verdict is given as if it did" if vertical else "")
+        )
+    check = None
+    if vertical:
+        # the jump check counts parked positions only; for positions asked outside the
+        # parking range alone, it is made as if the cart parked there (and says so)
+        check = jump_check(sweep, vertical, model.gravity, parking=parking if any(parked) else None)
 
+    written: list[Path] = []
     if plot is not None:
         from freestand.plot.frequency import plot_frequency_sweep, save_frequency_figure
 
-        plot.mkdir(parents=True, exist_ok=True)
         full_check = check
         if vertical is not None and sweep is not full_sweep:
             full_check = jump_check(full_sweep, vertical, model.gravity, parking=parking)
         figure = plot_frequency_sweep(
             full_sweep, parking=parking, jump=full_check, vertical_spectrum=vertical
         )
-        written = save_frequency_figure(figure, plot / "fig9_frequency")
-    else:
-        written = []
+        with staging() as stage:
+            save_frequency_figure(figure, stage.folder(plot) / "fig9_frequency")
+            written = stage.commit()
 
     if as_json:
         rows = []
@@ -85,6 +113,8 @@ def frequency(
                 )
             rows.append(row)
         document = {"model": model.name, "parking": list(parking), "positions": rows}
+        if outside_note:
+            document["note"] = outside_note
         if check is not None:
             document["jump_check"] = {
                 "spectrum": check.spectrum_label,
@@ -102,7 +132,8 @@ def frequency(
 
     out = console()
     out.print(
-        f"[bold]{model.name}[/]: lowest vertical natural frequency of the bridge (paper section 6)"
+        f"[bold]{escape(model.name)}[/]: lowest vertical natural frequency of the bridge "
+        "(paper section 6)"
     )
     table = Table(title="Frequency against the cart's position (paper Fig. 9)")
     for header in (
@@ -110,10 +141,12 @@ def frequency(
         "Dunkerley [Hz]",
         "exact [Hz]",
         "S_a,v [m/s^2]",
-        "S_a,v / g",
+        "S_a,v / g [-]",
         "verdict",
     ):
-        table.add_column(header, justify="right" if "[" in header or "/" in header else "left")
+        table.add_column(
+            escape(header), justify="right" if "[" in header or "/" in header else "left"
+        )
     step = max(1, len(sweep.position) // 25) if values is None else 1
     for k in range(0, len(sweep.position), step):
         cells = [f"{sweep.position[k]:.2f}", f"{sweep.dunkerley[k]:.2f}", f"{sweep.exact[k]:.2f}"]
@@ -133,17 +166,19 @@ def frequency(
         f"Parking range {parking[0]:g}-{parking[1]:g} m: Dunkerley {low:.1f}-{high:.1f} Hz, "
         f"exact {exact_low:.1f}-{exact_high:.1f} Hz (Dunkerley is a lower bound)."
     )
+    if outside_note:
+        out.print(f"[yellow]note:[/] {escape(outside_note)}")
     if check is not None:
         runs = ", ".join(f"{a:.2f}-{b:.2f} m" for a, b in check.risk_intervals) or "none"
-        out.print(f"Vertical spectrum: {check.spectrum_label}")
+        out.print(escape(f"Vertical spectrum: {check.spectrum_label}"))
         out.print(
             f"Verdict: [bold]{check.status}[/]; positions at risk: {runs}; smallest margin "
             f"g - S_a = {check.minimum_margin:.2f} m/s^2 at {check.minimum_margin_position:.2f} m."
         )
         for note in check.notes:
-            out.print(f"[yellow]note:[/] {note}")
+            out.print(f"[yellow]note:[/] {escape(note)}")
     for path in written:
-        out.print(f"wrote {path}")
+        out.print(escape(f"wrote {path}"), highlight=False)
 
 
 def register(app: typer.Typer) -> None:

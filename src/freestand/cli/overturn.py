@@ -8,9 +8,17 @@ from pathlib import Path
 
 import numpy as np
 import typer
+from rich.markup import escape
 from rich.table import Table
 
-from freestand.cli.common import console, parse_numbers, resolve_spectrum
+from freestand.cli.common import (
+    check_folder,
+    console,
+    load,
+    parse_numbers,
+    resolve_spectrum,
+    staging,
+)
 from freestand.core.overturning import (
     CURVE_FREQUENCIES,
     TABLE_FREQUENCIES,
@@ -22,7 +30,12 @@ from freestand.core.overturning import (
 from freestand.core.rocking import RockingBlock
 from freestand.core.screening import Motion, initial_motion
 from freestand.errors import FreestandError
-from freestand.io.model_file import load_model
+
+#: Highest pulse frequency accepted [Hz]: beyond, the pulse is far shorter than any rocking
+#: period and the overturning amplitude is beyond any support acceleration.
+MAX_FREQUENCY = 100.0
+#: Lowest pulse frequency accepted [Hz]: a pulse of 50 s, longer than any record.
+MIN_FREQUENCY = 0.01
 
 CONCLUSION = (
     "Housner's half-sine criterion, as the paper applies it, is unconservative (Makris and "
@@ -60,9 +73,15 @@ def _rocking_block(
     if pivot is not None and pivot not in ("left", "right"):
         raise FreestandError(f"{pivot!r} is not a pivot; use 'left' or 'right'", source="--pivot")
     block = stack.blocks[index]
-    vertical_acceleration = (
-        max((e.vertical for e in model.excitations), default=0.0) if vertical else 0.0
-    )
+    if not block.base_left < block.centre[0] < block.base_right:
+        raise FreestandError(
+            f"the centre of gravity of {block_name!r} (x = {block.centre[0]:g} m) does not lie "
+            f"between its contacts ({block.base_left:g} .. {block.base_right:g} m): it cannot "
+            "stand, let alone rock about one contact; check its centre and base in "
+            f"{model.source}",
+            source="--block",
+        )
+    vertical_acceleration = vertical_for_overturning(model) if vertical else 0.0
     if pivot is None:
         pivot = _default_pivot(model, stack, block)
     if restitution is not None and not 0 <= restitution <= 1:
@@ -79,6 +98,14 @@ def _rocking_block(
         restitution_override=restitution,
     )
     return stack, block, pivot, rocking
+
+
+def vertical_for_overturning(model) -> float:
+    """The largest downward vertical support acceleration of the model [m/s^2], 0 if none.
+
+    The weight m (g - a_v) is smallest, and overturning easiest, under it.
+    """
+    return max([0.0] + [max(e.verticals()) for e in model.excitations])
 
 
 def _default_pivot(model, stack, block) -> str:
@@ -117,10 +144,16 @@ def overturn(
         "'en1998:ag=...'. Default: the model's horizontal spectrum.",
     ),
     amplitudes: str = typer.Option(
-        None, "--amplitudes", help="Rectangular pulse amplitudes [m/s^2] (default: the model's)."
+        None,
+        "--amplitudes",
+        help="Rectangular pulse amplitudes, e.g. 0.5g,1g or 2.7,10.31 (bare numbers in m/s^2; "
+        "default: the model's).",
     ),
     frequencies: str = typer.Option(
-        None, "--frequencies", help="Half-sine pulse frequencies [Hz] (default: 0.25,0.5,1,2,5)."
+        None,
+        "--frequencies",
+        help="Half-sine pulse frequencies, e.g. 0.5,2 or '2.5 Hz' (bare numbers in Hz; default: "
+        "0.25,0.5,1,2,5).",
     ),
     restitution: float = typer.Option(
         None,
@@ -128,27 +161,47 @@ def overturn(
         help="Angular-velocity ratio at impact [-] in place of the one from angular momentum.",
     ),
     include_vertical: bool = typer.Option(
-        False, "--include-vertical", help="Weight m (g - a_v) with the model's largest a_v."
+        False,
+        "--include-vertical",
+        help="Weight m (g - a_v) with the model's largest downward a_v (default: m g).",
     ),
     plot: Path = typer.Option(
-        None, "--plot", help="Folder for the Figs. 6-8 analogues (PNG, SVG)."
+        None,
+        "--plot",
+        help="Folder to write the Figs. 6-8 analogues into (PNG, SVG); created if missing.",
     ),
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
     """Rocking properties, overturning limits of pulses, and the response-spectrum check."""
-    model = load_model(model_file)
+    model = load(model_file)
+    check_folder(plot, "--plot")
     _, _, pivot, rocking = _rocking_block(
         model, configuration, block, pivot, include_vertical, restitution
     )
-    amplitude_values = parse_numbers(amplitudes, "--amplitudes", "m/s^2") or sorted(
-        {e.horizontal for e in model.excitations}
+    amplitude_values = parse_numbers(
+        amplitudes, "--amplitudes", "m/s^2", "acceleration", model.gravity
+    ) or sorted({e.horizontal for e in model.excitations})
+    frequency_values = parse_numbers(frequencies, "--frequencies", "Hz", "frequency") or list(
+        TABLE_FREQUENCIES
     )
-    frequency_values = parse_numbers(frequencies, "--frequencies", "Hz") or list(TABLE_FREQUENCIES)
     for value in amplitude_values:
         if not value > 0:
-            raise FreestandError(f"{value} is not a positive amplitude", source="--amplitudes")
-    if any(f <= 0 for f in frequency_values):
-        raise FreestandError("frequencies must be positive", source="--frequencies")
+            raise FreestandError(
+                f"{value:g} m/s^2 is not a positive amplitude; e.g. --amplitudes 0.5g,1g",
+                source="--amplitudes",
+            )
+    for value in frequency_values:
+        if not MIN_FREQUENCY <= value <= MAX_FREQUENCY:
+            raise FreestandError(
+                f"{value:g} Hz is not a pulse frequency; give frequencies between "
+                f"{MIN_FREQUENCY:g} and {MAX_FREQUENCY:g} Hz, e.g. --frequencies 0.5,1,2",
+                source="--frequencies",
+            )
+    weight = (
+        f"weight m (g - a_v) with a_v = {vertical_for_overturning(model):.2f} m/s^2 downward"
+        if include_vertical
+        else "weight m g (the vertical support acceleration not included; see --include-vertical)"
+    )
     operating = max(e.horizontal for e in model.excitations)
     rectangular = rectangular_pulse_limits(
         rocking, np.array(amplitude_values), operating_amplitude=operating
@@ -172,13 +225,16 @@ def overturn(
             save_figure,
         )
 
-        amplitude_grid = rectangular_amplitude_grid(rocking, operating)
-        curve = rectangular_pulse_limits(rocking, amplitude_grid, operating_amplitude=operating)
-        written += save_figure(plot_rectangular_pulse(curve), plot / "fig6_rectangular_pulse")
-        written += save_figure(plot_pulse_limits(curves), plot / "fig7_half_sine_pulse")
-        if horizontal is not None:
-            figure = plot_spectrum_check(curves, horizontal, checks)
-            written += save_figure(figure, plot / "fig8_spectrum_check")
+        with staging() as stage:
+            folder = stage.folder(plot)
+            amplitude_grid = rectangular_amplitude_grid(rocking, operating)
+            curve = rectangular_pulse_limits(rocking, amplitude_grid, operating_amplitude=operating)
+            save_figure(plot_rectangular_pulse(curve), folder / "fig6_rectangular_pulse")
+            save_figure(plot_pulse_limits(curves), folder / "fig7_half_sine_pulse")
+            if horizontal is not None:
+                figure = plot_spectrum_check(curves, horizontal, checks)
+                save_figure(figure, folder / "fig8_spectrum_check")
+            written = stage.commit()
 
     properties = {side: rocking.about(side) for side in ("pivot", "other")}
     if as_json:
@@ -235,6 +291,8 @@ def overturn(
                 }
                 for name, check in checks.items()
             },
+            "weight": "m (g - a_v)" if include_vertical else "m g",
+            "vertical_acceleration": vertical_for_overturning(model) if include_vertical else 0.0,
             "conclusion": CONCLUSION,
             "figures": [str(path) for path in written],
         }
@@ -243,7 +301,8 @@ def overturn(
 
     out = console()
     out.print(
-        f"[bold]{model.name}[/]: overturning of {block!r} in {configuration!r} (paper section 5)"
+        f"[bold]{escape(model.name)}[/]: "
+        + escape(f"overturning of {block!r} in {configuration!r} (paper section 5); {weight}")
     )
     table = Table(title="Rocking properties (Housner 1963)")
     for header in (
@@ -254,7 +313,7 @@ def overturn(
         "p [rad/s]",
         "uplift [m/s^2]",
     ):
-        table.add_column(header, justify="left" if header == "pivot" else "right")
+        table.add_column(escape(header), justify="left" if header == "pivot" else "right")
     for label, side in ((pivot, "pivot"), ("left" if pivot == "right" else "right", "other")):
         prop = properties[side]
         table.add_row(
@@ -272,7 +331,7 @@ def overturn(
     )
     table = Table(title="Rectangular pulse: shortest overturning duration (paper Fig. 6)")
     for header in ("amplitude [m/s^2]", "Housner [s]", "exact [s]"):
-        table.add_column(header, justify="right")
+        table.add_column(escape(header), justify="right")
     for a, h, e in zip(rectangular.amplitude, rectangular.housner, rectangular.exact, strict=True):
         table.add_row(
             f"{a:.2f}",
@@ -280,17 +339,17 @@ def overturn(
             f"{e:.3f}" if math.isfinite(e) else "no overturning",
         )
     out.print(table)
-    table = Table(title="Pulses: minimum overturning amplitude [m/s^2] (paper Fig. 7)")
+    table = Table(title=escape("Pulses: minimum overturning amplitude [m/s^2] (paper Fig. 7)"))
     for header in (
         "f [Hz]",
         "half-sine duration [s]",
-        "Housner",
-        "Makris-Roussos",
-        "exact",
-        "one-sine exact",
-        "one-cosine exact",
+        "Housner [m/s^2]",
+        "Makris-Roussos [m/s^2]",
+        "exact [m/s^2]",
+        "one-sine exact [m/s^2]",
+        "one-cosine exact [m/s^2]",
     ):
-        table.add_column(header, justify="right")
+        table.add_column(escape(header), justify="right")
 
     def cell(value: float) -> str:
         return f"{value:.2f}" if math.isfinite(value) else "none found"
@@ -316,16 +375,16 @@ def overturn(
         out.print(f"  {name:15s} {text}")
     out.print(CONCLUSION)
     if checks:
-        table = Table(title=f"Spectrum check (paper Fig. 8): {horizontal.label}")
-        for header in ("limit", "verdict", "min. limit / spectrum", "at [Hz]"):
-            table.add_column(header)
+        table = Table(title=escape(f"Spectrum check (paper Fig. 8): {horizontal.label}"))
+        for header in ("limit", "verdict", "min. limit / spectrum [-]", "at [Hz]"):
+            table.add_column(escape(header))
         for name, check in checks.items():
             table.add_row(
                 name, check.verdict, f"{check.min_ratio:.2f}", f"{check.frequency_at_min:.2f}"
             )
         out.print(table)
     for path in written:
-        out.print(f"wrote {path}")
+        out.print(escape(f"wrote {path}"), highlight=False)
 
 
 def register(app: typer.Typer) -> None:

@@ -8,14 +8,27 @@ from pathlib import Path
 
 import numpy as np
 import typer
+from rich.markup import escape
 from rich.table import Table
 
-from freestand.cli.common import console
+from freestand.cli.common import (
+    Staging,
+    check_file,
+    check_folder,
+    console,
+    load,
+    number,
+    staging,
+    warn,
+)
 from freestand.core.timehistory import METHODS, SupportMotion
 from freestand.core.timehistory import simulate as simulate_stack
 from freestand.errors import FreestandError
-from freestand.io.model_file import load_model
-from freestand.io.records import load_record, parse_spectral_target
+from freestand.io.records import check_record_values, load_record, parse_spectral_target
+
+#: Most integration steps one run takes on (duration / step): beyond, a run lasts many
+#: minutes; a typo such as --step 1e-7 is refused instead of running for hours.
+MAX_STEPS = 2_000_000
 
 
 def _number(value: float) -> float | None:
@@ -31,15 +44,18 @@ def simulate(
     vertical: Path = typer.Option(
         None, "--vertical", help="Vertical record (positive up, as recorded)."
     ),
-    dt: float = typer.Option(None, "--dt", help="Time step [s] of single-column records."),
+    dt: str = typer.Option(
+        None, "--dt", help="Time step of single-column records, e.g. 0.005 [s] or '5 ms'."
+    ),
     unit: str = typer.Option(
         None, "--unit", help="Unit of single-column records, e.g. g or m/s^2."
     ),
     scale: float = typer.Option(None, "--scale", help="Multiply the record(s) by this factor [-]."),
-    peak: float = typer.Option(
+    peak: str = typer.Option(
         None,
         "--peak",
-        help="Scale the horizontal record to this peak [m/s^2] (instead of --scale).",
+        help="Scale the horizontal record to this peak, e.g. 0.3g or '2.9 m/s^2' (bare "
+        "numbers in m/s^2; instead of --scale).",
     ),
     spectral: str = typer.Option(
         None,
@@ -47,17 +63,23 @@ def simulate(
         help="Scale the records so that the horizontal pseudo-acceleration at one "
         "frequency is A: 'A@F[,DAMPING]', e.g. '1.05g@2.5Hz,5%' (instead of --scale).",
     ),
-    duration: float = typer.Option(
-        None, "--duration", help="Simulated time [s] (default: the record)."
+    duration: str = typer.Option(
+        None, "--duration", help="Simulated time, e.g. 10 [s] or '10 s' (default: the record)."
     ),
-    step: float = typer.Option(
-        None, "--step", help="Largest integration step [s] (default 1 ms; single block 0.02/p)."
+    step: str = typer.Option(
+        None,
+        "--step",
+        help="Largest integration step, e.g. 0.001 [s] or '1 ms' (default 1 ms; single block "
+        "0.02/p).",
     ),
     method: str = typer.Option(
         "auto", "--method", help="Solver: auto, general or single-block (one block only)."
     ),
     plot: Path = typer.Option(
-        None, "--plot", help="Folder for the time-history figure (time-history.png, .svg)."
+        None,
+        "--plot",
+        help="Folder to write the time-history figure into (time-history.png, .svg); "
+        "created if missing.",
     ),
     animate: Path = typer.Option(
         None, "--animate", help="Write an animated GIF of the blocks moving (FILE.gif)."
@@ -68,15 +90,40 @@ def simulate(
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
     """Sliding, rocking, impacts and overturning of every block under a record."""
-    model = load_model(model_file)
+    model = load(model_file)
     stack = model.configuration(configuration)
     if sum(option is not None for option in (scale, peak, spectral)) > 1:
         raise FreestandError(
             "give one of --scale, --peak and --spectral, not several", source="--scale"
         )
     target = None if spectral is None else parse_spectral_target(spectral, gravity=model.gravity)
-    if step is not None and not step > 0:
-        raise FreestandError(f"{step} is not a positive step; e.g. --step 0.001", source="--step")
+    peak_value = number(peak, "--peak", "acceleration", model.gravity)
+    dt = number(dt, "--dt", "time")
+    duration = number(duration, "--duration", "time")
+    step = number(step, "--step", "time")
+    if scale is not None and not (math.isfinite(scale) and scale != 0):
+        raise FreestandError(
+            f"{scale} is not a scale factor; give a finite, non-zero number, e.g. --scale 1.5",
+            source="--scale",
+        )
+    if peak_value is not None and not peak_value > 0:
+        raise FreestandError(
+            f"{peak} is not a positive peak; e.g. --peak 0.3g or --peak 2.9", source="--peak"
+        )
+    if step is not None and not (math.isfinite(step) and step > 0):
+        raise FreestandError(
+            f"{step} is not a positive step [s]; e.g. --step 0.001", source="--step"
+        )
+    if duration is not None and not (math.isfinite(duration) and duration > 0):
+        raise FreestandError(
+            f"{duration} is not a positive duration [s]; give the simulated time, e.g. "
+            "--duration 10, or leave it out to simulate the whole record",
+            source="--duration",
+        )
+    if dt is not None and not (math.isfinite(dt) and dt > 0):
+        raise FreestandError(
+            f"{dt} is not a positive time step [s]; e.g. --dt 0.005", source="--dt"
+        )
     if method not in METHODS or (method == "single-block" and len(stack.blocks) != 1):
         raise FreestandError(
             f"--method {method} does not apply to {configuration!r} ({len(stack.blocks)} blocks);"
@@ -85,14 +132,31 @@ def simulate(
         )
     check_drawing_options(plot, animate, exaggerate)
     motion = load_record(record, dt=dt, unit=unit, gravity=model.gravity, vertical=vertical)
-    if scale is not None:
-        motion = motion.scaled(scale)
-    if peak is not None:
-        if not peak > 0:
-            raise FreestandError(f"{peak} is not a positive peak", source="--peak")
-        motion = motion.scaled_to_peak(peak)
-    if target is not None:
-        motion = motion.scaled_to_spectral(target.acceleration, target.frequency, target.damping)
+    try:
+        if scale is not None:
+            motion = motion.scaled(scale)
+        if peak_value is not None:
+            motion = motion.scaled_to_peak(peak_value)
+        if target is not None:
+            motion = motion.scaled_to_spectral(
+                target.acceleration, target.frequency, target.damping
+            )
+    except ValueError as error:  # an all-zero record cannot be scaled
+        raise FreestandError(str(error), source=str(record)) from None
+    check_record_values(motion.horizontal, str(record), model.gravity, "scaled horizontal")
+    if motion.vertical is not None:
+        check_record_values(motion.vertical, str(record), model.gravity, "scaled vertical")
+    end = motion.duration if duration is None else duration
+    largest = step if step is not None else min(1e-3, motion.dt)
+    steps = end / min(largest, motion.dt)
+    if steps > MAX_STEPS:
+        raise FreestandError(
+            f"{end:g} s in steps of {min(largest, motion.dt):g} s is {steps:.3g} integration "
+            f"steps, beyond the {MAX_STEPS:.0e} freestand takes on in one run; give a shorter "
+            f"--duration (e.g. --duration {MAX_STEPS * min(largest, motion.dt) / 10:g}) or a "
+            "larger --step",
+            source="--step" if step is not None else "--duration",
+        )
     support = SupportMotion(
         motion.dt,
         np.asarray(motion.horizontal),
@@ -104,7 +168,9 @@ def simulate(
     title = (
         f"{model.name} / {configuration}: {motion.name}, peak {motion.peak_horizontal:.2f} m/s^2"
     )
-    written = draw(result, stack, support, plot, animate, exaggerate, title)
+    with staging() as stage:
+        draw(result, stack, support, plot, animate, exaggerate, title, stage)
+        written = stage.commit()
     kinds = sorted({event.kind for event in result.events})
     counts = {kind: sum(event.kind == kind for event in result.events) for kind in kinds}
     blocks = []
@@ -141,14 +207,18 @@ def simulate(
             ],
         }
         typer.echo(json.dumps(document, indent=2))
+        _exit_if_failed(result)
         return
     out = console()
     out.print(
-        f"[bold]{model.name}[/] / {configuration}: {motion.name}, {motion.duration:.2f} s, "
-        f"peak {motion.peak_horizontal:.2f} m/s^2; status {result.status}"
-        + (f" ({result.message})" if result.message else "")
+        f"[bold]{escape(model.name)}[/] / "
+        + escape(
+            f"{configuration}: {motion.name}, {motion.duration:.2f} s, "
+            f"peak {motion.peak_horizontal:.2f} m/s^2; status {result.status}"
+            + (f" ({result.message})" if result.message else "")
+        )
     )
-    table = Table(title="Peak response")
+    table = Table(title="Peak response (blocks bottom to top)")
     for header in (
         "block",
         "max rotation [rad]",
@@ -157,11 +227,11 @@ def simulate(
         "free flight",
         "overturned",
     ):
-        table.add_column(header)
+        table.add_column(escape(header))
     for block in blocks:
         overturned = f"at {block['overturn_time']:.3f} s" if block["overturned"] else "no"
         table.add_row(
-            block["name"],
+            escape(block["name"]),
             f"{block['max_rotation']:.4g}" if block["max_rotation"] is not None else "-",
             f"{block['max_slide']:.4g}" if block["max_slide"] is not None else "-",
             "yes" if block["uplift"] else "no",
@@ -169,31 +239,34 @@ def simulate(
             overturned,
         )
     out.print(table)
-    out.print(
+    out.print(escape(
         f"Solver: {result.diagnostics.method}"
         + (f" (single-block path not used: {result.diagnostics.fallback})"
            if result.diagnostics.fallback else "")
-    )  # fmt: skip
+    ))  # fmt: skip
     out.print(
         "Events: " + (", ".join(f"{kind} x{count}" for kind, count in counts.items()) or "none")
     )
     for path in written:
-        out.print(f"wrote {path}")
+        out.print(escape(f"wrote {path}"), highlight=False)
+    _exit_if_failed(result)
+
+
+def _exit_if_failed(result) -> None:
+    """A simulation that failed ends the command with exit status 1 (and says why)."""
+    if result.status == "failed":
+        warn(
+            "the simulation failed"
+            + (f": {result.message}" if result.message else "")
+            + "; the results above stop where it failed (try a smaller --step)"
+        )
+        raise typer.Exit(1)
 
 
 def check_drawing_options(plot: Path | None, animate: Path | None, exaggerate: float) -> None:
-    """FreestandError for a --plot that is a file, a non-GIF --animate, a factor <= 0."""
-    if plot is not None and plot.exists() and not plot.is_dir():
-        raise FreestandError(
-            f"{str(plot)!r} is a file; give a folder for the figures, e.g. --plot figures",
-            source="--plot",
-        )
-    if animate is not None and animate.suffix.lower() != ".gif":
-        raise FreestandError(
-            f"{str(animate)!r} is not a .gif file; the animation is written as an animated GIF, "
-            f"e.g. --animate {animate.with_suffix('.gif')}",
-            source="--animate",
-        )
+    """FreestandError for an unusable --plot folder or --animate file, a factor <= 0."""
+    check_folder(plot, "--plot")
+    check_file(animate, "--animate", (".gif",))
     if not (exaggerate > 0 and math.isfinite(exaggerate)):
         raise FreestandError(
             f"{exaggerate} is not a positive factor; e.g. --exaggerate 100 draws rotations "
@@ -202,25 +275,21 @@ def check_drawing_options(plot: Path | None, animate: Path | None, exaggerate: f
         )
 
 
-def draw(result, stack, support, plot, animate, exaggerate, title) -> list[Path]:
-    """Write the figure into ``plot`` and the GIF to ``animate`` (each if given)."""
-    written: list[Path] = []
+def draw(result, stack, support, plot, animate, exaggerate, title, stage: Staging) -> None:
+    """Write the figure into ``plot`` and the GIF to ``animate`` (each if given), staged."""
     if plot is not None:
         from freestand.plot.timehistory import time_history_figures
 
-        written += time_history_figures(
-            result, plot, support_motion=support, stack=stack, title=title
+        time_history_figures(
+            result, stage.folder(plot), support_motion=support, stack=stack, title=title
         )
     if animate is not None:
         from freestand.plot.timehistory import animate_time_history
 
-        written.append(
-            animate_time_history(
-                result, stack, animate, support_motion=support, exaggeration=exaggerate,
-                title=title,
-            )
+        animate_time_history(
+            result, stack, stage.file(animate), support_motion=support,
+            exaggeration=exaggerate, title=title,
         )  # fmt: skip
-    return written
 
 
 def register(app: typer.Typer) -> None:

@@ -17,7 +17,7 @@ straight lines through ``(0, g)`` in the ``(a_hor, a_ver)`` plane); otherwise
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -205,15 +205,87 @@ def mode_map(
     )
 
 
+def _on_axis(maps: ModeMap, field_name: str) -> bool:
+    return any(
+        axis.parameter.field == field_name and axis.parameter.operation == "set"
+        for axis in (maps.x, maps.y)
+    )
+
+
 def model_points(
-    maps: ModeMap, stack: Stack, excitations: Sequence[Excitation]
+    maps: ModeMap,
+    stack: Stack,
+    excitations: Sequence[Excitation],
+    nominal: Excitation | None = None,
 ) -> list[tuple[str, float, float]]:
-    """Where the model's own excitations lie on a map: (name, x, y) each."""
-    return [
-        (
-            excitation.name,
-            maps.x.model_value(stack, excitation),
-            maps.y.model_value(stack, excitation),
-        )
-        for excitation in excitations
-    ]
+    """Where the model's own excitations lie on a map: (name, x, y) each.
+
+    Parameters
+    ----------
+    maps : ModeMap
+    stack : Stack
+    excitations : sequence of Excitation
+        The model's excitations; one analysed in both vertical senses gives
+        two points, ``"<name> (a_v down)"`` and ``"<name> (a_v up)"``.
+    nominal : Excitation, optional
+        The excitation the map takes the components not on an axis from.
+        When given, only the excitations that the map really evaluates are
+        returned: those whose components off the axes equal the nominal ones
+        and whose point lies within the axes' ranges. A point of another
+        excitation would be labelled with a state it does not have.
+
+    Returns
+    -------
+    list of (str, float, float)
+    """
+    points = []
+    for excitation in excitations:
+        verticals = excitation.verticals()
+        for vertical in verticals:
+            case = replace(excitation, vertical=vertical, vertical_senses="given")
+            name = excitation.name
+            if len(verticals) > 1:
+                name += f" (a_v {'up' if vertical < 0 else 'down'})"
+            x = maps.x.model_value(stack, case)
+            y = maps.y.model_value(stack, case)
+            if nominal is not None:
+                off_axis = [f for f in EXCITATION_FIELDS if not _on_axis(maps, f)]
+                if any(
+                    not np.isclose(getattr(case, f), getattr(nominal, f), rtol=1e-12, atol=1e-12)
+                    for f in off_axis
+                ):
+                    continue
+                inside = all(
+                    min(axis.start, axis.stop) <= value <= max(axis.start, axis.stop)
+                    for axis, value in ((maps.x, x), (maps.y, y))
+                )
+                if not inside:
+                    continue
+            points.append((name, x, y))
+    return points
+
+
+def point_label(
+    maps: ModeMap,
+    stack: Stack,
+    x: float,
+    y: float,
+    excitation: Excitation,
+    gravity: float = GRAVITY,
+) -> str:
+    """The region name of the exact point (x, y), solved there, not read off the grid.
+
+    The grid's nearest node can lie across a boundary from the point; this
+    solves the one case the point stands for, with the map's sense and the
+    components not on an axis from ``excitation`` (the map's nominal one).
+    """
+    single = mode_map(
+        stack,
+        Axis(maps.x.parameter, x, x),
+        Axis(maps.y.parameter, y, y),
+        excitation,
+        maps.sense,
+        (1, 1),
+        gravity,
+    )
+    return single.labels[int(single.codes[0, 0])]

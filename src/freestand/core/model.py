@@ -15,6 +15,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from enum import StrEnum
 
+#: Choices of :attr:`Excitation.vertical_senses`.
+VERTICAL_SENSES = ("given", "both")
+
 
 class Sliding(StrEnum):
     """Which way the interface below a block may slide.
@@ -132,6 +135,30 @@ class Stack:
                 return index
         raise KeyError(name)
 
+    def unsupported(self) -> tuple[tuple[str, float, float, float], ...]:
+        """The blocks that cannot stand even without excitation.
+
+        The blocks ``i`` to the top rest on the lower contacts of block ``i``;
+        under gravity alone they can stand only if their joint centre of gravity
+        lies over that base, ``base_left <= x_G <= base_right`` with
+        ``x_G = sum(m_j x_j) / sum(m_j)`` over ``j >= i`` (static equilibrium of
+        a rigid body on two supports).
+
+        Returns
+        -------
+        tuple of (str, float, float, float)
+            For each such block: its name, ``x_G`` [m] of the blocks it carries
+            together with itself, and its base's left and right x [m].
+        """
+        found = []
+        for index, block in enumerate(self.blocks):
+            above = self.blocks[index:]
+            mass = sum(b.mass for b in above)
+            x_centre = sum(b.mass * b.centre[0] for b in above) / mass
+            if not block.base_left <= x_centre <= block.base_right:
+                found.append((block.name, x_centre, block.base_left, block.base_right))
+        return tuple(found)
+
 
 @dataclass(frozen=True)
 class Excitation:
@@ -145,11 +172,25 @@ class Excitation:
         Magnitude of the horizontal support acceleration a_hor [m/s^2]; both
         senses are analysed.
     vertical : float
-        Downward support acceleration a_ver [m/s^2]: the weight becomes
-        m (g - a_ver). Upward support acceleration only adds stability and is
-        not analysed (paper section 2).
+        Signed vertical support acceleration a_ver [m/s^2], positive
+        downward: the weight becomes m (g - a_ver). A negative value is an
+        upward support acceleration, which increases the weight and with it
+        the contact forces (the largest rail and anchor loads); it cannot
+        start a motion that the same downward acceleration does not start
+        (paper section 2).
+    vertical_senses : str
+        ``"given"``: analyse ``vertical`` as given; ``"both"``: analyse
+        ``+|a_ver|`` (downward) and ``-|a_ver|`` (upward), for the envelope of
+        the contact forces.
     """
 
     name: str
     horizontal: float
     vertical: float = 0.0
+    vertical_senses: str = "given"
+
+    def verticals(self) -> tuple[float, ...]:
+        """The signed vertical accelerations to analyse [m/s^2], downward first."""
+        if self.vertical_senses == "both" and self.vertical != 0:
+            return (abs(self.vertical), -abs(self.vertical))
+        return (self.vertical,)

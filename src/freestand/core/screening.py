@@ -26,7 +26,8 @@ free-flight    both contacts open
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
 from enum import StrEnum
 
 import numpy as np
@@ -124,7 +125,8 @@ class InitialMotion:
     horizontal : float
         Magnitude of the horizontal support acceleration [m/s^2].
     vertical : float
-        Downward support acceleration [m/s^2].
+        Signed vertical support acceleration [m/s^2], positive downward
+        (weight m (g - a_ver)), negative upward.
     gravity : float
         Gravitational acceleration [m/s^2].
     status : str
@@ -353,8 +355,10 @@ def initial_motion(
     horizontal : float
         Magnitude of the horizontal support acceleration a_hor [m/s^2], >= 0.
     vertical : float, optional
-        Downward support acceleration a_ver [m/s^2]. When it reaches g the
-        blocks are weightless and every block is in free flight.
+        Signed vertical support acceleration a_ver [m/s^2], positive
+        downward; negative (upward) increases the weight m (g - a_ver). When
+        it reaches g the blocks are weightless and every block is in free
+        flight.
     sense : int, optional
         +1 or -1: sense of the horizontal inertial force along x.
     gravity : float, optional
@@ -401,8 +405,17 @@ def initial_motion(
     )
 
 
+def _vertical_label(name: str, vertical: float, both: bool) -> str:
+    if not both:
+        return name
+    return f"{name} (a_v {'up' if vertical < 0 else 'down'})"
+
+
 def screen(
-    stack: Stack, excitations: tuple[Excitation, ...] | list[Excitation], gravity: float = GRAVITY
+    stack: Stack,
+    excitations: tuple[Excitation, ...] | list[Excitation],
+    gravity: float = GRAVITY,
+    vertical_senses: str | None = None,
 ) -> list[InitialMotion]:
     """Initial motion for every excitation level and both horizontal senses.
 
@@ -412,16 +425,92 @@ def screen(
     excitations : sequence of Excitation
     gravity : float, optional
         g [m/s^2].
+    vertical_senses : str, optional
+        ``"both"`` analyses every excitation with its vertical acceleration
+        downward (+|a_ver|) and upward (-|a_ver|), ``"given"`` as given; None
+        (default) follows each excitation's own ``vertical_senses``. The
+        cases of an excitation analysed both ways are named
+        ``"<name> (a_v down)"`` and ``"<name> (a_v up)"``.
 
     Returns
     -------
     list of InitialMotion
-        In the order excitation, then sense ``+``, ``-``.
+        In the order excitation, vertical sense (downward first), then sense
+        ``+``, ``-``.
     """
+    cases = []
+    for excitation in excitations:
+        if vertical_senses is not None:
+            excitation = replace(excitation, vertical_senses=vertical_senses)
+        verticals = excitation.verticals()
+        for vertical in verticals:
+            label = _vertical_label(excitation.name, vertical, len(verticals) > 1)
+            for sense in (1, -1):
+                cases.append(
+                    initial_motion(stack, excitation.horizontal, vertical, sense, gravity, label)
+                )
+    return cases
+
+
+@dataclass(frozen=True)
+class ForceEnvelope:
+    """Extreme contact forces on one block over a set of screening cases.
+
+    Attributes
+    ----------
+    configuration, block : str
+        Names.
+    normal_left, normal_right : float
+        Largest normal force [N] on the block at its left and right lower
+        contact, from the body below (compression positive).
+    tangential : float
+        Largest magnitude of the total tangential force [N] on the block
+        from the body below.
+    cases : tuple of str
+        For ``normal_left``, ``normal_right`` and ``tangential`` in turn: the
+        case ``"<excitation>, sense <+|->"`` that gives it.
+    """
+
+    configuration: str
+    block: str
+    normal_left: float
+    normal_right: float
+    tangential: float
+    cases: tuple[str, str, str]
+
+
+def force_envelope(cases: Sequence[InitialMotion]) -> list[ForceEnvelope]:
+    """Envelope of the contact forces of every block over ``cases``.
+
+    The largest normal force at each lower contact and the largest tangential
+    force of each block, with the case that gives it; configurations and
+    blocks in the order of ``cases`` (blocks bottom to top). Cases with no
+    admissible state are left out (they are reported on their own).
+
+    Parameters
+    ----------
+    cases : sequence of InitialMotion
+
+    Returns
+    -------
+    list of ForceEnvelope
+    """
+    table: dict[tuple[str, str], list] = {}
+    for case in cases:
+        label = f"{case.excitation}, sense {'+' if case.sense > 0 else '-'}"
+        for state in case.blocks:
+            key = (case.configuration, state.name)
+            values = (
+                state.base_normal_left,
+                state.base_normal_right,
+                abs(state.base_tangential),
+            )
+            entry = table.setdefault(key, [[-np.inf, -np.inf, -np.inf], ["", "", ""]])
+            for k, value in enumerate(values):
+                if value > entry[0][k]:
+                    entry[0][k] = value
+                    entry[1][k] = label
     return [
-        initial_motion(
-            stack, excitation.horizontal, excitation.vertical, sense, gravity, excitation.name
-        )
-        for excitation in excitations
-        for sense in (1, -1)
+        ForceEnvelope(configuration, block, *values, cases=tuple(labels))
+        for (configuration, block), (values, labels) in table.items()
     ]

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import difflib
 import hashlib
+import math
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -22,7 +23,7 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict, ValidationError, field_validator, model_validator
 
-from freestand.core.model import Block, Excitation, Friction, Sliding, Stack
+from freestand.core.model import VERTICAL_SENSES, Block, Excitation, Friction, Sliding, Stack
 from freestand.core.spectra import Spectrum
 from freestand.errors import FreestandError
 from freestand.io.beam_section import BeamSection, parse_beam_section
@@ -73,6 +74,26 @@ class ModelFile:
         """The model's first spectrum for ``direction`` ("horizontal"/"vertical"), if any."""
         return next((s for s in self.spectra.values() if s.direction == direction), None)
 
+    def warnings(self) -> tuple[str, ...]:
+        """What the model allows but an engineer must know: blocks that cannot stand.
+
+        A block whose centre of gravity (together with the blocks it carries)
+        lies outside its base tips over even without excitation
+        (:meth:`freestand.core.model.Stack.unsupported`).
+        """
+        messages = []
+        for stack in self.configurations:
+            for name, x_centre, left, right in stack.unsupported():
+                carried = stack.blocks[stack.block_index(name) + 1 :]
+                what = f"{name!r} with the blocks on it" if carried else f"{name!r}"
+                messages.append(
+                    f"{self.source}: configuration {stack.name!r}: the centre of gravity of "
+                    f"{what} lies at x = {x_centre:.3f} m, outside its base "
+                    f"({left:g} .. {right:g} m), so it cannot stand even without excitation; "
+                    "check its centre and base"
+                )
+        return tuple(messages)
+
     def configuration(self, name: str) -> Stack:
         """The configuration called ``name``, or a FreestandError listing the names."""
         for stack in self.configurations:
@@ -93,6 +114,12 @@ class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
 
+def _name_value(value: Any) -> Any:
+    if isinstance(value, str) and not value.strip():
+        raise ValueError(f'{value!r} is an empty name; give a name, e.g. name = "bridge"')
+    return value
+
+
 def _gravity(info) -> float:
     return (info.context or {}).get("gravity", 9.81)
 
@@ -108,9 +135,25 @@ def _positive(value: float, what: str, example: str) -> float:
     return value
 
 
+#: Largest friction coefficient accepted [-]; a block that must never slip is given
+#: ``sliding = "none"`` instead of a huge coefficient.
+FRICTION_LIMIT = 100.0
+
+
 class _FrictionSpec(_Strict):
     static: float
     kinetic: float
+
+    @field_validator("static", "kinetic", mode="after")
+    @classmethod
+    def _finite(cls, value, info):
+        if not math.isfinite(value) or abs(value) > FRICTION_LIMIT:
+            raise ValueError(
+                f"{info.field_name} = {value!r} is not a friction coefficient; give a finite "
+                f"number between 0 and {FRICTION_LIMIT:g}, e.g. {info.field_name} = 0.25 "
+                '(for an interface that never slips write sliding = "none")'
+            )
+        return value
 
     @model_validator(mode="after")
     def _order(self):
@@ -155,18 +198,36 @@ def _sliding_word(value: Any) -> str:
         raise ValueError(f"{value!r} is not a sliding word; use one of {_SLIDING_WORDS}") from None
 
 
+#: Smallest mass [kg] and moment of inertia [kg m^2] accepted: below them the equations of
+#: motion are ill-conditioned beside any real block (a mass of 1e-300 kg is a typo).
+MASS_FLOOR = 1e-3
+INERTIA_FLOOR = 1e-6
+
+
+def _floor(value: float, floor: float, what: str, unit: str, example: str) -> float:
+    if value < floor:
+        raise ValueError(
+            f"{value!r} {unit} is below the smallest plausible {what} ({floor:g} {unit}); "
+            f"check the value and its unit, e.g. {example}"
+        )
+    return value
+
+
 def _mass_value(value: Any, info) -> float:
-    return _positive(_quantity(value, "mass", info), "mass", '16600 or "16.6 t"')
+    mass = _positive(_quantity(value, "mass", info), "mass", '16600 or "16.6 t"')
+    return _floor(mass, MASS_FLOOR, "mass", "kg", '16600 or "16.6 t"')
 
 
 def _inertia_value(value: Any, info) -> float:
-    return _positive(
+    inertia = _positive(
         _quantity(value, "inertia", info), "moment of inertia about the centre", "49400"
     )
+    return _floor(inertia, INERTIA_FLOOR, "moment of inertia", "kg m^2", "49400")
 
 
 class _BlockSpec(_Strict):
     name: str
+    _name = field_validator("name", mode="before")(_name_value)
     mass: Quantity
     inertia: Quantity
     centre: tuple[Quantity, Quantity]
@@ -217,6 +278,7 @@ class _BlockSpec(_Strict):
 
 class _PaperBody(_Strict):
     name: str
+    _name = field_validator("name", mode="before")(_name_value)
     mass: Quantity
     inertia: Quantity
     friction: _FrictionSpec | None = None
@@ -278,6 +340,7 @@ class _PaperSpec(_Strict):
 
 class _ConfigurationSpec(_Strict):
     name: str
+    _name = field_validator("name", mode="before")(_name_value)
     block: list[_BlockSpec] | None = None
     paper: _PaperSpec | None = None
 
@@ -294,6 +357,14 @@ class _ConfigurationSpec(_Strict):
             names = [b.name for b in self.block]
             if len(set(names)) != len(names):
                 raise ValueError(f"block names {names} repeat; give each block its own name")
+            bottom = self.block[0]
+            if bottom.base.level != 0:
+                raise ValueError(
+                    f"the bottom block {bottom.name!r} has its base at level = "
+                    f"{bottom.base.level} m, not 0; z is measured up from the support surface, "
+                    "so the bottom block stands at level = 0 (subtract "
+                    f"{bottom.base.level} m from every z of this configuration)"
+                )
             for lower, upper in zip(self.block, self.block[1:], strict=False):
                 if not upper.base.level > lower.base.level:
                     raise ValueError(
@@ -325,24 +396,42 @@ class _FloorSpec(_Strict):
 
 class _ExcitationSpec(_Strict):
     name: str
+    _name = field_validator("name", mode="before")(_name_value)
     horizontal: Quantity | None = None
     vertical: Quantity = 0.0
+    vertical_senses: str = "given"
     # a ground record (relative to the model file) whose peak, after the optional floor
     # filter, is the horizontal acceleration (freestand.core.response_spectrum.floor_motion)
     record: str | None = None
     floor: _FloorSpec | None = None
 
-    @field_validator("horizontal", "vertical", mode="before")
+    @field_validator("horizontal", mode="before")
     @classmethod
-    def _acceleration(cls, value, info):
+    def _horizontal(cls, value, info):
         result = _quantity(value, "acceleration", info)
         if result < 0:
             raise ValueError(
-                f"{value!r} is negative; give the magnitude (horizontal: both senses are "
-                "analysed; vertical: the downward support acceleration, an upward one only "
-                "adds stability)"
+                f"{value!r} is negative; give the magnitude of the horizontal support "
+                "acceleration (both senses are analysed)"
             )
         return result
+
+    @field_validator("vertical", mode="before")
+    @classmethod
+    def _vertical(cls, value, info):
+        # signed: positive downward (weight m (g - a_v) shrinks), negative upward (it grows)
+        return _quantity(value, "acceleration", info)
+
+    @field_validator("vertical_senses", mode="before")
+    @classmethod
+    def _senses(cls, value):
+        if value not in VERTICAL_SENSES:
+            raise ValueError(
+                f"{value!r} is not a choice of vertical senses; use "
+                + " or ".join(repr(v) for v in VERTICAL_SENSES)
+                + " (both: the vertical acceleration downward and upward)"
+            )
+        return value
 
     @model_validator(mode="after")
     def _one_source(self):
@@ -374,6 +463,7 @@ class _ExcitationSpec(_Strict):
 class _ModelSpec(_Strict):
     model_config = ConfigDict(extra="forbid", frozen=True)
     name: str
+    _name = field_validator("name", mode="before")(_name_value)
     gravity: Quantity = 9.81
     excitation: list[_ExcitationSpec]
     configuration: list[_ConfigurationSpec]
@@ -599,6 +689,7 @@ def load_model_text(
             name=e.name,
             horizontal=e.horizontal_peak(base_dir, gravity),
             vertical=float(e.vertical),
+            vertical_senses=e.vertical_senses,
         )
         for e in spec.excitation
     )

@@ -760,8 +760,45 @@ def _motion_from(component: RecordComponent, name: str | None) -> GroundMotion:
     )
 
 
-def _read_component(path: Path, dt, unit, gravity) -> tuple[RecordComponent, np.ndarray | None]:
+#: Largest plausible acceleration in a record, in g: beyond it the values are in another unit
+#: than the file says, or corrupt (a record of 1e150 g would overflow the simulation).
+RECORD_LIMIT_G = 100.0
+
+
+def check_record_values(values: np.ndarray, source: str, gravity: float, what: str) -> None:
+    """FreestandError for non-finite values or a peak beyond :data:`RECORD_LIMIT_G`."""
+    values = np.asarray(values, dtype=float)
+    if values.size and not np.all(np.isfinite(values)):
+        index = int(np.flatnonzero(~np.isfinite(values))[0])
+        raise FreestandError(
+            f"the {what} acceleration has a value that is not a number ({values[index]!r}) at "
+            f"sample {index + 1}; fix or remove that sample",
+            source=source,
+        )
+    peak = float(np.max(np.abs(values))) if values.size else 0.0
+    if peak > RECORD_LIMIT_G * gravity:
+        raise FreestandError(
+            f"the {what} acceleration reaches {peak:.3g} m/s^2 ({peak / gravity:.3g} g), beyond "
+            f"the plausible {RECORD_LIMIT_G:g} g; check the file's unit (g, m/s^2, cm/s^2...) "
+            "and its values",
+            source=source,
+        )
+
+
+def _read_component(
+    path: Path, dt, unit, gravity, what: str = "horizontal"
+) -> tuple[RecordComponent, np.ndarray | None]:
     """One file by its extension; returns the (first) component and a CSV vertical column."""
+    component, vertical = _read_component_file(path, dt, unit, gravity)
+    check_record_values(component.acceleration, str(path), gravity, what)
+    if vertical is not None:
+        check_record_values(vertical, str(path), gravity, "vertical")
+    return component, vertical
+
+
+def _read_component_file(
+    path: Path, dt, unit, gravity
+) -> tuple[RecordComponent, np.ndarray | None]:
     suffix = path.suffix.lower()
     source = str(path)
     if suffix == ".at2":
@@ -865,7 +902,7 @@ def load_record(
     if vertical is None:
         return GroundMotion(component.dt, component.acceleration, None, record_name, metadata)
     vertical_path = Path(vertical)
-    vertical_component, extra = _read_component(vertical_path, dt, unit, gravity)
+    vertical_component, extra = _read_component(vertical_path, dt, unit, gravity, "vertical")
     if extra is not None:
         raise FreestandError(
             "the vertical file has two acceleration columns; give a file with one component",

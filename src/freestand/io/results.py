@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from freestand.core.screening import BlockState, InitialMotion
+from freestand.core.screening import BlockState, ForceEnvelope, InitialMotion
 
 
 def _sense(sense: int) -> str:
@@ -64,7 +64,8 @@ def screening_document(model_name: str, cases: Sequence[InitialMotion], gravity:
     """The ``freestand screen --json`` document.
 
     Conventions: ``sense`` is the sense of the horizontal inertial force along
-    x; accelerations are relative to the support in the global frame (x
+    x; ``vertical`` the signed vertical support acceleration [m/s^2], positive
+    downward (weight m (g - a_v)); accelerations are relative to the support in the global frame (x
     right, z up, angular counter-clockwise); ``base`` holds the forces on the
     block from the body below: normal forces at its left and right contact [N]
     and the total tangential force [N], +x positive.
@@ -73,4 +74,15 @@ def screening_document(model_name: str, cases: Sequence[InitialMotion], gravity:
         "model": model_name,
         "gravity": gravity,
         "cases": [initial_motion_document(case) for case in cases],
+    }
+
+
+def envelope_document(item: ForceEnvelope) -> dict:
+    """One block's envelope of contact forces [N] with the cases that give them."""
+    return {
+        "configuration": item.configuration,
+        "block": item.block,
+        "left": {"normal": item.normal_left, "case": item.cases[0]},
+        "right": {"normal": item.normal_right, "case": item.cases[1]},
+        "tangential": {"magnitude": item.tangential, "case": item.cases[2]},
     }

@@ -27,6 +27,20 @@ QUANTITIES: dict[str, tuple[str, str]] = {
     "dimensionless": ("", "0.25"),
 }
 
+#: Largest plausible magnitude of each kind of quantity [SI]. Beyond it a value is a typo or
+#: a wrong unit (a mass of 1e300 kg, a record of 1e150 g) and the arithmetic would overflow.
+LIMITS: dict[str, float] = {
+    "length": 1e4,  # 10 km
+    "mass": 1e9,  # a million tonnes
+    "inertia": 1e15,  # kg m^2: a million tonnes at 30 m
+    "acceleration": 1e4,  # about 1000 g
+    "frequency": 1e4,  # Hz
+    "time": 1e6,  # s, about 11 days
+    "pressure": 1e13,  # Pa, 50 times the modulus of steel
+    "second_moment": 1e4,  # m^4
+    "dimensionless": 1e6,
+}
+
 _G_TOKEN = re.compile(r"(?<![A-Za-z_])g(?![A-Za-z_0-9])")
 
 
@@ -77,7 +91,8 @@ def to_si(
     Raises
     ------
     FreestandError
-        If the value is not a number, has the wrong dimension or is not finite.
+        If the value is not a number, has the wrong dimension, is not finite
+        or is beyond the plausible magnitude of :data:`LIMITS`.
     """
     unit, example = QUANTITIES[quantity]
     fix = (
@@ -91,6 +106,12 @@ def to_si(
     elif isinstance(value, str) and _is_plain_number(value):
         # a bare number written as text (command-line options): already SI
         result = float(value)
+    elif isinstance(value, str) and not any(c.isdigit() for c in value):
+        raise FreestandError(
+            f"cannot read {value!r} as a quantity: it is not a number; {fix}",
+            source=source,
+            field=field,
+        )
     elif isinstance(value, str):
         text = value.strip()
         if quantity == "acceleration":
@@ -125,4 +146,13 @@ def to_si(
         raise FreestandError(f"{value!r} is not a number; {fix}", source=source, field=field)
     if not math.isfinite(result):
         raise FreestandError(f"{value!r} is not finite; {fix}", source=source, field=field)
+    limit = LIMITS[quantity]
+    if abs(result) > limit:
+        suffix = f" {unit}" if unit else ""
+        raise FreestandError(
+            f"{value!r} is {result:.3g}{suffix}, beyond the plausible {limit:g}{suffix}; "
+            f"check the value and its unit ({fix})",
+            source=source,
+            field=field,
+        )
     return result

@@ -62,8 +62,9 @@ def plot_mode_maps(
         One panel each (same axes), e.g. sense + and sense -.
     path : str or pathlib.Path
         Output file (the format follows the suffix: .png, .pdf, .svg).
-    points : sequence of sequence of (str, float, float)
-        For each map, the model's points (name, x, y) to mark.
+    points : sequence of sequence of (str, float, float[, str])
+        For each map, the model's points (name, x, y) to mark, with the
+        region name solved at the point (else the nearest node's).
     title : str, optional
         Figure title.
 
@@ -116,10 +117,12 @@ def plot_mode_maps(
                 colors="none",
                 hatches=["////"],
             )
-        for name, x, y in points[panel] if panel < len(points) else ():
+        for point in points[panel] if panel < len(points) else ():
+            name, x, y = point[:3]
+            label = point[3] if len(point) > 3 else m.label_at(x, y)
             ax.plot(x, y, marker="o", color="black", markersize=6, markerfacecolor="white")
             ax.annotate(
-                f"{name} ({m.label_at(x, y)})",
+                f"{name} ({label})",
                 (x, y),
                 textcoords="offset points",
                 xytext=(6, 6),

@@ -128,19 +128,30 @@ def plot_spectrum_check(
     title : str, optional
         Figure title.
     """
-    fig, ax = _new_figure()
+    fig = Figure(figsize=(7.0, 7.2), layout="constrained")
+    ax = fig.add_subplot()
+    ax.grid(True, which="both", alpha=0.3)
     _draw_limits(ax, limits)
     f = np.geomspace(limits.frequency[0], limits.frequency[-1], 300)
     ax.loglog(f, spectrum.acceleration_at(f), color="k", linewidth=2.0, label=spectrum.label)
     for name, check in (checks or {}).items():
         if np.isfinite(check.min_ratio):
+            # nested open markers of different shapes and sizes: two limits whose smallest
+            # margin falls at the same frequency stay both visible
+            marker, size = _MARGIN_MARKERS.get(name, ("s", 8))
             ax.plot(
-                [check.frequency_at_min], [check.spectrum_at_min], "s",
+                [check.frequency_at_min], [check.spectrum_at_min], marker,
                 color=_STYLE.get(name, {}).get("color", "k"), markerfacecolor="none",
+                markersize=size, markeredgewidth=1.4, linestyle="none",
                 label=f"min margin {check.min_ratio:.2f} at {check.frequency_at_min:.2f} Hz "
                 f"({name}): {check.verdict}",
             )  # fmt: skip
     ax.set_ylabel("peak pulse / spectral acceleration [m/s^2]")
     ax.set_title(title or "Response spectrum against the overturning limits")
-    ax.legend(loc="upper left", fontsize="x-small")
+    # below the axes, so that no entry hides a curve
+    fig.legend(loc="outside lower center", ncols=1, fontsize="x-small", frameon=False)
     return fig
+
+
+#: Marker and size of the point of smallest margin of each limit on the Fig. 8 analogue.
+_MARGIN_MARKERS = {"housner": ("s", 13), "makris-roussos": ("D", 9), "exact": ("o", 5)}

@@ -86,6 +86,14 @@ class RockingAssessment:
         The model's horizontal spectrum, if it has one.
     checks : dict of str to SpectrumCheck
         Spectrum against each limit (empty without a spectrum).
+    vertical : float
+        The largest downward vertical support acceleration a_v [m/s^2] of the
+        cases it rocks in (0 if none). Every limit above uses the weight m g;
+        the two below use m (g - a_v).
+    half_sine_vertical : OverturningLimits or None
+        ``half_sine`` with the weight m (g - a_v) (None when a_v = 0).
+    rectangular_vertical : RectangularPulseLimits or None
+        ``rectangular`` with the weight m (g - a_v) (None when a_v = 0).
     """
 
     configuration: str
@@ -101,6 +109,9 @@ class RockingAssessment:
     half_sine: OverturningLimits
     spectrum: Spectrum | None
     checks: dict[str, SpectrumCheck]
+    vertical: float = 0.0
+    half_sine_vertical: OverturningLimits | None = None
+    rectangular_vertical: RectangularPulseLimits | None = None
 
     @property
     def governing_check(self) -> SpectrumCheck | None:
@@ -362,7 +373,38 @@ def _overturning_sentence(item: RockingAssessment) -> str:
             f"exceeds the {_limit_title(governing.limit_name)} limit (smallest margin "
             f"{governing.min_ratio:.2f} at {governing.frequency_at_min:.2f} Hz)."
         )
-    return f"{head} {verdict} {pulse}"
+    weight = (
+        "These limits use the weight m g, without the vertical support acceleration."
+        if item.vertical > 0
+        else "These limits use the weight m g (the cases it rocks in have no downward vertical "
+        "acceleration)."
+    )
+    with_vertical = ""
+    if item.half_sine_vertical is not None:
+        exact_v = item.half_sine_vertical.operating_frequency.get("exact", float("nan"))
+        rect = item.rectangular_vertical
+        shortest = ""
+        if rect is not None and len(rect.amplitude):
+            k = int(np.argmax(rect.amplitude))
+            before = item.rectangular.exact[k]
+            after = rect.exact[k]
+            if math.isfinite(before) or math.isfinite(after):
+                shortest = (
+                    f" A rectangular pulse of {rect.amplitude[k]:.2f} m/s^2 overturns it if it "
+                    f"lasts {_seconds(after)} or longer with the weight m (g - a_v), "
+                    f"{_seconds(before)} with m g (exact)."
+                )
+        with_vertical = (
+            f" With the weight m (g - a_v), a_v = {item.vertical:.2f} m/s^2 downward as in the "
+            "cases it rocks in, the limits are lower: a half-sine pulse of "
+            f"{op:.2f} m/s^2 overturns it if it lasts longer than {longer(exact_v)} (exact)."
+            + shortest
+        )
+    return f"{head} {verdict} {pulse} {weight}{with_vertical}"
+
+
+def _seconds(value: float) -> str:
+    return f"{value:.2f} s" if math.isfinite(value) else "no duration (no overturning)"
 
 
 def _limit_title(name: str) -> str:
@@ -413,7 +455,7 @@ def _rocking_candidates(
     stacks: tuple[Stack, ...], cases: list[InitialMotion]
 ) -> tuple[dict, list[SkippedBlock]]:
     """(configuration, block, pivot) -> cases it rocks in; and the blocks not assessed."""
-    found: dict[tuple[str, str, str], list[str]] = {}
+    found: dict[tuple[str, str, str], list[InitialMotion]] = {}
     skipped: dict[tuple[str, str], str] = {}
     by_name = {stack.name: stack for stack in stacks}
     for case in cases:
@@ -422,6 +464,14 @@ def _rocking_candidates(
             if state.motion not in _ROCKING:
                 continue
             key = (case.configuration, state.name)
+            block = stack.blocks[index]
+            if not block.base_left < block.centre[0] < block.base_right:
+                skipped.setdefault(
+                    key,
+                    "its centre of gravity does not lie between its contacts, so it cannot "
+                    "stand, let alone rock about one contact; check its centre and base",
+                )
+                continue
             if index != len(stack.blocks) - 1:
                 skipped.setdefault(
                     key,
@@ -437,9 +487,7 @@ def _rocking_candidates(
                     "body at rest",
                 )
                 continue
-            found.setdefault((case.configuration, state.name, state.pivot), []).append(
-                case_label(case)
-            )
+            found.setdefault((case.configuration, state.name, state.pivot), []).append(case)
     skipped_blocks = [
         SkippedBlock(configuration, block, reason)
         for (configuration, block), reason in skipped.items()
@@ -454,6 +502,7 @@ def assess_rocking(
     configuration: str,
     pivot: str,
     cases: tuple[str, ...],
+    vertical: float = 0.0,
 ) -> RockingAssessment:
     """Overturning assessment of ``block`` about ``pivot``, as ``freestand overturn`` makes it.
 
@@ -469,6 +518,10 @@ def assess_rocking(
         ``"left"`` or ``"right"``.
     cases : tuple of str
         Labels of the cases it rocks in.
+    vertical : float, optional
+        Downward vertical support acceleration a_v [m/s^2] of those cases:
+        when positive, the limits are also given with the weight m (g - a_v)
+        (``freestand overturn --include-vertical``).
     """
     rocking = RockingBlock.from_block(block, pivot, gravity=model.gravity)
     operating = max(e.horizontal for e in model.excitations)
@@ -483,7 +536,21 @@ def assess_rocking(
     )
     spectrum = model.spectrum("horizontal")
     checks = check_spectrum(limits, spectrum) if spectrum is not None else {}
+    half_sine_vertical = rectangular_vertical = None
+    if vertical > 0:
+        lighter = RockingBlock.from_block(
+            block, pivot, gravity=model.gravity, vertical_acceleration=vertical
+        )
+        half_sine_vertical = overturning_limits(
+            lighter, CURVE_FREQUENCIES, kind="half-sine", operating_amplitude=operating
+        )
+        rectangular_vertical = rectangular_pulse_limits(
+            lighter, amplitudes, operating_amplitude=operating
+        )
     return RockingAssessment(
+        vertical=max(vertical, 0.0),
+        half_sine_vertical=half_sine_vertical,
+        rectangular_vertical=rectangular_vertical,
         configuration=configuration,
         block=block.name,
         pivot=pivot,
@@ -526,7 +593,7 @@ def summary_sentences(
     frequency: FrequencyAssessment | None,
 ) -> tuple[str, ...]:
     """The conclusions at the top of the report, like the paper's section 7."""
-    sentences = []
+    sentences = [f"Warning: {message}." for message in model.warnings()]
     for stack in model.configurations:
         own = [c for c in cases if c.configuration == stack.name]
         sentences.append(_configuration_sentence(stack, own))
@@ -587,11 +654,13 @@ def collect_report(
     candidates, skipped = _rocking_candidates(model.configurations, list(cases))
     total = 1 + len(candidates) + 1
     assessments = []
-    for k, ((configuration, block_name, pivot), labels) in enumerate(candidates.items()):
+    for k, ((configuration, block_name, pivot), rocking_cases) in enumerate(candidates.items()):
         tell(f"overturning of the {block_name} in {configuration} (Figs. 6-8)", 1 + k, total)
         stack = model.configuration(configuration)
         block = stack.blocks[stack.block_index(block_name)]
-        assessments.append(assess_rocking(model, block, configuration, pivot, tuple(labels)))
+        labels = tuple(case_label(case) for case in rocking_cases)
+        vertical = max(max(case.vertical for case in rocking_cases), 0.0)
+        assessments.append(assess_rocking(model, block, configuration, pivot, labels, vertical))
     tell("vertical frequency and jump check (Fig. 9)", total - 1, total)
     frequency = assess_frequency(model)
     overturning = tuple(assessments)

@@ -494,7 +494,7 @@ def _screening(doc: _Document, content: ReportContent) -> str:
                     f'<td>&#8212;</td><td>none found</td><td colspan="3"></td>'
                     f'<td class="case">{_e(paper)} {flag}</td></tr>'
                 )
-            for k, state in enumerate(reversed(case.blocks)):
+            for k, state in enumerate(case.blocks):
                 block = stack.blocks[stack.block_index(state.name)]
                 note = (
                     f'<td class="case" rowspan="{len(case.blocks)}">{_e(paper)} {flag}</td>'
@@ -530,7 +530,9 @@ def _screening(doc: _Document, content: ReportContent) -> str:
         parts.append(
             doc.table(
                 f"Initial type of motion and accelerations, configuration "
-                f"<i>{_e(stack.name)}</i> (analogue of the paper's Tables 2 and 4).",
+                f"<i>{_e(stack.name)}</i> (analogue of the paper's Tables 2 and 4). "
+                "Accelerations are relative to the support: a block at rest on a body that "
+                "moves has that body's acceleration. Blocks bottom to top.",
                 _head(
                     "excitation",
                     "sense",
@@ -568,6 +570,39 @@ def _screening(doc: _Document, content: ReportContent) -> str:
     return "".join(parts)
 
 
+def _vertical_note(item: RockingAssessment) -> str:
+    """The limits with the weight m (g - a_v), where the rocking cases have a downward a_v."""
+    if item.half_sine_vertical is None:
+        return ""
+    exact = item.half_sine_vertical.operating_frequency.get("exact", float("nan"))
+    exact_g = item.half_sine.operating_frequency.get("exact", float("nan"))
+
+    def longer(f: float) -> str:
+        return f"{0.5 / f:.2f} s" if math.isfinite(f) else "no duration up to 5 s"
+
+    text = (
+        f"; with the weight m (g &#8722; a<sub>v</sub>), a<sub>v</sub> = "
+        f'<span data-quantity="vertical" data-value="{item.vertical!r}">{item.vertical:.2f}'
+        "</span> m/s<sup>2</sup> downward as in the cases it rocks in, a half-sine pulse of "
+        f"{item.operating_amplitude:.2f} m/s<sup>2</sup> overturns it if it lasts longer than "
+        f'<span data-quantity="half_sine_duration_vertical">{longer(exact)}</span> '
+        f"(exact; {longer(exact_g)} with m g)"
+    )
+    rect = item.rectangular_vertical
+    if rect is not None and len(rect.amplitude):
+        k = int(np.argmax(rect.amplitude))
+
+        def seconds(value: float) -> str:
+            return f"{value:.2f} s" if math.isfinite(value) else "none"
+
+        text += (
+            f", and a rectangular pulse of {rect.amplitude[k]:.2f} m/s<sup>2</sup> if it lasts "
+            f'<span data-quantity="rectangular_duration_vertical">{seconds(rect.exact[k])}'
+            f"</span> or longer ({seconds(item.rectangular.exact[k])} with m g)"
+        )
+    return text
+
+
 def _assessment(doc: _Document, item: RockingAssessment, number: int) -> str:
     rocking = item.rocking
     data = dict(configuration=item.configuration, block=item.block, pivot=item.pivot)
@@ -576,8 +611,10 @@ def _assessment(doc: _Document, item: RockingAssessment, number: int) -> str:
         f"<h3>4.{number} The {_e(item.block)} in configuration <i>{_e(item.configuration)}</i>, "
         f"rocking about its {_e(item.pivot)} contact {_e(item.pivot_name)}</h3>",
         f"<p>It rocks in: {_e(', '.join(item.cases))}. It is treated as a rigid block rocking "
-        "on the body below at rest (paper section 5), under a horizontal pulse; the weight is "
-        "m g (the vertical support acceleration is not included).</p>",
+        "on the body below at rest (paper section 5), under a horizontal pulse. The tables and "
+        "figures use the weight m g (the vertical support acceleration is not included)"
+        + _vertical_note(item)
+        + ".</p>",
     ]
     other = "left" if item.pivot == "right" else "right"
     rows = []
@@ -974,8 +1011,9 @@ model of section 6.</li>
 later history. A time-history analysis (<code>freestand simulate</code>) follows it where
 needed.</li>
 <li>The overturning check treats one block on a body at rest under a single pulse; real
-earthquake motion is a sequence of pulses, and the vertical acceleration is not included in
-it.</li>
+earthquake motion is a sequence of pulses. Its tables and figures use the weight m g; where
+the cases in which the block rocks have a downward vertical acceleration, the text gives the
+limits with the weight m (g &#8722; a<sub>v</sub>) as well, which are lower.</li>
 <li>Spectrum checks are as good as the spectra: the model's spectra are used as given
 (check their source and damping in section 2).</li>
 <li>As the paper says, earthquake-induced base excitations are much more complex than these

@@ -64,7 +64,7 @@ def _flag(case: InitialMotion) -> str:
 
 
 def motion_rows(cases: Sequence[InitialMotion]) -> list[Row]:
-    """Rows of the Tables 2/4 analogue, top block first within a case as in the paper."""
+    """Rows of the Tables 2/4 analogue, blocks bottom to top within a case."""
     rows = []
     for case in cases:
         sense = "+" if case.sense > 0 else "-"
@@ -75,7 +75,7 @@ def motion_rows(cases: Sequence[InitialMotion]) -> list[Row]:
                     _flag(case),
                 )
             )
-        for state in reversed(case.blocks):
+        for state in case.blocks:
             rows.append(
                 Row(
                     (
@@ -121,7 +121,7 @@ def force_rows(cases: Sequence[InitialMotion], stacks: Sequence[Stack]) -> list[
     for case in cases:
         stack = by_name[case.configuration]
         sense = "+" if case.sense > 0 else "-"
-        for state in reversed(case.blocks):
+        for state in case.blocks:
             block = stack.blocks[stack.block_index(state.name)]
             left_name, right_name = block.contact_names
             rows.append(
