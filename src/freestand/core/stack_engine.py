@@ -672,6 +672,11 @@ def _work(count):
         np.zeros(n),  # 15 free acceleration
         np.zeros((count, 3)),  # 16 contact accelerations
         np.zeros((count, 2)),  # 17 mu of the held mode (kinetic, 0)
+        np.zeros(n, dtype=np.int64),  # 18 kinds of the held mode's unknowns
+        np.zeros((10, n)),  # 19 RK4 stages
+        np.zeros((4, count)),  # 20 RK4 slide rates
+        np.zeros((n, n)),  # 21 rows of the held mode's equations
+        np.zeros((n, n)),  # 22 M^-1 G of the held mode's unknowns
     )
 
 
@@ -697,17 +702,12 @@ def _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
     """Accelerations and forces of the held mode at a state; kinematics left in ``work``."""
     a_h, a_v = _support(exc[0], exc[1], params[P_EXC_DT], t)
     _kin(model, active, q, qd, work)
-    inverse_mass = model[1]
     free = work[15]
     _free_acceleration(model, active, a_h, a_v, params[P_GRAVITY], free)
-    delassus(active, inverse_mass, free, work[0], work[1], work[2], work[3], work[8], work[9])
-    if not solve_mode(
-        active, work[8], work[9], mode, work[17], lam, work[16], work[10], work[11], work[12],
-        work[13], work[14],
-    ):  # fmt: skip
-        return False
-    accelerations(active, inverse_mass, free, work[0], work[2], mode, lam, qdd)
-    return True
+    return _held_solve(
+        active, model[1], free, work[0], work[1], work[2], work[3], mode, work[17], work[21],
+        work[22], work[13], work[10], work[11], qdd, lam,
+    )  # fmt: skip
 
 
 @nb.njit(cache=True, inline="always")
@@ -726,16 +726,17 @@ def _rk4(model, exc, params, active, t, q, qd, slide, h, mode, k1a, k1s, work, o
          out_slide, lam):  # fmt: skip
     """One RK4 step of the held mode from ``t`` over ``h``; False for a singular mode."""
     n = 3 * active
-    qs = np.empty(n)
-    vs = np.empty(n)
-    k2a = np.empty(n)
-    k3a = np.empty(n)
-    k4a = np.empty(n)
-    k2v = np.empty(n)
-    k3v = np.empty(n)
-    k2s = np.empty(active)
-    k3s = np.empty(active)
-    k4s = np.empty(active)
+    stages = work[19]
+    qs = stages[0]
+    vs = stages[1]
+    k2a = stages[2]
+    k3a = stages[3]
+    k4a = stages[4]
+    k2v = stages[5]
+    k3v = stages[6]
+    k2s = work[20][0]
+    k3s = work[20][1]
+    k4s = work[20][2]
     for c in range(n):
         qs[c] = q[c] + 0.5 * h * qd[c]
         k2v[c] = qd[c] + 0.5 * h * k1a[c]
@@ -832,6 +833,68 @@ def _fired(model, params, active, mode, directions, lam, slide, work, found):
 
 
 @nb.njit(cache=True)
+def _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, out):
+    """``out = M^-1 J^T (J M^-1 J^T)^-1 values``: the smallest correction in the mass metric.
+
+    Gaussian elimination with partial pivoting on the small symmetric system;
+    a rank-deficient system (redundant rows) falls back to least squares.
+    """
+    for r in range(m):
+        rhs[r] = values[r]
+        for s in range(r, m):
+            total = 0.0
+            for col in range(n):
+                total += rows[r, col] * inverse_mass[col] * rows[s, col]
+            system[r, s] = total
+            system[s, r] = total
+    scale = 0.0
+    for r in range(m):
+        scale = max(scale, abs(system[r, r]))
+    singular = False
+    for p in range(m):
+        pivot = p
+        largest = abs(system[p, p])
+        for r in range(p + 1, m):
+            if abs(system[r, p]) > largest:
+                largest = abs(system[r, p])
+                pivot = r
+        if largest <= 1e-12 * scale:
+            singular = True
+            break
+        if pivot != p:
+            for j in range(m):
+                tmp = system[p, j]
+                system[p, j] = system[pivot, j]
+                system[pivot, j] = tmp
+            tmp = rhs[p]
+            rhs[p] = rhs[pivot]
+            rhs[pivot] = tmp
+        for r in range(p + 1, m):
+            factor = system[r, p] / system[p, p]
+            if factor != 0.0:
+                for j in range(p + 1, m):
+                    system[r, j] -= factor * system[p, j]
+                rhs[r] -= factor * rhs[p]
+    if singular:
+        jac = rows[:m, :n].copy()
+        weighted = jac * inverse_mass[:n]
+        solution = np.linalg.lstsq(weighted @ jac.T, values[:m].copy())[0]
+        for r in range(m):
+            rhs[r] = solution[r]
+    else:
+        for p in range(m - 1, -1, -1):
+            total = rhs[p]
+            for j in range(p + 1, m):
+                total -= system[p, j] * rhs[j]
+            rhs[p] = total / system[p, p]
+    for col in range(n):
+        total = 0.0
+        for r in range(m):
+            total += rows[r, col] * rhs[r]
+        out[col] = inverse_mass[col] * total
+
+
+@nb.njit(cache=True)
 def _project(model, active, q, qd, mode, work, fstate):
     """Put the closed contacts back on their surfaces (positions, then velocities).
 
@@ -840,8 +903,11 @@ def _project(model, active, q, qd, mode, work, fstate):
     """
     n = 3 * active
     inverse_mass = model[1]
-    rows = np.empty((3 * active, n))
-    values = np.empty(3 * active)
+    rows = work[21]
+    values = work[11]
+    system = work[10]
+    rhs = work[13]
+    correction = work[15]
     for _ in range(3):
         _kin(model, active, q, qd, work)
         m = 0
@@ -860,11 +926,7 @@ def _project(model, active, q, qd, mode, work, fstate):
             return
         if largest <= 1e-14:
             break
-        jac = rows[:m]
-        weighted = jac * inverse_mass[:n]
-        system = weighted @ jac.T
-        solution = np.linalg.lstsq(system, values[:m].copy())[0]
-        correction = weighted.T @ solution
+        _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, correction)
         for col in range(n):
             if abs(correction[col]) > fstate[F_MAX_PROJECTION]:
                 fstate[F_MAX_PROJECTION] = abs(correction[col])
@@ -884,12 +946,12 @@ def _project(model, active, q, qd, mode, work, fstate):
             m += 1
     if m == 0:
         return
-    jac = rows[:m]
-    weighted = jac * inverse_mass[:n]
-    system = weighted @ jac.T
-    velocity = jac @ qd[:n]
-    solution = np.linalg.lstsq(system, velocity)[0]
-    correction = weighted.T @ solution
+    for r in range(m):
+        total = 0.0
+        for col in range(n):
+            total += rows[r, col] * qd[col]
+        values[r] = total
+    _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, correction)
     for col in range(n):
         qd[col] -= correction[col]
 
@@ -1247,6 +1309,41 @@ def _next_end(t, params, breaks, istate, h_cap):
 
 
 @nb.njit(cache=True)
+def _margin(model, params, mode, directions, lam, slide, work, kind, i, c):
+    """Signed distance to an event's condition (positive: not fired), for locating it.
+
+    The event functions of :func:`_fired`: a closed contact's normal force,
+    an open contact's gap, the friction margin of a sticking interface, a
+    sliding interface's slip velocity, the slide past an end stop, the
+    rotation to pi/2.
+    """
+    if kind == LIFT_OFF:
+        return lam[i, c] + params[P_FORCE_EVENT]
+    if kind == IMPACT:
+        return work[4][i, c] + params[P_GAP_EVENT]
+    if kind == SLIP:
+        sliding = model[5][i]
+        if (sliding == 2 or sliding == 3) and not _engaged(sliding, slide[i], params[P_TOL_SLIDE]):
+            sliding = 0
+        limit = model[3][i] * (lam[i, 0] + lam[i, 1]) + params[P_FORCE_EVENT]
+        tangential = lam[i, 2]
+        worst = -math.inf
+        if sliding != 2:
+            worst = max(worst, -tangential)
+        if sliding != 3:
+            worst = max(worst, tangential)
+        return limit - worst
+    if kind == SLIP_STOP:
+        slip = work[6][i, _reference(mode, i)]
+        return directions[i] * slip + 1e-3 * params[P_TOL_VEL]
+    if kind == STOP_IMPACT:
+        if model[5][i] == 2:
+            return params[P_TOL_SLIDE] - slide[i]
+        return slide[i] + params[P_TOL_SLIDE]
+    return 0.5 * math.pi - abs(work[7][i])
+
+
+@nb.njit(cache=True)
 def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, mode, directions,
         istate, fstate, flags, rec, ev):  # fmt: skip
     """Advance the simulation until the end, a failure, full buffers or ``chunk_end``.
@@ -1390,12 +1487,25 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                         break
                     _slide_rate(active, mode, work[6], rates_s)
             continue
-        # locate the earliest event by bisection
+        # locate the earliest event to time_tol: a bracket [low, high] (not fired,
+        # fired) cut by the Illinois variant of regula falsi on the event's
+        # function (bisection while that function is not known on both sides)
         low = 0.0
         high = h
         failed = False
+        g_high = _margin(model, params, mode, directions, lam1, slide1, work, found[0], found[1],
+                         found[2])  # fmt: skip
+        _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd1, lam1)
+        g_low = _margin(model, params, mode, directions, lam1, slide, work, found[0], found[1],
+                        found[2])  # fmt: skip
+        side = 0
         while high - low > time_tol:
-            middle = 0.5 * (low + high)
+            width = high - low
+            if g_low > 0.0 and g_high < 0.0:
+                middle = low + g_low * width / (g_low - g_high)
+                middle = min(max(middle, low + 0.5 * time_tol), high - 0.5 * time_tol)
+            else:
+                middle = 0.5 * (low + high)
             if not _rk4(model, exc, params, active, t, q, qd, slide, middle, mode, qdd, rates_s,
                         work, qm, qdm, slide_m, lam1):  # fmt: skip
                 failed = True
@@ -1409,9 +1519,22 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                 q1[:n] = qm[:n]
                 qd1[:n] = qdm[:n]
                 slide1[:active] = slide_m[:active]
+                if found_m[0] != found[0] or found_m[1] != found[1] or found_m[2] != found[2]:
+                    g_low = math.nan  # another event: its function is not known at low
+                    side = 0
                 found[:] = found_m
+                g_high = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
+                                 found[1], found[2])  # fmt: skip
+                if side == 1:
+                    g_low *= 0.5
+                side = 1
             else:
                 low = middle
+                g_low = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
+                                found[1], found[2])  # fmt: skip
+                if side == -1:
+                    g_high *= 0.5
+                side = -1
         if failed:
             istate[S_FAILURE] = SINGULAR_MODE
             outcome = FAILED
@@ -1480,3 +1603,105 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         outcome = COMPLETED
     istate[S_STATUS] = outcome
     return outcome
+
+
+@nb.njit(cache=True)
+def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, force_g, coeff,
+                matrix, rhs, qdd, lam):  # fmt: skip
+    """Forces and accelerations of a held mode, without the contact accelerations.
+
+    The unknowns ``x_j`` are the closed contacts' normal forces and the
+    sticking interfaces' tangential forces; each acts along
+    ``G_j = J_j + c_j J_t`` (``c_j = -d mu`` carries a sliding interface's
+    friction). Equations: zero gap acceleration at the closed contacts and
+    zero slip acceleration at the sticking interfaces,
+    ``sum_j (J_r M^-1 G_j^T) x_j = -(J_r M^-1 f + b_r)``; then
+    ``qdd = M^-1 (f + sum_j G_j^T x_j)``. ``row_j``, ``force_g`` (3 B, 3 B)
+    work arrays. Returns False when singular.
+    """
+    n = 3 * active
+    k = 0
+    for i in range(active):
+        lam[i, 0] = 0.0
+        lam[i, 1] = 0.0
+        lam[i, 2] = 0.0
+        tangential = mode[i, 2]
+        reference = 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
+        direction = 0.0
+        if tangential == 2:
+            direction = 1.0
+        elif tangential == 3:
+            direction = -1.0
+        c_slide = -direction * mu[i, 0]
+        for side in range(2):
+            if mode[i, side] == 1:
+                total = bn[i, side]
+                for col in range(n):
+                    value = jn[i, side, col]
+                    row_j[k, col] = value
+                    force_g[k, col] = inverse_mass[col] * (value + c_slide * jt[i, reference, col])
+                    total += value * free[col]
+                rhs[k] = -total
+                coeff[k] = 3 * i + side
+                k += 1
+        if tangential == 1:
+            total = bt[i, reference]
+            for col in range(n):
+                value = jt[i, reference, col]
+                row_j[k, col] = value
+                force_g[k, col] = inverse_mass[col] * value
+                total += value * free[col]
+            rhs[k] = -total
+            coeff[k] = 3 * i + 2
+            k += 1
+    for r in range(k):
+        for j in range(k):
+            total = 0.0
+            for col in range(n):
+                total += row_j[r, col] * force_g[j, col]
+            matrix[r, j] = total
+    for p in range(k):
+        pivot = p
+        largest = abs(matrix[p, p])
+        for r in range(p + 1, k):
+            if abs(matrix[r, p]) > largest:
+                largest = abs(matrix[r, p])
+                pivot = r
+        if largest == 0.0:
+            return False
+        if pivot != p:
+            for j in range(k):
+                tmp = matrix[p, j]
+                matrix[p, j] = matrix[pivot, j]
+                matrix[pivot, j] = tmp
+            tmp = rhs[p]
+            rhs[p] = rhs[pivot]
+            rhs[pivot] = tmp
+        for r in range(p + 1, k):
+            factor = matrix[r, p] / matrix[p, p]
+            if factor != 0.0:
+                for j in range(p + 1, k):
+                    matrix[r, j] -= factor * matrix[p, j]
+                rhs[r] -= factor * rhs[p]
+    for p in range(k - 1, -1, -1):
+        total = rhs[p]
+        for j in range(p + 1, k):
+            total -= matrix[p, j] * rhs[j]
+        rhs[p] = total / matrix[p, p]
+    for c in range(n):
+        qdd[c] = free[c]
+    for j in range(k):
+        x = rhs[j]
+        slot = int(coeff[j])
+        i = slot // 3
+        kind = slot % 3
+        lam[i, kind] += x
+        if kind < 2:
+            tangential = mode[i, 2]
+            if tangential == 2:
+                lam[i, 2] -= mu[i, 0] * x
+            elif tangential == 3:
+                lam[i, 2] += mu[i, 0] * x
+        for col in range(n):
+            qdd[col] += force_g[j, col] * x
+    return True

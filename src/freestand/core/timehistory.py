@@ -889,11 +889,12 @@ def simulate_general(
     if sampled:
         step = default_step(stack, gravity) if max_step is None else float(max_step)
         dt = excitation.time_step
-        horizontal = np.ascontiguousarray(excitation.horizontal, dtype=float)
+        # fresh, writeable copies: one compiled signature whatever the caller's arrays
+        horizontal = np.array(excitation.horizontal, dtype=float)
         vertical = (
             np.zeros_like(horizontal)
             if excitation.vertical is None
-            else np.ascontiguousarray(excitation.vertical, dtype=float)
+            else np.array(excitation.vertical, dtype=float)
         )
         breaks = record_breaks(dt, horizontal, vertical, step)
     else:
@@ -905,8 +906,8 @@ def simulate_general(
         dt = 0.5 * step
         times = np.arange(2 * steps_count + 1) * dt
         values = np.array([excitation(float(t)) for t in times], dtype=float).reshape(-1, 2)
-        horizontal = np.ascontiguousarray(values[:, 0])
-        vertical = np.ascontiguousarray(values[:, 1])
+        horizontal = np.array(values[:, 0])
+        vertical = np.array(values[:, 1])
         breaks = np.arange(1, steps_count + 1) * step
     q = np.zeros(3 * count) if initial_position is None else np.array(initial_position, float)
     qd = np.zeros(3 * count) if initial_velocity is None else np.array(initial_velocity, float)
@@ -996,7 +997,7 @@ def record_breaks(
     count = horizontal.size
     end = (count - 1) * time_step
     if time_step * 8.0 < step:
-        return np.array([end])
+        return np.array([end], dtype=float)
     kinks = np.zeros(count, dtype=bool)
     for values in (horizontal, vertical):
         scale = max(float(np.max(np.abs(values), initial=0.0)), 1e-300)
@@ -1004,7 +1005,7 @@ def record_breaks(
         kinks[1:-1] |= second > 1e-12 * scale
     kinks[-1] = True
     # starting from rest with a non-zero first sample is a jump at t = 0
-    return np.flatnonzero(kinks) * time_step
+    return np.array(np.flatnonzero(kinks) * time_step, dtype=float)
 
 
 def engine_model(stack: Stack, restitution: np.ndarray) -> tuple:
