@@ -290,7 +290,8 @@ def delassus(active, inverse_mass, free_acc, jn, bn, jt, bt, w, h):
 
 
 @nb.njit(cache=True)
-def solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full):
+def solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full,
+               with_accelerations=True):  # fmt: skip
     """Forces ``lam`` (N_L, N_R, T per interface) and contact accelerations of one mode.
 
     ``mode`` (B, 3): left closed, right closed, tangential code; ``mu`` the
@@ -373,6 +374,15 @@ def solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full):
         lam[i, 0] = full[4 * i]
         lam[i, 1] = full[4 * i + 1]
         lam[i, 2] = full[4 * i + 2] + full[4 * i + 3]
+    if not with_accelerations:
+        return True
+    contact_accelerations(active, w, h, mode, full, a)
+    return True
+
+
+@nb.njit(cache=True)
+def contact_accelerations(active, w, h, mode, full, a):
+    """Gap accelerations (left, right) and slip acceleration of every interface, ``W lam + h``."""
     for i in range(active):
         reference = 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
         for kind in range(3):
@@ -385,7 +395,6 @@ def solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full):
             a[i, 0] = 0.0
         if mode[i, 1] == 1:
             a[i, 1] = 0.0
-    return True
 
 
 @nb.njit(cache=True)
@@ -468,7 +477,7 @@ def solve_contact_problem(
     out_qdd,
     out_lam,
 ):
-    """Every consistent state of the contact problem, as :func:`~freestand.core.contact.solve_contact`.
+    """Every consistent state of the contact problem (:func:`~freestand.core.contact.solve_contact`).
 
     ``contact_active`` (B, 2) bool; ``slip`` (B,) the slip velocity (non-zero:
     kinetic); ``sliding`` (B,) effective restriction codes. Fills the distinct
@@ -536,16 +545,35 @@ def solve_contact_problem(
             opened += 2 - mode[i, 0] - mode[i, 1]
         key[combo] = ((active - sticking) * (2 * active + 1) + opened) * total + combo
         lam = lam_all[combo]
-        if not solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full):
+        if not solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full, False):
             continue
+        # the inequalities on the forces first (most modes fail there), then the
+        # contact accelerations
+        admissible = True
+        for i in range(active):
+            for c in range(3):
+                if not np.isfinite(lam[i, c]):
+                    admissible = False
+            for side in range(2):
+                if mode[i, side] == 1 and lam[i, side] < -force_tol:
+                    admissible = False
+            if mode[i, 2] == 1 and sliding[i] != 1:
+                limit = mu_static[i] * (lam[i, 0] + lam[i, 1]) + force_tol
+                force = lam[i, 2]
+                if sliding[i] != 2 and -force > limit:
+                    admissible = False
+                if sliding[i] != 3 and force > limit:
+                    admissible = False
+        if not admissible:
+            continue
+        contact_accelerations(active, w, h, mode, full, a)
         finite = True
         for i in range(active):
             for c in range(3):
-                if not (np.isfinite(lam[i, c]) and np.isfinite(a[i, c])):
+                if not np.isfinite(a[i, c]):
                     finite = False
         if not finite:
             continue
-        admissible = True
         for i in range(active):
             if not admissible:
                 break
@@ -697,16 +725,27 @@ def _free_acceleration(model, active, a_h, a_v, gravity, out):
         out[3 * i + 2] = 0.0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
     """Accelerations and forces of the held mode at a state; kinematics left in ``work``."""
-    a_h, a_v = _support(exc[0], exc[1], params[P_EXC_DT], t)
-    _kin(model, active, q, qd, work)
+    horizontal, vertical = exc
+    a_h, a_v = _support(horizontal, vertical, params[P_EXC_DT], t)
+    geometry = model[0]
+    inverse_mass = model[1]
+    jn = work[0]
+    bn = work[1]
+    jt = work[2]
+    bt = work[3]
     free = work[15]
-    _free_acceleration(model, active, a_h, a_v, params[P_GRAVITY], free)
+    effective_gravity = params[P_GRAVITY] - a_v
+    for i in range(active):
+        free[3 * i] = -a_h
+        free[3 * i + 1] = -effective_gravity
+        free[3 * i + 2] = 0.0
+    kinematics(geometry, active, q, qd, work[4], work[5], work[6], work[7], jn, bn, jt, bt)
     return _held_solve(
-        active, model[1], free, work[0], work[1], work[2], work[3], mode, work[17], work[21],
-        work[22], work[13], work[10], work[11], qdd, lam,
+        active, inverse_mass, free, jn, bn, jt, bt, mode, work[17], work[21], work[22],
+        work[13], work[10], work[11], qdd, lam,
     )  # fmt: skip
 
 
@@ -1139,7 +1178,8 @@ def _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, dir
     qdds = np.empty((MAX_DISTINCT, n))
     forces = np.empty((MAX_DISTINCT, active, 3))
     count = solve_contact_problem(
-        active, model[1], free, work[0], work[1], work[2], work[3], contact_active, slip, sliding, mu_s, mu_k, force_tol, accel_tol, modes, qdds, forces,
+        active, model[1], free, work[0], work[1], work[2], work[3], contact_active, slip,
+        sliding, mu_s, mu_k, force_tol, accel_tol, modes, qdds, forces,
     )  # fmt: skip
     istate[S_CONTACT_SOLVES] += 1
     if count == 0:
@@ -1296,7 +1336,7 @@ def _event(t, kind, interface, contact, status, active_before, active_after, mod
 
 @nb.njit(cache=True)
 def _next_end(t, params, breaks, istate, h_cap):
-    """End of the next step: the next break point after ``t`` (or ``t + h_cap``), at most the end."""
+    """End of the next step: the next break point after ``t``, or ``t + h_cap``, or the end."""
     end = params[P_END]
     k = istate[S_BREAK]
     while k < breaks.shape[0] and breaks[k] <= t + 1e-6 * h_cap:
@@ -1341,6 +1381,18 @@ def _margin(model, params, mode, directions, lam, slide, work, kind, i, c):
             return params[P_TOL_SLIDE] - slide[i]
         return slide[i] + params[P_TOL_SLIDE]
     return 0.5 * math.pi - abs(work[7][i])
+
+
+@nb.njit(cache=True)
+def _at_rest(active, mode, qd):
+    """Whether every interface sticks with both contacts closed and nothing moves."""
+    for i in range(active):
+        if mode[i, 0] != 1 or mode[i, 1] != 1 or mode[i, 2] != 1:
+            return False
+    for c in range(3 * active):
+        if abs(qd[c]) > 1e-9:
+            return False
+    return True
 
 
 @nb.njit(cache=True)
@@ -1429,8 +1481,16 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         h = _next_end(t, params, breaks, istate, h_cap) - t
         if h <= 1e-3 * time_tol:
             h = h_cap
-        if not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, qdd, rates_s, work,
-                    q1, qd1, slide1, lam1):  # fmt: skip
+        resting = _at_rest(active, mode, qd)
+        if resting:
+            # the whole stack moves with the support: nothing moves in its frame and the
+            # forces are linear in the support accelerations, hence in time between two
+            # break points; only the end of the segment is evaluated
+            q1[:n] = q[:n]
+            qd1[:n] = qd[:n]
+            slide1[:active] = slide[:active]
+        elif not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, qdd, rates_s, work,
+                      q1, qd1, slide1, lam1):  # fmt: skip
             istate[S_FAILURE] = SINGULAR_MODE
             outcome = FAILED
             break
@@ -1438,6 +1498,8 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
             istate[S_FAILURE] = SINGULAR_MODE
             outcome = FAILED
             break
+        if resting:
+            qdd1[:n] = 0.0
         if not _fired(model, params, active, mode, directions, lam1, slide1, work, found):
             t += h
             qdd[:n] = qdd1[:n]
@@ -1452,7 +1514,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                 for c in range(2):
                     if mode[i, c] == 1:
                         drift = max(drift, abs(work[4][i, c]))
-            if drift > 1e-3 * params[P_TOL_GAP]:
+            if drift > 1e-1 * params[P_TOL_GAP]:
                 _project(model, active, q, qd, mode, work, fstate)
                 if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
                     istate[S_FAILURE] = SINGULAR_MODE
@@ -1493,6 +1555,36 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         low = 0.0
         high = h
         failed = False
+        if resting:
+            # the earliest crossing of a force margin, linear over the segment
+            first = h
+            for i in range(active):
+                for kind in (LIFT_OFF, SLIP):
+                    for c in range(2 if kind == LIFT_OFF else 1):
+                        g1 = _margin(model, params, mode, directions, lam1, slide1, work, kind,
+                                     i, c if kind == LIFT_OFF else -1)  # fmt: skip
+                        if g1 >= 0.0:
+                            continue
+                        g0 = _margin(model, params, mode, directions, lam, slide, work, kind, i,
+                                     c if kind == LIFT_OFF else -1)  # fmt: skip
+                        crossing = h * g0 / (g0 - g1) if g0 > 0.0 else 0.0
+                        first = min(first, crossing)
+            low = max(0.0, first - time_tol)
+            high = min(h, first + time_tol)
+            if high < h:
+                _evaluate(model, exc, params, active, t + high, q, qd, mode, work, qdd1, lam1)
+                if not _fired(model, params, active, mode, directions, lam1, slide, work,
+                              found_m):  # fmt: skip
+                    low = high
+                    high = h
+                else:
+                    found[:] = found_m
+            if low > 0.0:
+                _evaluate(model, exc, params, active, t + low, q, qd, mode, work, qdd1, lam1)
+                if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
+                    high = low
+                    low = 0.0
+                    found[:] = found_m
         g_high = _margin(model, params, mode, directions, lam1, slide1, work, found[0], found[1],
                          found[2])  # fmt: skip
         _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd1, lam1)
