@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 from pathlib import Path
 
 import numpy as np
 import typer
+from rich.console import Console
+from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
 from freestand.cli.common import console
@@ -98,9 +101,11 @@ def simulate(
         np.asarray(motion.horizontal),
         None if motion.vertical is None else np.asarray(motion.vertical),
     )
-    result = simulate_stack(
-        stack, support, duration, method=method, max_step=step, gravity=model.gravity
-    )
+    with _progress_bar(as_json) as progress:
+        result = simulate_stack(
+            stack, support, duration, method=method, max_step=step, gravity=model.gravity,
+            progress=progress,
+        )  # fmt: skip
     title = (
         f"{model.name} / {configuration}: {motion.name}, peak {motion.peak_horizontal:.2f} m/s^2"
     )
@@ -179,6 +184,25 @@ def simulate(
     )
     for path in written:
         out.print(f"wrote {path}")
+
+
+@contextlib.contextmanager
+def _progress_bar(quiet: bool):
+    """A rich progress bar of the simulated time on stderr (a terminal only, not with --json)."""
+    console = Console(stderr=True)
+    if quiet or not console.is_terminal:
+        yield None
+        return
+    with Progress(
+        TextColumn("simulating"),
+        BarColumn(),
+        TaskProgressColumn(),
+        TimeElapsedColumn(),
+        console=console,
+        transient=True,
+    ) as bar:
+        task = bar.add_task("simulating", total=1.0)
+        yield lambda fraction: bar.update(task, completed=fraction)
 
 
 def check_drawing_options(plot: Path | None, animate: Path | None, exaggerate: float) -> None:

@@ -128,7 +128,7 @@ def _support(horizontal, vertical, dt, t):
 
 @nb.njit(cache=True)
 def kinematics(geometry, active, q, qd, gap, gap_velocity, slip_velocity, rotation, jn, bn, jt, bt,
-               slide=None):  # fmt: skip
+               slide=None, first=0):  # fmt: skip
     """Gaps, relative velocities, Jacobians and velocity terms of the first ``active`` blocks.
 
     Same equations as :func:`freestand.core.timehistory.stack_kinematics`
@@ -136,9 +136,10 @@ def kinematics(geometry, active, q, qd, gap, gap_velocity, slip_velocity, rotati
     only the columns of the interface's two blocks are written and the
     others must be zero). With ``slide`` (B,) also the slide of each
     interface's left contact along the lower surface from the lower body's
-    material point it started on, ``t . (P_L - X_L)``.
+    material point it started on, ``t . (P_L - X_L)``. Interfaces below
+    ``first`` are left as they are.
     """
-    for i in range(active):
+    for i in range(first, active):
         cxu = geometry[i, 0]
         czu = geometry[i, 1]
         gxu = cxu + q[3 * i]
@@ -726,7 +727,7 @@ def _free_acceleration(model, active, a_h, a_v, gravity, out):
 
 
 @nb.njit(cache=True, inline="always")
-def _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
+def _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam, first=0):
     """Accelerations and forces of the held mode at a state; kinematics left in ``work``."""
     horizontal, vertical = exc
     a_h, a_v = _support(horizontal, vertical, params[P_EXC_DT], t)
@@ -742,10 +743,12 @@ def _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
         free[3 * i] = -a_h
         free[3 * i + 1] = -effective_gravity
         free[3 * i + 2] = 0.0
-    kinematics(geometry, active, q, qd, work[4], work[5], work[6], work[7], jn, bn, jt, bt)
+    kinematics(
+        geometry, active, q, qd, work[4], work[5], work[6], work[7], jn, bn, jt, bt, None, first
+    )
     return _held_solve(
         active, inverse_mass, free, jn, bn, jt, bt, mode, work[17], work[21], work[22],
-        work[13], work[10], work[11], qdd, lam,
+        work[13], work[10], work[11], qdd, lam, first,
     )  # fmt: skip
 
 
@@ -762,7 +765,7 @@ def _slide_rate(active, mode, slip_velocity, out):
 
 @nb.njit(cache=True)
 def _rk4(model, exc, params, active, t, q, qd, slide, h, mode, k1a, k1s, work, out_q, out_qd,
-         out_slide, lam):  # fmt: skip
+         out_slide, lam, first=0):  # fmt: skip
     """One RK4 step of the held mode from ``t`` over ``h``; False for a singular mode."""
     n = 3 * active
     stages = work[19]
@@ -779,19 +782,19 @@ def _rk4(model, exc, params, active, t, q, qd, slide, h, mode, k1a, k1s, work, o
     for c in range(n):
         qs[c] = q[c] + 0.5 * h * qd[c]
         k2v[c] = qd[c] + 0.5 * h * k1a[c]
-    if not _evaluate(model, exc, params, active, t + 0.5 * h, qs, k2v, mode, work, k2a, lam):
+    if not _evaluate(model, exc, params, active, t + 0.5 * h, qs, k2v, mode, work, k2a, lam, first):
         return False
     _slide_rate(active, mode, work[6], k2s)
     for c in range(n):
         qs[c] = q[c] + 0.5 * h * k2v[c]
         k3v[c] = qd[c] + 0.5 * h * k2a[c]
-    if not _evaluate(model, exc, params, active, t + 0.5 * h, qs, k3v, mode, work, k3a, lam):
+    if not _evaluate(model, exc, params, active, t + 0.5 * h, qs, k3v, mode, work, k3a, lam, first):
         return False
     _slide_rate(active, mode, work[6], k3s)
     for c in range(n):
         qs[c] = q[c] + h * k3v[c]
         vs[c] = qd[c] + h * k3a[c]
-    if not _evaluate(model, exc, params, active, t + h, qs, vs, mode, work, k4a, lam):
+    if not _evaluate(model, exc, params, active, t + h, qs, vs, mode, work, k4a, lam, first):
         return False
     _slide_rate(active, mode, work[6], k4s)
     for c in range(n):
@@ -1384,6 +1387,28 @@ def _margin(model, params, mode, directions, lam, slide, work, kind, i, c):
 
 
 @nb.njit(cache=True)
+def _stuck_below(active, mode, qd):
+    """Number of bottom blocks that stick to the support and do not move.
+
+    Their coordinates are not integrated during a step (the RK4 stages solve
+    the blocks above them only); the full system is evaluated at the step's
+    end, where their own events (lift-off, slip) are checked.
+    """
+    first = 0
+    while first < active:
+        if mode[first, 0] != 1 or mode[first, 1] != 1 or mode[first, 2] != 1:
+            break
+        moving = False
+        for c in range(3 * first, 3 * first + 3):
+            if abs(qd[c]) > 1e-9:
+                moving = True
+        if moving:
+            break
+        first += 1
+    return first
+
+
+@nb.njit(cache=True)
 def _at_rest(active, mode, qd):
     """Whether every interface sticks with both contacts closed and nothing moves."""
     for i in range(active):
@@ -1482,6 +1507,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         if h <= 1e-3 * time_tol:
             h = h_cap
         resting = _at_rest(active, mode, qd)
+        first = _stuck_below(active, mode, qd)
         if resting:
             # the whole stack moves with the support: nothing moves in its frame and the
             # forces are linear in the support accelerations, hence in time between two
@@ -1490,7 +1516,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
             qd1[:n] = qd[:n]
             slide1[:active] = slide[:active]
         elif not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, qdd, rates_s, work,
-                      q1, qd1, slide1, lam1):  # fmt: skip
+                      q1, qd1, slide1, lam1, first):  # fmt: skip
             istate[S_FAILURE] = SINGULAR_MODE
             outcome = FAILED
             break
@@ -1514,7 +1540,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                 for c in range(2):
                     if mode[i, c] == 1:
                         drift = max(drift, abs(work[4][i, c]))
-            if drift > 1e-1 * params[P_TOL_GAP]:
+            if drift > 1e-3 * params[P_TOL_GAP]:
                 _project(model, active, q, qd, mode, work, fstate)
                 if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
                     istate[S_FAILURE] = SINGULAR_MODE
@@ -1557,7 +1583,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         failed = False
         if resting:
             # the earliest crossing of a force margin, linear over the segment
-            first = h
+            earliest = h
             for i in range(active):
                 for kind in (LIFT_OFF, SLIP):
                     for c in range(2 if kind == LIFT_OFF else 1):
@@ -1568,9 +1594,9 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                         g0 = _margin(model, params, mode, directions, lam, slide, work, kind, i,
                                      c if kind == LIFT_OFF else -1)  # fmt: skip
                         crossing = h * g0 / (g0 - g1) if g0 > 0.0 else 0.0
-                        first = min(first, crossing)
-            low = max(0.0, first - time_tol)
-            high = min(h, first + time_tol)
+                        earliest = min(earliest, crossing)
+            low = max(0.0, earliest - time_tol)
+            high = min(h, earliest + time_tol)
             if high < h:
                 _evaluate(model, exc, params, active, t + high, q, qd, mode, work, qdd1, lam1)
                 if not _fired(model, params, active, mode, directions, lam1, slide, work,
@@ -1585,21 +1611,26 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                     high = low
                     low = 0.0
                     found[:] = found_m
-        g_high = _margin(model, params, mode, directions, lam1, slide1, work, found[0], found[1],
-                         found[2])  # fmt: skip
-        _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd1, lam1)
-        g_low = _margin(model, params, mode, directions, lam1, slide, work, found[0], found[1],
-                        found[2])  # fmt: skip
+        if resting:
+            # a bracket of at most twice the tolerance: bisection
+            g_high = -1.0
+            g_low = math.nan
+        else:
+            g_high = _margin(model, params, mode, directions, lam1, slide1, work, found[0],
+                             found[1], found[2])  # fmt: skip
+            _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd1, lam1)
+            g_low = _margin(model, params, mode, directions, lam1, slide, work, found[0],
+                            found[1], found[2])  # fmt: skip
         side = 0
         while high - low > time_tol:
             width = high - low
             if g_low > 0.0 and g_high < 0.0:
                 middle = low + g_low * width / (g_low - g_high)
-                middle = min(max(middle, low + 0.5 * time_tol), high - 0.5 * time_tol)
+                middle = min(max(middle, low + 0.01 * time_tol), high - 0.01 * time_tol)
             else:
                 middle = 0.5 * (low + high)
             if not _rk4(model, exc, params, active, t, q, qd, slide, middle, mode, qdd, rates_s,
-                        work, qm, qdm, slide_m, lam1):  # fmt: skip
+                        work, qm, qdm, slide_m, lam1, first):  # fmt: skip
                 failed = True
                 break
             if not _evaluate(model, exc, params, active, t + middle, qm, qdm, mode, work, qdd1,
@@ -1699,7 +1730,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
 
 @nb.njit(cache=True)
 def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, force_g, coeff,
-                matrix, rhs, qdd, lam):  # fmt: skip
+                matrix, rhs, qdd, lam, first=0):  # fmt: skip
     """Forces and accelerations of a held mode, without the contact accelerations.
 
     The unknowns ``x_j`` are the closed contacts' normal forces and the
@@ -1710,13 +1741,20 @@ def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, for
     ``sum_j (J_r M^-1 G_j^T) x_j = -(J_r M^-1 f + b_r)``; then
     ``qdd = M^-1 (f + sum_j G_j^T x_j)``. ``row_j``, ``force_g`` (3 B, 3 B)
     work arrays. Returns False when singular.
+
+    With ``first`` > 0 the blocks below ``first`` are held fixed (they stick to
+    the support, nothing moves): only the interfaces from ``first`` up and
+    the coordinates of their upper blocks take part; the others get no
+    acceleration and their forces are not computed (zero).
     """
     n = 3 * active
+    c0 = 3 * first
     k = 0
     for i in range(active):
         lam[i, 0] = 0.0
         lam[i, 1] = 0.0
         lam[i, 2] = 0.0
+    for i in range(first, active):
         tangential = mode[i, 2]
         reference = 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
         direction = 0.0
@@ -1728,7 +1766,7 @@ def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, for
         for side in range(2):
             if mode[i, side] == 1:
                 total = bn[i, side]
-                for col in range(n):
+                for col in range(c0, n):
                     value = jn[i, side, col]
                     row_j[k, col] = value
                     force_g[k, col] = inverse_mass[col] * (value + c_slide * jt[i, reference, col])
@@ -1738,7 +1776,7 @@ def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, for
                 k += 1
         if tangential == 1:
             total = bt[i, reference]
-            for col in range(n):
+            for col in range(c0, n):
                 value = jt[i, reference, col]
                 row_j[k, col] = value
                 force_g[k, col] = inverse_mass[col] * value
@@ -1749,7 +1787,7 @@ def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, for
     for r in range(k):
         for j in range(k):
             total = 0.0
-            for col in range(n):
+            for col in range(c0, n):
                 total += row_j[r, col] * force_g[j, col]
             matrix[r, j] = total
     for p in range(k):
@@ -1781,7 +1819,7 @@ def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, for
             total -= matrix[p, j] * rhs[j]
         rhs[p] = total / matrix[p, p]
     for c in range(n):
-        qdd[c] = free[c]
+        qdd[c] = free[c] if c >= c0 else 0.0
     for j in range(k):
         x = rhs[j]
         slot = int(coeff[j])
@@ -1794,6 +1832,6 @@ def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, for
                 lam[i, 2] -= mu[i, 0] * x
             elif tangential == 3:
                 lam[i, 2] += mu[i, 0] * x
-        for col in range(n):
+        for col in range(c0, n):
             qdd[col] += force_g[j, col] * x
     return True

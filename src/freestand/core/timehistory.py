@@ -14,12 +14,17 @@ reduces the weight to ``m (g - a_v)``.
 
 The instantaneous contact problem is the one of :mod:`freestand.core.contact`
 (the screening engine's), built at a general configuration with the velocity
-terms (:func:`contact_problem_in_motion`). The integration is event-driven:
+terms (:func:`contact_problem_in_motion`). The integration is event-driven and
+runs compiled, the whole loop in :mod:`freestand.core.stack_engine`:
 
 * the contact mode chosen by :func:`~freestand.core.contact.solve_contact` is
-  held while the smooth dynamics of that mode are integrated with fixed-step
-  Runge-Kutta (RK4) steps;
-* events end a step and are located by bisection: a gap closing (impact), a
+  held while the smooth dynamics of that mode are integrated with Runge-Kutta
+  (RK4) steps of at most :func:`default_step` under a sampled record (ending
+  where its slope changes, :func:`record_breaks`) or ``max_step`` under a
+  function; phases in which the whole stack rests on the support are not
+  integrated (the forces are linear in the support accelerations);
+* events end a step and are located to ``time_tolerance`` (regula falsi,
+  Illinois variant, with bisection as fallback): a gap closing (impact), a
   normal force reaching zero (lift-off), a slip velocity reaching zero
   (possible stick or reversal), a sticking interface's friction reaching the
   static cone (slip), a block sliding back onto its end stop, a block lying on
