@@ -29,10 +29,11 @@ kinetic one (0.2 for the cart); for the accuracy figures of (b) freestand
 also runs a variant with the static coefficient equal to the kinetic one.
 
 Timings: the shortest of several runs after compilation (the machine may be
-shared), freestand at its default step (0.02 / p, steps ending where the record's slope changes), MuJoCo at its
-2 ms step. Accuracy: peak relative rotation and slide of every block, the
-number of impacts and the first uplift, for freestand and MuJoCo at 2 ms
-against MuJoCo at a 0.1 ms step.
+shared), freestand at its default step (0.05 / p, steps ending where the
+record's slope changes), MuJoCo at its 2 ms step. Accuracy: peak relative
+rotation and slide of every block and the first uplift (relative rotation
+above 1e-5 rad), for freestand and MuJoCo at 2 ms against MuJoCo at a 0.1 ms
+step.
 
     python benchmarks/engine.py
 

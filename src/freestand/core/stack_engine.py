@@ -478,7 +478,7 @@ def solve_contact_problem(
     out_qdd,
     out_lam,
 ):
-    """Every consistent state of the contact problem (:func:`~freestand.core.contact.solve_contact`).
+    """Every consistent state of the contact problem (as ``contact.solve_contact``).
 
     ``contact_active`` (B, 2) bool; ``slip`` (B,) the slip velocity (non-zero:
     kinetic); ``sliding`` (B,) effective restriction codes. Fills the distinct
