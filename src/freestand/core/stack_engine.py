@@ -1597,20 +1597,25 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                         earliest = min(earliest, crossing)
             low = max(0.0, earliest - time_tol)
             high = min(h, earliest + time_tol)
-            if high < h:
-                _evaluate(model, exc, params, active, t + high, q, qd, mode, work, qdd1, lam1)
-                if not _fired(model, params, active, mode, directions, lam1, slide, work,
-                              found_m):  # fmt: skip
-                    low = high
-                    high = h
-                else:
-                    found[:] = found_m
+            located = False
             if low > 0.0:
                 _evaluate(model, exc, params, active, t + low, q, qd, mode, work, qdd1, lam1)
                 if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
+                    # the margins were not linear over the segment: search [0, low]
                     high = low
                     low = 0.0
                     found[:] = found_m
+                    located = True
+            if not located and high < h:
+                _evaluate(model, exc, params, active, t + high, q, qd, mode, work, qdd1, lam1)
+                if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
+                    # located to the tolerance; events crossing within it are taken as
+                    # simultaneous (reported by priority, as at a jump of the excitation)
+                    found[:] = found_m
+                    low = max(0.0, high - 0.5 * time_tol)
+                else:
+                    low = high
+                    high = h
         if resting:
             # a bracket of at most twice the tolerance: bisection
             g_high = -1.0
