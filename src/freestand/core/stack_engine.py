@@ -1444,6 +1444,9 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
     qdm = np.zeros(n_full)
     slide_m = np.zeros(count)
     lam1 = np.zeros((count, 3))
+    lam2 = np.zeros((count, 3))
+    lam_lo = np.zeros((count, 3))
+    lam_hi = np.zeros((count, 3))
     rates_s = np.zeros(count)
     found = np.zeros(3, dtype=np.int64)
     found_m = np.zeros(3, dtype=np.int64)
@@ -1582,18 +1585,37 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         high = h
         failed = False
         if resting:
-            # the earliest crossing of a force margin, linear over the segment
-            earliest = h
+            # the earliest crossing of a force margin: linear between the excitation's
+            # samples, so the segment is first narrowed to the samples around it
+            seg_lo = 0.0
+            seg_hi = h
+            lam_lo[:active] = lam[:active]
+            lam_hi[:active] = lam1[:active]
+            dt_exc = params[P_EXC_DT]
+            k_sample = math.floor(t / dt_exc + 1e-9) + 1
+            while k_sample * dt_exc < t + h - 1e-6 * time_tol:
+                tm = k_sample * dt_exc - t
+                _evaluate(model, exc, params, active, t + tm, q, qd, mode, work, qdd1, lam2)
+                if _fired(model, params, active, mode, directions, lam2, slide, work, found_m):
+                    seg_hi = tm
+                    lam_hi[:active] = lam2[:active]
+                    break
+                seg_lo = tm
+                lam_lo[:active] = lam2[:active]
+                k_sample += 1
+            earliest = seg_hi
             for i in range(active):
                 for kind in (LIFT_OFF, SLIP):
                     for c in range(2 if kind == LIFT_OFF else 1):
-                        g1 = _margin(model, params, mode, directions, lam1, slide1, work, kind,
+                        g1 = _margin(model, params, mode, directions, lam_hi, slide, work, kind,
                                      i, c if kind == LIFT_OFF else -1)  # fmt: skip
                         if g1 >= 0.0:
                             continue
-                        g0 = _margin(model, params, mode, directions, lam, slide, work, kind, i,
-                                     c if kind == LIFT_OFF else -1)  # fmt: skip
-                        crossing = h * g0 / (g0 - g1) if g0 > 0.0 else 0.0
+                        g0 = _margin(model, params, mode, directions, lam_lo, slide, work, kind,
+                                     i, c if kind == LIFT_OFF else -1)  # fmt: skip
+                        crossing = seg_lo
+                        if g0 > 0.0:
+                            crossing = seg_lo + (seg_hi - seg_lo) * g0 / (g0 - g1)
                         earliest = min(earliest, crossing)
             low = max(0.0, earliest - time_tol)
             high = min(h, earliest + time_tol)

@@ -1076,6 +1076,46 @@ def _grow(buffers: tuple, rows: int) -> tuple:
     return tuple(grown)
 
 
+def _painleve_reason(stack: Stack, position: np.ndarray, velocity: np.ndarray) -> str:
+    """Why no contact mode is consistent at the last recorded state, in words.
+
+    No mode satisfies the unilateral and Coulomb conditions together, and the
+    tangential impact that should resolve it (Painleve's paradox: a block
+    sliding on one corner, the friction force raising the normal load faster
+    than it can support it) finds no velocity jump that does: the rigid-body
+    model with Coulomb friction has no solution there. Names the interfaces
+    that slide on one contact, with their rotation and friction.
+    """
+    if position.shape[0] == 0:
+        return ""
+    q = position[-1].reshape(-1)
+    qd = velocity[-1].reshape(-1)
+    active = int(np.count_nonzero(np.isfinite(q)) // 3)
+    reason = (
+        " (no contact mode satisfies the unilateral and Coulomb conditions and no "
+        "tangential impact resolves it: a Painleve-type inconsistency of the rigid-body "
+        "model with Coulomb friction"
+    )
+    if active == 0:
+        return reason + ")"
+    sub = Stack(stack.name, stack.blocks[:active])
+    kin = stack_kinematics(sub, q[: 3 * active], qd[: 3 * active])
+    tol = ContactTolerances()
+    found = []
+    for i, block in enumerate(sub.blocks):
+        touching = kin.gap[i] <= tol.gap
+        slip = kin.slip_velocity[i, _lower_contact(kin, i)]
+        if touching.sum() == 1 and abs(slip) > tol.velocity:
+            found.append(
+                f"{block.name} slides on one contact at {slip:.3g} m/s, rotated "
+                f"{kin.rotation[i]:.3g} rad on the body below, mu_0 = "
+                f"{block.friction.static:.3g}, mu = {block.friction.kinetic:.3g}"
+            )
+    if found:
+        reason += "; " + "; ".join(found)
+    return reason + ")"
+
+
 def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev, outcome):
     rows = int(istate[engine.S_ROWS])
     time = fstate[engine.F_TIME]
@@ -1119,10 +1159,7 @@ def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev,
             where = "at t = 0" if time == 0.0 else f"at t = {time:.6g} s"
             message = f"{where}: {engine.FAILURES[failure]}"
             if failure in (engine.CONTACT_INCONSISTENT, engine.CONTACT_INCONSISTENT_AFTER):
-                message += (
-                    " (no contact mode is consistent with Coulomb friction at this state: a "
-                    "Painleve-type inconsistency, with no admissible tangential impact)"
-                )
+                message += _painleve_reason(stack, position, velocity)
     elif overturned.all():
         message = f"every block overturned (by t = {np.nanmax(overturn_time):.6g} s)"
     else:
