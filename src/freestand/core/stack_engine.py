@@ -1387,6 +1387,44 @@ def _margin(model, params, mode, directions, lam, slide, work, kind, i, c):
 
 
 @nb.njit(cache=True)
+def _hermite(active, q0, v0, a0, s0, r0, q1, v1, a1, s1, r1, h, s, out_q, out_v, out_s):
+    """State at ``s`` (fraction of the step) on the step's Hermite interpolants.
+
+    Quintic in the coordinates (position, velocity and acceleration at both
+    ends), its derivative for the velocities, cubic for the slides (slide and
+    slide rate at both ends).
+    """
+    s2 = s * s
+    s3 = s2 * s
+    s4 = s3 * s
+    s5 = s4 * s
+    h0 = 1.0 - 10.0 * s3 + 15.0 * s4 - 6.0 * s5
+    h1 = s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5
+    h2 = 0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5
+    h3 = 0.5 * s3 - s4 + 0.5 * s5
+    h4 = -4.0 * s3 + 7.0 * s4 - 3.0 * s5
+    h5 = 10.0 * s3 - 15.0 * s4 + 6.0 * s5
+    d0 = -30.0 * s2 + 60.0 * s3 - 30.0 * s4
+    d1 = 1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4
+    d2 = s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4
+    d3 = 1.5 * s2 - 4.0 * s3 + 2.5 * s4
+    d4 = -12.0 * s2 + 28.0 * s3 - 15.0 * s4
+    d5 = 30.0 * s2 - 60.0 * s3 + 30.0 * s4
+    hh = h * h
+    for c in range(3 * active):
+        out_q[c] = h0 * q0[c] + h1 * h * v0[c] + h2 * hh * a0[c] + h3 * hh * a1[c]
+        out_q[c] += h4 * h * v1[c] + h5 * q1[c]
+        out_v[c] = (d0 * q0[c] + d1 * h * v0[c] + d2 * hh * a0[c] + d3 * hh * a1[c]
+                    + d4 * h * v1[c] + d5 * q1[c]) / h  # fmt: skip
+    c0 = 1.0 - 3.0 * s2 + 2.0 * s3
+    c1 = s - 2.0 * s2 + s3
+    c2 = -s2 + s3
+    c3 = 3.0 * s2 - 2.0 * s3
+    for i in range(active):
+        out_s[i] = c0 * s0[i] + c1 * h * r0[i] + c2 * h * r1[i] + c3 * s1[i]
+
+
+@nb.njit(cache=True)
 def _stuck_below(active, mode, qd):
     """Number of bottom blocks that stick to the support and do not move.
 
@@ -1448,6 +1486,11 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
     lam_lo = np.zeros((count, 3))
     lam_hi = np.zeros((count, 3))
     rates_s = np.zeros(count)
+    q_end = np.zeros(n_full)
+    qd_end = np.zeros(n_full)
+    a_end = np.zeros(n_full)
+    slide_end = np.zeros(count)
+    rate_end = np.zeros(count)
     found = np.zeros(3, dtype=np.int64)
     found_m = np.zeros(3, dtype=np.int64)
     settle = np.zeros(3, dtype=np.int64)
@@ -1645,9 +1688,86 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         else:
             g_high = _margin(model, params, mode, directions, lam1, slide1, work, found[0],
                              found[1], found[2])  # fmt: skip
+            # the step's end, for the interpolant below
+            q_end[:n] = q1[:n]
+            qd_end[:n] = qd1[:n]
+            a_end[:n] = qdd1[:n]
+            slide_end[:active] = slide1[:active]
+            _slide_rate(active, mode, work[6], rate_end)
             _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd1, lam1)
             g_low = _margin(model, params, mode, directions, lam1, slide, work, found[0],
                             found[1], found[2])  # fmt: skip
+            if g_low > 0.0 and g_high < 0.0:
+                # the event's time on the step's quintic Hermite interpolant (positions,
+                # velocities and accelerations at both ends): one evaluation per trial;
+                # then a bracket of true RK4 states around it, checked
+                a = 0.0
+                b = h
+                ga = g_low
+                gb = g_high
+                last = 0
+                for _ in range(40):
+                    if b - a <= 0.1 * time_tol:
+                        break
+                    x = a + ga * (b - a) / (ga - gb)
+                    x = min(max(x, a + 0.01 * time_tol), b - 0.01 * time_tol)
+                    _hermite(active, q, qd, qdd, slide, rates_s, q_end, qd_end, a_end,
+                             slide_end, rate_end, h, x / h, qm, qdm, slide_m)  # fmt: skip
+                    _evaluate(model, exc, params, active, t + x, qm, qdm, mode, work, qdd1,
+                              lam1)  # fmt: skip
+                    gx = _margin(model, params, mode, directions, lam1, slide_m, work,
+                                 found[0], found[1], found[2])  # fmt: skip
+                    if gx < 0.0:
+                        b = x
+                        gb = gx
+                        if last == 1:
+                            ga *= 0.5
+                        last = 1
+                    else:
+                        a = x
+                        ga = gx
+                        if last == -1:
+                            gb *= 0.5
+                        last = -1
+                upper = min(h, b + 0.45 * time_tol)
+                lower = max(0.0, upper - 0.9 * time_tol)
+                if upper < high and lower > low:
+                    ok = _rk4(model, exc, params, active, t, q, qd, slide, upper, mode, qdd,
+                              rates_s, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
+                    ok = ok and _evaluate(model, exc, params, active, t + upper, qm, qdm,
+                                          mode, work, qdd1, lam1)  # fmt: skip
+                    if ok and _fired(model, params, active, mode, directions, lam1, slide_m,
+                                     work, found_m):  # fmt: skip
+                        high = upper
+                        q1[:n] = qm[:n]
+                        qd1[:n] = qdm[:n]
+                        slide1[:active] = slide_m[:active]
+                        if (found_m[0] != found[0] or found_m[1] != found[1]
+                                or found_m[2] != found[2]):  # fmt: skip
+                            g_low = math.nan
+                        found[:] = found_m
+                        g_high = _margin(model, params, mode, directions, lam1, slide_m, work,
+                                         found[0], found[1], found[2])  # fmt: skip
+                        ok = _rk4(model, exc, params, active, t, q, qd, slide, lower, mode,
+                                  qdd, rates_s, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
+                        ok = ok and _evaluate(model, exc, params, active, t + lower, qm, qdm,
+                                              mode, work, qdd1, lam1)  # fmt: skip
+                        if ok and not _fired(model, params, active, mode, directions, lam1,
+                                             slide_m, work, found_m):  # fmt: skip
+                            low = lower
+                            g_low = _margin(model, params, mode, directions, lam1, slide_m,
+                                            work, found[0], found[1], found[2])  # fmt: skip
+                        elif ok:
+                            high = lower
+                            q1[:n] = qm[:n]
+                            qd1[:n] = qdm[:n]
+                            slide1[:active] = slide_m[:active]
+                            found[:] = found_m
+                            g_low = math.nan
+                    elif ok:
+                        low = upper
+                        g_low = _margin(model, params, mode, directions, lam1, slide_m, work,
+                                        found[0], found[1], found[2])  # fmt: skip
         side = 0
         while high - low > time_tol:
             width = high - low
