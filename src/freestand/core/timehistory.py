@@ -17,14 +17,15 @@ The instantaneous contact problem is the one of :mod:`freestand.core.contact`
 terms (:func:`contact_problem_in_motion`). The integration is event-driven and
 runs compiled, the whole loop in :mod:`freestand.core.stack_engine`:
 
-* the contact mode chosen by :func:`~freestand.core.contact.solve_contact` is
-  held while the smooth dynamics of that mode are integrated with Runge-Kutta
-  (RK4) steps of at most :func:`default_step` under a sampled record (ending
+* the contact mode chosen as :func:`~freestand.core.contact.solve_contact`
+  chooses (same enumeration, tests and rule, compiled) is held while the
+  smooth dynamics of that mode are integrated with Runge-Kutta (RK4) steps of at most :func:`default_step` under a sampled record (ending
   where its slope changes, :func:`record_breaks`) or ``max_step`` under a
   function; phases in which the whole stack rests on the support are not
   integrated (the forces are linear in the support accelerations);
 * events end a step and are located to ``time_tolerance`` (regula falsi,
-  Illinois variant, with bisection as fallback): a gap closing (impact), a
+  Illinois variant, on the step's Hermite interpolant, then a checked bracket
+  of RK4 states; bisection as fallback): a gap closing (impact), a
   normal force reaching zero (lift-off), a slip velocity reaching zero
   (possible stick or reversal), a sticking interface's friction reaching the
   static cone (slip), a block sliding back onto its end stop, a block lying on
