@@ -21,8 +21,9 @@ runs compiled, the whole loop in :mod:`freestand.core.stack_engine`:
   chooses (same enumeration, tests and rule, compiled) is held while the
   smooth dynamics of that mode are integrated with Runge-Kutta (RK4) steps
   of at most :func:`default_step` under a sampled record (ending where its
-  slope changes, :func:`record_breaks`) or ``max_step`` under a function; phases in which the whole stack rests on the support are not
-  integrated (the forces are linear in the support accelerations);
+  slope changes, :func:`record_breaks`) or ``max_step`` under a function;
+  phases in which the whole stack rests on the support are not integrated
+  (the forces are linear in the support accelerations);
 * events end a step and are located to ``time_tolerance`` (regula falsi,
   Illinois variant, on the step's Hermite interpolant, then a checked bracket
   of RK4 states; bisection as fallback): a gap closing (impact), a
