@@ -95,13 +95,13 @@ def main() -> None:
     motion = SupportMotion(1.0 / SAMPLING, horizontal)
     print("single-block fast path (rocking integrator step 0.02/p, cut at every sample):")
     run(single, motion, "single-block", repeat=20)
-    print("general path (step 1 ms):")
+    print("general path (default step):")
     run(single, motion, "general")
     model = load_model(ROOT / "examples" / "crane.toml")
     horizontal = filtered_noise(seed=11, peak=5.0)
     vertical = 0.4 * filtered_noise(seed=13, peak=5.0)
     motion = SupportMotion(1.0 / SAMPLING, horizontal, vertical)
-    print("general path (step 1 ms):")
+    print("general path (default step):")
     for stack in model.configurations:
         run(stack, motion)
 

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 from pathlib import Path
 
 import numpy as np
 import typer
+from rich.console import Console
+from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
 from rich.markup import escape
 from rich.table import Table
 
@@ -26,9 +29,10 @@ from freestand.core.timehistory import simulate as simulate_stack
 from freestand.errors import FreestandError
 from freestand.io.records import check_record_values, load_record, parse_spectral_target
 
-#: Most integration steps one run takes on (duration / step): beyond, a run lasts many
-#: minutes; a typo such as --step 1e-7 is refused instead of running for hours.
-MAX_STEPS = 2_000_000
+#: Most integration steps a given --step may ask for (duration / step): beyond, a run lasts
+#: minutes; a typo such as --step 1e-7 is refused instead of running for hours. Without
+#: --step the engine chooses its own steps and a record of any length is taken.
+MAX_STEPS = 20_000_000
 
 
 def _number(value: float) -> float | None:
@@ -147,24 +151,23 @@ def simulate(
     if motion.vertical is not None:
         check_record_values(motion.vertical, str(record), model.gravity, "scaled vertical")
     end = motion.duration if duration is None else duration
-    largest = step if step is not None else min(1e-3, motion.dt)
-    steps = end / min(largest, motion.dt)
-    if steps > MAX_STEPS:
+    if step is not None and end / step > MAX_STEPS:
         raise FreestandError(
-            f"{end:g} s in steps of {min(largest, motion.dt):g} s is {steps:.3g} integration "
-            f"steps, beyond the {MAX_STEPS:.0e} freestand takes on in one run; give a shorter "
-            f"--duration (e.g. --duration {MAX_STEPS * min(largest, motion.dt) / 10:g}) or a "
-            "larger --step",
-            source="--step" if step is not None else "--duration",
+            f"{end:g} s in steps of {step:g} s is {end / step:.3g} integration steps, beyond "
+            f"the {MAX_STEPS:.0e} freestand takes on in one run; give a larger --step (e.g. "
+            f"--step {10 * end / MAX_STEPS:g}), a shorter --duration, or no --step at all",
+            source="--step",
         )
     support = SupportMotion(
         motion.dt,
         np.asarray(motion.horizontal),
         None if motion.vertical is None else np.asarray(motion.vertical),
     )
-    result = simulate_stack(
-        stack, support, duration, method=method, max_step=step, gravity=model.gravity
-    )
+    with _progress_bar(as_json) as progress:
+        result = simulate_stack(
+            stack, support, duration, method=method, max_step=step, gravity=model.gravity,
+            progress=progress,
+        )  # fmt: skip
     title = (
         f"{model.name} / {configuration}: {motion.name}, peak {motion.peak_horizontal:.2f} m/s^2"
     )
@@ -261,6 +264,25 @@ def _exit_if_failed(result) -> None:
             + "; the results above stop where it failed (try a smaller --step)"
         )
         raise typer.Exit(1)
+
+
+@contextlib.contextmanager
+def _progress_bar(quiet: bool):
+    """A rich progress bar of the simulated time on stderr (a terminal only, not with --json)."""
+    console = Console(stderr=True)
+    if quiet or not console.is_terminal:
+        yield None
+        return
+    with Progress(
+        TextColumn("simulating"),
+        BarColumn(),
+        TaskProgressColumn(),
+        TimeElapsedColumn(),
+        console=console,
+        transient=True,
+    ) as bar:
+        task = bar.add_task("simulating", total=1.0)
+        yield lambda fraction: bar.update(task, completed=fraction)
 
 
 def check_drawing_options(plot: Path | None, animate: Path | None, exaggerate: float) -> None:

@@ -14,12 +14,19 @@ reduces the weight to ``m (g - a_v)``.
 
 The instantaneous contact problem is the one of :mod:`freestand.core.contact`
 (the screening engine's), built at a general configuration with the velocity
-terms (:func:`contact_problem_in_motion`). The integration is event-driven:
+terms (:func:`contact_problem_in_motion`). The integration is event-driven and
+runs compiled, the whole loop in :mod:`freestand.core.stack_engine`:
 
-* the contact mode chosen by :func:`~freestand.core.contact.solve_contact` is
-  held while the smooth dynamics of that mode are integrated with fixed-step
-  Runge-Kutta (RK4) steps;
-* events end a step and are located by bisection: a gap closing (impact), a
+* the contact mode chosen as :func:`~freestand.core.contact.solve_contact`
+  chooses (same enumeration, tests and rule, compiled) is held while the
+  smooth dynamics of that mode are integrated with Runge-Kutta (RK4) steps
+  of at most :func:`default_step` under a sampled record (ending where its
+  slope changes, :func:`record_breaks`) or ``max_step`` under a function;
+  phases in which the whole stack rests on the support are not integrated
+  (the forces are linear in the support accelerations);
+* events end a step and are located to ``time_tolerance`` (regula falsi,
+  Illinois variant, on the step's Hermite interpolant, then a checked bracket
+  of RK4 states; bisection as fallback): a gap closing (impact), a
   normal force reaching zero (lift-off), a slip velocity reaching zero
   (possible stick or reversal), a sticking interface's friction reaching the
   static cone (slip), a block sliding back onto its end stop, a block lying on
@@ -56,19 +63,13 @@ from then on).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
-import numba as nb
 import numpy as np
 
-from freestand.core.contact import (
-    ContactProblem,
-    Interface,
-    InterfaceMode,
-    Tangential,
-    solve_contact,
-)
+from freestand.core import stack_engine as engine
+from freestand.core.contact import ContactProblem, Interface
 from freestand.core.model import Sliding, Stack
 from freestand.core.screening import GRAVITY
 
@@ -206,119 +207,6 @@ def stack_geometry(stack: Stack) -> np.ndarray:
     ).reshape(-1, 7)
 
 
-@nb.njit(cache=True)
-def _kinematics_kernel(
-    geometry, q, qd, gap, gap_velocity, slip_velocity, slide, rotation, jn, bn, jt, bt
-):
-    """Fill the arrays of :class:`StackKinematics` (see :func:`stack_kinematics`)."""
-    count = geometry.shape[0]
-    for i in range(count):
-        cxu = geometry[i, 0]
-        czu = geometry[i, 1]
-        gxu = cxu + q[i, 0]
-        gzu = czu + q[i, 1]
-        phi_u = q[i, 2]
-        vxu = qd[i, 0]
-        vzu = qd[i, 1]
-        omega_u = qd[i, 2]
-        if i == 0:
-            cxl = 0.0
-            czl = 0.0
-            gxl = 0.0
-            gzl = 0.0
-            phi_l = 0.0
-            vxl = 0.0
-            vzl = 0.0
-            omega_l = 0.0
-            nx, nz = 0.0, 1.0
-            tx, tz = 1.0, 0.0
-            spx, spz = 0.0, geometry[i, 6]
-        else:
-            cxl = geometry[i - 1, 0]
-            czl = geometry[i - 1, 1]
-            gxl = cxl + q[i - 1, 0]
-            gzl = czl + q[i - 1, 1]
-            phi_l = q[i - 1, 2]
-            vxl = qd[i - 1, 0]
-            vzl = qd[i - 1, 1]
-            omega_l = qd[i - 1, 2]
-            sl = math.sin(phi_l)
-            cl = math.cos(phi_l)
-            nx, nz = -sl, cl
-            tx, tz = cl, sl
-            dz = geometry[i, 6] - czl
-            spx = gxl - sl * dz
-            spz = gzl + cl * dz
-        rotation[i] = phi_u - phi_l
-        c1u = -2.0 * math.sin(0.5 * phi_u) ** 2
-        su = math.sin(phi_u)
-        c1l = -2.0 * math.sin(0.5 * phi_l) ** 2
-        sl_ = math.sin(phi_l)
-        for c in range(2):
-            rx = geometry[i, 2 + 2 * c]
-            rz = geometry[i, 3 + 2 * c]
-            # P = X + u + (R - I)(X - C): exactly X at rest
-            dx = rx - cxu
-            dzz = rz - czu
-            px = rx + q[i, 0] + c1u * dx - su * dzz
-            pz = rz + q[i, 1] + su * dx + c1u * dzz
-            aux = px - gxu
-            auz = pz - gzu
-            pdx = vxu - omega_u * auz
-            pdz = vzu + omega_u * aux
-            alx = px - gxl
-            alz = pz - gzl
-            wx = pdx - vxl + omega_l * alz
-            wz = pdz - vzl - omega_l * alx
-            gap[i, c] = nx * (px - spx) + nz * (pz - spz)
-            gap_velocity[i, c] = nx * wx + nz * wz
-            slip_velocity[i, c] = tx * wx + tz * wz
-            if c == 0:
-                if i:
-                    ex = rx - cxl
-                    ez = rz - czl
-                    mx = rx + q[i - 1, 0] + c1l * ex - sl_ * ez
-                    mz = rz + q[i - 1, 1] + sl_ * ex + c1l * ez
-                else:
-                    mx = rx
-                    mz = rz
-                slide[i] = tx * (px - mx) + tz * (pz - mz)
-            relx = pdx - vxl
-            relz = pdz - vzl
-            for k in range(2):
-                if k == 0:
-                    d0, d1 = nx, nz
-                else:
-                    d0, d1 = tx, tz
-                # d . perp(a) with perp(x, z) = (-z, x)
-                jac_u = -d0 * auz + d1 * aux
-                bias = (
-                    -(omega_u**2) * (d0 * aux + d1 * auz)
-                    - omega_l * (-d0 * relz + d1 * relx)
-                    + omega_l * (-d1 * wx + d0 * wz)
-                )
-                if k == 0:
-                    jn[i, c, 3 * i] = d0
-                    jn[i, c, 3 * i + 1] = d1
-                    jn[i, c, 3 * i + 2] = jac_u
-                    bn[i, c] = bias
-                else:
-                    jt[i, c, 3 * i] = d0
-                    jt[i, c, 3 * i + 1] = d1
-                    jt[i, c, 3 * i + 2] = jac_u
-                    bt[i, c] = bias
-                if i:
-                    jac_l = -(-d0 * alz + d1 * alx)
-                    if k == 0:
-                        jn[i, c, 3 * i - 3] = -d0
-                        jn[i, c, 3 * i - 2] = -d1
-                        jn[i, c, 3 * i - 1] = jac_l
-                    else:
-                        jt[i, c, 3 * i - 3] = -d0
-                        jt[i, c, 3 * i - 2] = -d1
-                        jt[i, c, 3 * i - 1] = jac_l
-
-
 def stack_kinematics(
     stack: Stack,
     position: np.ndarray,
@@ -360,8 +248,8 @@ def stack_kinematics(
     count = len(stack.blocks)
     if geometry is None:
         geometry = stack_geometry(stack)
-    q = np.ascontiguousarray(position, dtype=float).reshape(count, 3)
-    qd = np.ascontiguousarray(velocity, dtype=float).reshape(count, 3)
+    q = np.ascontiguousarray(position, dtype=float).reshape(-1)
+    qd = np.ascontiguousarray(velocity, dtype=float).reshape(-1)
     size = 3 * count
     gap = np.empty((count, 2))
     gap_velocity = np.empty((count, 2))
@@ -372,9 +260,9 @@ def stack_kinematics(
     tangential_jacobian = np.zeros((count, 2, size))
     normal_bias = np.empty((count, 2))
     tangential_bias = np.empty((count, 2))
-    _kinematics_kernel(
-        geometry, q, qd, gap, gap_velocity, slip_velocity, slide, rotation,
-        normal_jacobian, normal_bias, tangential_jacobian, tangential_bias,
+    engine.kinematics(
+        geometry, count, q, qd, gap, gap_velocity, slip_velocity, rotation,
+        normal_jacobian, normal_bias, tangential_jacobian, tangential_bias, slide,
     )  # fmt: skip
     return StackKinematics(
         gap=gap,
@@ -782,382 +670,6 @@ class TimeHistoryResult:
 # --- simulation ---------------------------------------------------------------------------------
 
 
-def _motion(mode: InterfaceMode) -> str:
-    closed = mode.closed_count
-    sliding = mode.tangential in (
-        Tangential.SLIDE_POSITIVE,
-        Tangential.SLIDE_NEGATIVE,
-        Tangential.KINETIC,
-    )
-    if closed == 2:
-        return "slide" if sliding else "rest"
-    if closed == 1:
-        return "slide-rock" if sliding else "rock"
-    return "free-flight"
-
-
-def _reference(mode: InterfaceMode) -> int:
-    return 1 if (mode.right_closed and not mode.left_closed) else 0
-
-
-@dataclass
-class _Held:
-    """The contact mode held during a step."""
-
-    modes: tuple[InterfaceMode, ...]
-    directions: tuple[int, ...]
-
-    def __post_init__(self) -> None:
-        # per interface: left closed, right closed, tangential state (FREE 0,
-        # STICK 1, SLIDE 2), slide direction; for the compiled evaluation
-        self.codes = np.array(
-            [
-                (
-                    float(mode.left_closed),
-                    float(mode.right_closed),
-                    0.0 if mode.tangential is Tangential.FREE
-                    else 1.0 if mode.tangential is Tangential.STICK
-                    else 2.0,
-                    float(mode.slide_direction),
-                )
-                for mode in self.modes
-            ],
-            dtype=float,
-        ).reshape(-1, 4)  # fmt: skip
-
-
-@nb.njit(cache=True)
-def _held_system(geometry, inertia, kinetic, codes, q, qd, inertial, effective_gravity, kin_out,
-                 jn, bn, jt, bt, matrix, rhs):  # fmt: skip
-    """Kinematics and the linear system of a held contact mode (see ``assemble_mode``).
-
-    ``inertia`` (B, 3): m, m, Theta_S per block; ``kinetic`` (B,): mu;
-    ``kin_out`` (B, 7): gap (2), gap velocity (2), slip velocity (2), rotation.
-    The slide (column of the kinematics) is not needed here.
-    """
-    count = geometry.shape[0]
-    n = 3 * count
-    slide = np.empty(count)
-    gap = kin_out[:, 0:2]
-    gap_velocity = kin_out[:, 2:4]
-    slip_velocity = kin_out[:, 4:6]
-    rotation = np.empty(count)
-    _kinematics_kernel(geometry, q, qd, gap, gap_velocity, slip_velocity, slide, rotation,
-                       jn, bn, jt, bt)  # fmt: skip
-    kin_out[:, 6] = rotation
-    matrix[:, :] = 0.0
-    rhs[:] = 0.0
-    for i in range(count):
-        for k in range(3):
-            matrix[3 * i + k, 3 * i + k] = inertia[i, k]
-        rhs[3 * i] = inertia[i, 0] * inertial
-        rhs[3 * i + 1] = -inertia[i, 0] * effective_gravity
-    for i in range(count):
-        column = n + 3 * i
-        left = codes[i, 0] > 0.5
-        right = codes[i, 1] > 0.5
-        reference = 1 if (right and not left) else 0
-        for r in range(n):
-            matrix[r, column] = -jn[i, 0, r]
-            matrix[r, column + 1] = -jn[i, 1, r]
-            matrix[r, column + 2] = -jt[i, reference, r]
-        for side in range(2):
-            row = column + side
-            if codes[i, side] > 0.5:
-                for r in range(n):
-                    matrix[row, r] = jn[i, side, r]
-                rhs[row] = -bn[i, side]
-            else:
-                matrix[row, column + side] = 1.0
-        row = column + 2
-        state = codes[i, 2]
-        if state < 0.5:
-            matrix[row, column + 2] = 1.0
-        elif state < 1.5:
-            for r in range(n):
-                matrix[row, r] = jt[i, reference, r]
-            rhs[row] = -bt[i, reference]
-        else:
-            # T + direction * mu * (N_L + N_R) = 0: friction opposes the slip
-            matrix[row, column + 2] = 1.0
-            matrix[row, column] = codes[i, 3] * kinetic[i]
-            matrix[row, column + 1] = codes[i, 3] * kinetic[i]
-
-
-class _Simulation:
-    def __init__(
-        self,
-        stack: Stack,
-        excitation: Excitation,
-        gravity: float,
-        tolerances: ContactTolerances,
-        time_tolerance: float,
-        excitation_end: float,
-    ):
-        self.full = stack
-        self.stack = stack
-        self.geometry = stack_geometry(stack)
-        self.inertia = np.array([[b.mass, b.mass, b.inertia] for b in stack.blocks]).reshape(-1, 3)
-        self.kinetic = np.array([b.friction.kinetic for b in stack.blocks])
-        self.active_count = len(stack.blocks)
-        self.excitation = excitation
-        self.gravity = gravity
-        self.tol = tolerances
-        self.time_tolerance = time_tolerance
-        self.excitation_end = excitation_end
-        total_mass = sum(block.mass for block in stack.blocks)
-        self.force_event = EVENT_TOLERANCE * total_mass * gravity
-        self.gap_event = 1e-3 * tolerances.gap
-        self.contact_solves = 0
-        self.impact_solves = 0
-        self.ambiguous = 0
-        self.max_penetration = 0.0
-        self.max_projection = 0.0
-
-    # dynamics of the held mode
-    def kinematics(self, q, qd, slide):
-        """Kinematics with the accumulated slide of the simulation."""
-        return replace(stack_kinematics(self.stack, q, qd, self.geometry), slide=slide)
-
-    def evaluate(self, time: float, q: np.ndarray, qd: np.ndarray, slide, held: _Held):
-        """(qdd, forces (B, 3), kinematics) of the held mode: compiled ``assemble_mode``."""
-        a_h, a_v = self.excitation(time)
-        count = self.active_count
-        n = 3 * count
-        kin_out = np.empty((count, 7))
-        jn = np.zeros((count, 2, n))
-        jt = np.zeros((count, 2, n))
-        bn = np.empty((count, 2))
-        bt = np.empty((count, 2))
-        matrix = np.empty((2 * n, 2 * n))
-        rhs = np.empty(2 * n)
-        _held_system(
-            self.geometry, self.inertia, self.kinetic, held.codes,
-            np.ascontiguousarray(q).reshape(count, 3), np.ascontiguousarray(qd).reshape(count, 3),
-            -a_h, self.gravity - a_v, kin_out, jn, bn, jt, bt, matrix, rhs,
-        )  # fmt: skip
-        solution = np.linalg.solve(matrix, rhs)
-        kin = StackKinematics(
-            gap=kin_out[:, 0:2],
-            gap_velocity=kin_out[:, 2:4],
-            slip_velocity=kin_out[:, 4:6],
-            slide=slide,
-            rotation=kin_out[:, 6],
-            normal_jacobian=jn,
-            normal_bias=bn,
-            tangential_jacobian=jt,
-            tangential_bias=bt,
-        )
-        return solution[:n], solution[n:].reshape(-1, 3), kin, None
-
-    @staticmethod
-    def slide_rate(kin: StackKinematics, held: _Held) -> np.ndarray:
-        """Slip velocity at the contact that defines each interface's slide [m/s]."""
-        return np.array(
-            [kin.slip_velocity[i, _reference(mode)] for i, mode in enumerate(held.modes)]
-        )
-
-    def rk4(self, time, q, qd, slide, h, held, first):
-        """One RK4 step of the held mode; ``first`` = (qdd, slide rate) at the start."""
-        k1v = qd
-        k1a, k1s = first
-        k2v = qd + 0.5 * h * k1a
-        k2a, _, kin, _ = self.evaluate(time + 0.5 * h, q + 0.5 * h * k1v, k2v, slide, held)
-        k2s = self.slide_rate(kin, held)
-        k3v = qd + 0.5 * h * k2a
-        k3a, _, kin, _ = self.evaluate(time + 0.5 * h, q + 0.5 * h * k2v, k3v, slide, held)
-        k3s = self.slide_rate(kin, held)
-        k4v = qd + h * k3a
-        k4a, _, kin, _ = self.evaluate(time + h, q + h * k3v, k4v, slide, held)
-        k4s = self.slide_rate(kin, held)
-        q_new = q + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v)
-        qd_new = qd + h / 6.0 * (k1a + 2 * k2a + 2 * k3a + k4a)
-        slide_new = slide + h / 6.0 * (k1s + 2 * k2s + 2 * k3s + k4s)
-        return q_new, qd_new, slide_new
-
-    def fired(self, kin: StackKinematics, forces, problem, held: _Held) -> list:
-        events = []
-        for i, (block, mode) in enumerate(zip(self.stack.blocks, held.modes, strict=True)):
-            closed = (mode.left_closed, mode.right_closed)
-            for c in range(2):
-                if closed[c] and forces[i, c] < -self.force_event:
-                    events.append(("lift-off", i, c))
-                if (
-                    not closed[c]
-                    and kin.gap[i, c] < -self.gap_event
-                    and kin.gap_velocity[i, c] < 0.0
-                ):
-                    events.append(("impact", i, c))
-            sliding = block.sliding
-            if sliding in (Sliding.NO_LEFT, Sliding.NO_RIGHT) and not _stop_engaged(
-                sliding, float(kin.slide[i]), self.tol.slide
-            ):
-                sliding = Sliding.FREE
-            if mode.tangential is Tangential.STICK and sliding is not Sliding.NONE:
-                limit = block.friction.static * (forces[i, 0] + forces[i, 1]) + self.force_event
-                tangential = forces[i, 2]
-                if (sliding is not Sliding.NO_RIGHT and -tangential > limit) or (
-                    sliding is not Sliding.NO_LEFT and tangential > limit
-                ):
-                    events.append(("slip", i, -1))
-            direction = held.directions[i]
-            # a slip velocity reversing by more than a small fraction of the zero
-            # tolerance (a slide that starts from rest begins at round-off)
-            reverse = -1e-3 * self.tol.velocity
-            if direction and direction * kin.slip_velocity[i, _reference(mode)] < reverse:
-                events.append(("slip-stop", i, -1))
-            slide = kin.slide[i]
-            slip = kin.slip_velocity[i, _reference(mode)]
-            if (
-                block.sliding is Sliding.NO_RIGHT
-                and slide > self.tol.slide
-                and slip > self.tol.velocity
-            ) or (
-                block.sliding is Sliding.NO_LEFT
-                and slide < -self.tol.slide
-                and slip < -self.tol.velocity
-            ):
-                events.append(("stop-impact", i, -1))
-            if abs(kin.rotation[i]) >= 0.5 * math.pi:
-                events.append(("overturn", i, -1))
-        return events
-
-    def project(self, q, qd, held: _Held):
-        """Put the closed contacts back on their surfaces (positions and velocities)."""
-        mass = np.concatenate([[b.mass, b.mass, b.inertia] for b in self.stack.blocks])
-        inverse_mass = 1.0 / mass
-        for _ in range(3):
-            kin = stack_kinematics(self.stack, q, qd, self.geometry)
-            rows, values = [], []
-            for i, mode in enumerate(held.modes):
-                for c, closed in enumerate((mode.left_closed, mode.right_closed)):
-                    if closed:
-                        rows.append(kin.normal_jacobian[i, c])
-                        values.append(kin.gap[i, c])
-            if not rows:
-                return q, qd
-            jac = np.array(rows)
-            gaps = np.array(values)
-            self.max_penetration = max(self.max_penetration, float(-gaps.min(initial=0.0)))
-            if np.max(np.abs(gaps)) <= 1e-14:
-                break
-            weighted = jac * inverse_mass
-            correction = weighted.T @ np.linalg.lstsq(weighted @ jac.T, gaps, rcond=None)[0]
-            self.max_projection = max(self.max_projection, float(np.max(np.abs(correction))))
-            q = q - correction
-        kin = stack_kinematics(self.stack, q, qd, self.geometry)
-        rows = []
-        for i, mode in enumerate(held.modes):
-            for c, closed in enumerate((mode.left_closed, mode.right_closed)):
-                if closed:
-                    rows.append(kin.normal_jacobian[i, c])
-            if mode.tangential is Tangential.STICK and mode.closed_count:
-                rows.append(kin.tangential_jacobian[i, _reference(mode)])
-        jac = np.array(rows)
-        weighted = jac * inverse_mass
-        qd = qd - weighted.T @ np.linalg.lstsq(weighted @ jac.T, jac @ qd, rcond=None)[0]
-        return q, qd
-
-    def needs_impact(self, kin: StackKinematics) -> bool:
-        for i, block in enumerate(self.stack.blocks):
-            for c in range(2):
-                approach = kin.gap_velocity[i, c]
-                if kin.gap[i, c] <= self.tol.gap and approach < -self.tol.velocity:
-                    return True
-                if kin.gap[i, c] < -self.gap_event and approach < 0.0:
-                    return True
-            engaged = _stop_engaged(block.sliding, float(kin.slide[i]), self.tol.slide)
-            slip = kin.slip_velocity[i, _lower_contact(kin, i)]
-            if engaged and (
-                (block.sliding is Sliding.NO_RIGHT and slip > self.tol.velocity)
-                or (block.sliding is Sliding.NO_LEFT and slip < -self.tol.velocity)
-            ):
-                if min(kin.gap[i]) <= self.tol.gap:
-                    return True
-        return False
-
-    def impact(self, q, qd, kin, allow_stick=False):
-        problem = impact_problem(
-            self.stack, q, qd, self.tol, kinematics=kin, allow_stick=allow_stick
-        )
-        result = solve_contact(problem)
-        self.impact_solves += 1
-        if result.chosen is None:
-            return None, result.status
-        if result.ambiguous:
-            self.ambiguous += 1
-        # An engaged end stop must stop the slide into it: among the admissible
-        # states prefer (in the solver's order) one that does.
-        for solution in result.admissible:
-            after = qd + solution.acceleration
-            if not self.into_stop(
-                replace(stack_kinematics(self.stack, q, after, self.geometry), slide=kin.slide)
-            ):
-                return after, result.status
-        return qd + result.chosen.acceleration, result.status
-
-    def into_stop(self, kin: StackKinematics) -> bool:
-        """Whether a block at its engaged end stop still slides into it."""
-        for i, block in enumerate(self.stack.blocks):
-            if not _stop_engaged(block.sliding, float(kin.slide[i]), self.tol.slide):
-                continue
-            slip = kin.slip_velocity[i, _lower_contact(kin, i)]
-            if (block.sliding is Sliding.NO_RIGHT and slip > self.tol.velocity) or (
-                block.sliding is Sliding.NO_LEFT and slip < -self.tol.velocity
-            ):
-                return True
-        return False
-
-    def select(self, time, q, qd, slide):
-        """Solve the contact problem at a state; return the mode to hold."""
-        a_h, a_v = self.excitation(time)
-        kin = self.kinematics(q, qd, slide)
-        problem = contact_problem_in_motion(
-            self.stack, q, qd, -a_h, a_v, self.gravity, self.tol, kinematics=kin
-        )
-        result = solve_contact(problem)
-        self.contact_solves += 1
-        if result.chosen is None:
-            return None, result.status
-        if result.ambiguous:
-            self.ambiguous += 1
-        modes = []
-        directions = []
-        for interface, mode in zip(problem.interfaces, result.chosen.modes, strict=True):
-            if mode.tangential is Tangential.KINETIC:
-                direction = int(np.sign(interface.slip_velocity))
-                tangential = (
-                    Tangential.SLIDE_POSITIVE if direction > 0 else Tangential.SLIDE_NEGATIVE
-                )
-                mode = InterfaceMode(mode.left_closed, mode.right_closed, tangential)
-            directions.append(mode.slide_direction)
-            modes.append(mode)
-        return _Held(tuple(modes), tuple(directions)), result.status
-
-    def overturned_after_excitation(self, qd, kin) -> int:
-        """Lowest block past its overturning angle that cannot come back (-1 if none)."""
-        qdr = qd.reshape(-1, 3)
-        for i, block in enumerate(self.stack.blocks):
-            rotation = float(kin.rotation[i])
-            omega = float(qdr[i, 2] - (qdr[i - 1, 2] if i else 0.0))
-            height = block.centre[1] - block.base_level
-            if rotation > 0.0:
-                lever, away = block.centre[0] - block.base_left, omega >= 0.0
-            else:
-                lever, away = block.base_right - block.centre[0], omega <= 0.0
-            critical = math.atan2(lever, height)
-            if abs(rotation) <= critical:
-                continue
-            radius = math.hypot(lever, height)
-            inertia = block.inertia + block.mass * radius**2
-            barrier = (
-                block.mass * self.gravity * radius * (1.0 - math.cos(abs(rotation) - critical))
-            )
-            if away or 0.5 * inertia * omega**2 < barrier:
-                return i
-        return -1
-
-
 def _peak_magnitude(time: np.ndarray, value: np.ndarray, rate: np.ndarray) -> float:
     """Largest ``|value|`` of a sampled motion, refined between samples.
 
@@ -1214,6 +726,8 @@ def simulate(
     tolerances: ContactTolerances | None = None,
     time_tolerance: float = 1e-9,
     max_events: int = 100_000,
+    restitution: float | Sequence[float] | None = None,
+    progress: Callable[[float], None] | None = None,
 ) -> TimeHistoryResult:
     """Simulate the planar motion of a stack under support accelerations (front end).
 
@@ -1223,9 +737,18 @@ def simulate(
     initial_velocity, excitation_end, tolerances, time_tolerance, max_events
         As for :func:`simulate_general`.
     max_step : float, optional
-        Largest integration step [s]; by default 1 ms for the general path
-        and 0.02 / p for the single-block rocking integrator (whose steps
-        also end on every record sample).
+        Largest integration step [s]; by default, under a sampled record,
+        0.02 / p for both paths (:func:`default_step`; the steps also end
+        where the record's slope changes), and 1 ms for the general path
+        driven by a function.
+    restitution : float or sequence of float, optional
+        Factor [-] in [0, 1] on the post-impact velocity of each interface's
+        upper block relative to the body below (one value, or one per
+        block); 1 (default) keeps the plastic impact law (Housner's for one
+        block). With a factor below 1 the general path is used.
+    progress : callable, optional
+        Called with the fraction [-] of the duration simulated, about 100
+        times during a general-path simulation.
     method : str, optional
         ``"general"``: the event-driven stack path (:func:`simulate_general`).
         ``"single-block"``: the exact single-block equations
@@ -1244,7 +767,7 @@ def simulate(
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}; use one of {', '.join(METHODS)}")
     general = dict(
-        max_step=1e-3 if max_step is None else max_step,
+        max_step=max_step,
         gravity=gravity,
         initial_position=initial_position,
         initial_velocity=initial_velocity,
@@ -1252,8 +775,11 @@ def simulate(
         tolerances=tolerances,
         time_tolerance=time_tolerance,
         max_events=max_events,
+        restitution=restitution,
+        progress=progress,
     )
-    if method == "general":
+    plastic = restitution is None or bool(np.all(np.asarray(restitution, dtype=float) == 1.0))
+    if method == "general" or (method == "auto" and not plastic):
         return simulate_general(stack, excitation, duration, **general)
     at_rest = all(
         value is None or not np.any(np.asarray(value, dtype=float))
@@ -1291,7 +817,7 @@ def simulate_general(
     excitation: SupportMotion | Excitation,
     duration: float | None = None,
     *,
-    max_step: float = 1e-3,
+    max_step: float | None = None,
     gravity: float = GRAVITY,
     initial_position: np.ndarray | None = None,
     initial_velocity: np.ndarray | None = None,
@@ -1299,6 +825,8 @@ def simulate_general(
     tolerances: ContactTolerances | None = None,
     time_tolerance: float = 1e-9,
     max_events: int = 100_000,
+    restitution: float | Sequence[float] | None = None,
+    progress: Callable[[float], None] | None = None,
 ) -> TimeHistoryResult:
     """Simulate the planar motion of a stack under support accelerations (general path).
 
@@ -1314,8 +842,10 @@ def simulate_general(
         End time [s]; by default the end of a :class:`SupportMotion`. Required
         for a callable.
     max_step : float, optional
-        Largest integration step [s]. With a :class:`SupportMotion` the step
-        divides the sampling interval (every sample is a step end).
+        Largest integration step [s]. With a :class:`SupportMotion` by
+        default :func:`default_step`, and steps also end where the record's
+        slope changes (:func:`record_breaks`); with a function 1 ms by
+        default, the steps dividing the duration evenly.
     gravity : float, optional
         g [m/s^2].
     initial_position, initial_velocity : numpy.ndarray, optional
@@ -1331,6 +861,13 @@ def simulate_general(
         Events are located to this time [s] by bisection.
     max_events : int, optional
         The simulation fails (reported) after this many events.
+    restitution : float or sequence of float, optional
+        Factor [-] in [0, 1] on the post-impact velocity of each interface's
+        upper block relative to the body below, applied where the interface
+        took an impulse; 1 (default): the plastic impact law.
+    progress : callable, optional
+        ``progress(fraction)`` is called with the fraction [-] of the
+        duration simulated, about every 1 % of it, and with 1 at the end.
 
     Returns
     -------
@@ -1339,329 +876,325 @@ def simulate_general(
     count = len(stack.blocks)
     if count == 0:
         raise ValueError("the stack has no block")
-    if isinstance(excitation, SupportMotion):
+    sampled = isinstance(excitation, SupportMotion)
+    if sampled:
         end = excitation.duration if duration is None else float(duration)
         if excitation_end is None:
             excitation_end = excitation.duration
-        substeps = max(1, math.ceil(excitation.time_step / max_step - 1e-9))
-        step = excitation.time_step / substeps
     else:
         if duration is None:
             raise ValueError("give the duration [s] of a simulation driven by a function")
         end = float(duration)
         if excitation_end is None:
             excitation_end = end
-        step = end / max(1, math.ceil(end / max_step - 1e-9))
-    if not (end > 0.0 and step > 0.0):
+    if not end > 0.0:
         raise ValueError(f"duration must be positive, not {end!r}")
+    if max_step is not None and not max_step > 0.0:
+        raise ValueError(f"max_step must be positive, not {max_step!r}")
+    factors = _restitution_factors(restitution, count)
     tolerances = tolerances or ContactTolerances()
-    sim = _Simulation(stack, excitation, gravity, tolerances, time_tolerance, excitation_end)
-
+    if sampled:
+        step = default_step(stack, gravity) if max_step is None else float(max_step)
+        dt = excitation.time_step
+        # fresh, writeable copies: one compiled signature whatever the caller's arrays
+        horizontal = np.array(excitation.horizontal, dtype=float)
+        vertical = (
+            np.zeros_like(horizontal)
+            if excitation.vertical is None
+            else np.array(excitation.vertical, dtype=float)
+        )
+        breaks = record_breaks(dt, horizontal, vertical)
+        if breaks.size > 8.0 * breaks[-1] / step + 1.0:
+            # a record whose slope changes at nearly every sample, sampled far finer
+            # than the step: steps of at most 8 samples, across its kinks
+            step = min(step, 8.0 * dt)
+            breaks = breaks[-1:]
+    else:
+        # a function: fixed steps; sampled at the step ends and midpoints, where
+        # RK4 evaluates it, and linear in between (for event location only)
+        max_step = 1e-3 if max_step is None else float(max_step)
+        steps_count = max(1, math.ceil(end / max_step - 1e-9))
+        step = end / steps_count
+        dt = 0.5 * step
+        times = np.arange(2 * steps_count + 1) * dt
+        values = np.array([excitation(float(t)) for t in times], dtype=float).reshape(-1, 2)
+        horizontal = np.array(values[:, 0])
+        vertical = np.array(values[:, 1])
+        breaks = np.arange(1, steps_count + 1) * step
     q = np.zeros(3 * count) if initial_position is None else np.array(initial_position, float)
     qd = np.zeros(3 * count) if initial_velocity is None else np.array(initial_velocity, float)
-    q = q.reshape(-1).copy()
-    qd = qd.reshape(-1).copy()
+    q = np.ascontiguousarray(q.reshape(-1), dtype=float).copy()
+    qd = np.ascontiguousarray(qd.reshape(-1), dtype=float).copy()
     if q.size != 3 * count or qd.size != 3 * count:
         raise ValueError(f"initial position and velocity need {3 * count} values (3 per block)")
 
-    times: list[float] = []
-    positions: list[np.ndarray] = []
-    velocities: list[np.ndarray] = []
-    normals: list[np.ndarray] = []
-    tangentials: list[np.ndarray] = []
-    rotations: list[np.ndarray] = []
-    slides: list[np.ndarray] = []
-    events: list[TimeHistoryEvent] = []
-    uplift = np.zeros(count, dtype=bool)
-    free_flight = np.zeros(count, dtype=bool)
-    overturned = np.zeros(count, dtype=bool)
-    overturn_time = np.full(count, np.nan)
-    max_lift = np.zeros(count)
-    max_flight = np.zeros(count)
-
-    def record(time, q, qd, forces, kin):
-        active = sim.active_count
-        gaps = kin.gap[:active]
-        np.maximum(max_lift[:active], gaps.max(axis=1), out=max_lift[:active])
-        np.maximum(max_flight[:active], gaps.min(axis=1), out=max_flight[:active])
-        position = np.full((count, 3), np.nan)
-        velocity = np.full((count, 3), np.nan)
-        normal = np.full((count, 2), np.nan)
-        tangential = np.full(count, np.nan)
-        rotation = np.full(count, np.nan)
-        slide = np.full(count, np.nan)
-        position[:active] = q.reshape(-1, 3)
-        velocity[:active] = qd.reshape(-1, 3)
-        normal[:active] = forces[:, :2]
-        tangential[:active] = forces[:, 2]
-        rotation[:active] = kin.rotation
-        slide[:active] = kin.slide
-        times.append(time)
-        positions.append(position)
-        velocities.append(velocity)
-        normals.append(normal)
-        tangentials.append(tangential)
-        rotations.append(rotation)
-        slides.append(slide)
-
-    def motions(held):
-        names = [_motion(mode) for mode in held.modes] if held else []
-        names += ["overturned"] * (count - len(names))
-        return tuple(names)
-
-    def settle(time, q, qd, slide):
-        """Impact if needed, then choose the mode; returns (held, q, qd, status, impact kind)."""
-        kin = sim.kinematics(q, qd, slide)
-        impacted = ""
-        if sim.needs_impact(kin):
-            qd_new, status = sim.impact(q, qd, kin)
-            if qd_new is None:
-                return None, q, qd, f"impact problem {status}", impacted
-            qd, impacted = qd_new, "impact"
-        held, status = sim.select(time, q, qd, slide)
-        if held is None:
-            # No consistent sliding state (Painleve-type): resolve it by a tangential
-            # impact at velocity level, in which the sliding contacts may stick.
-            kin = sim.kinematics(q, qd, slide)
-            qd_new, impact_status = sim.impact(q, qd, kin, allow_stick=True)
-            if qd_new is None:
-                return None, q, qd, f"contact problem {status}", impacted
-            qd, impacted = qd_new, "tangential-impact"
-            held, status = sim.select(time, q, qd, slide)
-            if held is None:
-                return (
-                    None,
-                    q,
-                    qd,
-                    f"contact problem {status} (also after a tangential impact)",
-                    impacted,
-                )
-        q, qd = sim.project(q, qd, held)
-        for i, mode in enumerate(held.modes):
-            if mode.closed_count < 2:
-                uplift[i] = True
-            if mode.closed_count == 0 and i > 0:
-                free_flight[i] = True
-        return held, q, qd, status, impacted
-
-    def remove_from(index, time):
-        overturned[index:] = True
-        overturn_time[index:] = np.where(
-            np.isnan(overturn_time[index:]), time, overturn_time[index:]
-        )
-        sim.active_count = index
-        sim.stack = Stack(stack.name, stack.blocks[:index])
-        sim.geometry = sim.geometry[:index]
-        sim.inertia = sim.inertia[:index]
-        sim.kinetic = sim.kinetic[:index]
-
-    status = "completed"
-    message = ""
-    time = 0.0
+    model = engine_model(stack, factors)
+    total_mass = sum(block.mass for block in stack.blocks)
+    params = np.zeros(engine.P_SIZE)
+    params[engine.P_GRAVITY] = gravity
+    params[engine.P_TOL_GAP] = tolerances.gap
+    params[engine.P_TOL_VEL] = tolerances.velocity
+    params[engine.P_TOL_SLIDE] = tolerances.slide
+    params[engine.P_TIME_TOL] = time_tolerance
+    params[engine.P_FORCE_EVENT] = EVENT_TOLERANCE * total_mass * gravity
+    params[engine.P_GAP_EVENT] = 1e-3 * tolerances.gap
+    params[engine.P_EXC_END] = excitation_end
+    params[engine.P_END] = end
+    params[engine.P_STEP] = step
+    params[engine.P_EXC_DT] = dt
+    istate = np.zeros(engine.S_SIZE, dtype=np.int64)
+    istate[engine.S_ACTIVE] = count
+    fstate = np.zeros(engine.F_SIZE)
+    flags = np.zeros((6, count))
+    flags[3] = np.nan
     slide = np.zeros(count)
-    initial_velocity_blocks = qd.reshape(-1, 3).copy()
-    held, q, qd, solve_status, start_impact = settle(time, q, qd, slide)
-    if held is None:
-        status, message = "failed", f"at t = 0: {solve_status}"
-    else:
-        qdd, forces, kin, _ = sim.evaluate(time, q, qd, slide, held)
-        rates = (qdd, sim.slide_rate(kin, held))
-        record(time, q, qd, forces, kin)
-        events.append(
-            TimeHistoryEvent(
-                time,
-                "start",
-                -1,
-                -1,
-                motions(held),
-                initial_velocity_blocks,
-                qd.reshape(-1, 3).copy(),
-                solve_status,
-            )
-        )
-        if start_impact:
-            events.append(
-                TimeHistoryEvent(
-                    time,
-                    start_impact,
-                    -1,
-                    -1,
-                    motions(held),
-                    initial_velocity_blocks,
-                    qd.reshape(-1, 3).copy(),
-                    solve_status,
-                )
-            )
-    steps = 0
-    stalled = 0
-    while status == "completed" and sim.active_count and time < end - 1e-12 * max(end, 1.0):
-        grid = (math.floor(time / step + 1e-6) + 1) * step
-        h = min(grid, end) - time
-        if h <= 1e-3 * time_tolerance:
-            h = step
-        try:
-            q1, qd1, slide1 = sim.rk4(time, q, qd, slide, h, held, rates)
-            qdd1, forces1, kin1, problem1 = sim.evaluate(time + h, q1, qd1, slide1, held)
-        except np.linalg.LinAlgError:
-            status, message = "failed", f"singular contact mode at t = {time:.6g} s"
-            break
-        fired = sim.fired(kin1, forces1, problem1, held)
-        if not fired:
-            time += h
-            q, qd, slide = q1, qd1, slide1
-            rates = (qdd1, sim.slide_rate(kin1, held))
-            steps += 1
-            closed_gaps = [
-                abs(kin1.gap[i, c])
-                for i, mode in enumerate(held.modes)
-                for c, closed in enumerate((mode.left_closed, mode.right_closed))
-                if closed
-            ]
-            if closed_gaps and max(closed_gaps) > 1e-3 * tolerances.gap:
-                q, qd = sim.project(q, qd, held)
-                qdd, forces1, kin1, _ = sim.evaluate(time, q, qd, slide, held)
-                rates = (qdd, sim.slide_rate(kin1, held))
-            record(time, q, qd, forces1, kin1)
-            if time >= excitation_end:
-                index = sim.overturned_after_excitation(qd, kin1)
-                if index >= 0:
-                    remove_from(index, time)
-                    events.append(
-                        TimeHistoryEvent(
-                            time,
-                            "overturn",
-                            index,
-                            -1,
-                            motions(
-                                None
-                                if index == 0
-                                else _Held(held.modes[:index], held.directions[:index])
-                            ),
-                            qd.reshape(-1, 3),
-                            qd.reshape(-1, 3)[:index],
-                        )
-                    )
-                    if sim.active_count == 0:
-                        break
-                    q, qd, slide = q[: 3 * index], qd[: 3 * index], slide[:index]
-                    held, q, qd, solve_status, _ = settle(time, q, qd, slide)
-                    if held is None:
-                        status, message = "failed", f"at t = {time:.6g} s: {solve_status}"
-                        break
-                    qdd, _, kin, _ = sim.evaluate(time, q, qd, slide, held)
-                    rates = (qdd, sim.slide_rate(kin, held))
+    mode = np.zeros((count, 3), dtype=np.int64)
+    directions = np.zeros(count, dtype=np.int64)
+    rows = int(min(end / step * 1.1 + 2 * np.count_nonzero(breaks < end) + 64, 1_000_000))
+    rec = _record_buffers(rows, count)
+    ev = _event_buffers(256, count)
+    chunk = end / 100.0 if progress is not None else math.inf
+    exc = (horizontal, vertical)
+    while True:
+        chunk_end = fstate[engine.F_TIME] + chunk
+        outcome = engine.run(
+            model, exc, breaks, params, step, max_events, chunk_end, q, qd, slide, mode,
+            directions, istate, fstate, flags, rec, ev,
+        )  # fmt: skip
+        if outcome == engine.BUFFER_FULL:
+            used = int(istate[engine.S_ROWS])
+            if used + 4 > rec[0].shape[0]:
+                rec = _grow(rec, 2 * rec[0].shape[0])
+            if int(istate[engine.S_EVENTS]) + 4 > ev[0].shape[0]:
+                ev = _grow(ev, 2 * ev[0].shape[0])
             continue
-        # locate the earliest event by bisection
-        low, high = 0.0, h
-        state = (q1, qd1, slide1, forces1, kin1, fired)
-        while high - low > time_tolerance:
-            middle = 0.5 * (low + high)
-            qm, qdm, slide_m = sim.rk4(time, q, qd, slide, middle, held, rates)
-            _, forces_m, kin_m, problem_m = sim.evaluate(time + middle, qm, qdm, slide_m, held)
-            fired_m = sim.fired(kin_m, forces_m, problem_m, held)
-            if fired_m:
-                high, state = middle, (qm, qdm, slide_m, forces_m, kin_m, fired_m)
-            else:
-                low = middle
-        q, qd, slide, forces, kin, fired = state
-        time += high
-        steps += 1
-        stalled = stalled + 1 if high <= 2.0 * time_tolerance else 0
-        if stalled > 50:
-            status = "failed"
-            message = f"events repeat without progress at t = {time:.9g} s ({fired[0][0]})"
-            break
-        record(time, q, qd, forces, kin)
-        kind, interface, contact = min(fired, key=lambda e: _EVENT_PRIORITY.index(e[0]))
-        velocity_before = qd.reshape(-1, 3).copy()
-        if kind == "overturn":
-            remove_from(interface, time)
-            if sim.active_count == 0:
-                events.append(
-                    TimeHistoryEvent(
-                        time,
-                        kind,
-                        interface,
-                        contact,
-                        motions(None),
-                        velocity_before,
-                        velocity_before[:0],
-                    )
-                )
-                break
-            q, qd, slide = q[: 3 * interface], qd[: 3 * interface], slide[:interface]
-        held, q, qd, solve_status, impacted = settle(time, q, qd, slide)
-        if held is None:
-            status, message = "failed", f"at t = {time:.6g} s: {solve_status}"
-            break
-        if impacted == "tangential-impact" or (
-            impacted and kind not in ("impact", "stop-impact", "overturn")
-        ):
-            kind = impacted
+        if outcome == engine.CHUNK_DONE:
+            progress(min(fstate[engine.F_TIME] / end, 1.0))
+            continue
+        break
+    if progress is not None:
+        progress(1.0)
+    return _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev, outcome)
+
+
+def default_step(stack: Stack, gravity: float = GRAVITY) -> float:
+    """Default largest step [s] of the general path under a sampled record.
+
+    ``0.05 / p``, with ``p = sqrt(m g R / I_O)`` the largest rocking frequency
+    parameter of the stack's blocks about either lower contact (Housner 1963),
+    and at most 20 ms. RK4's error per step scales as ``(p h)^5``: about
+    3e-7 of the motion's scale per step (the single-block integrator, whose
+    step is 0.02 / p, converges to 1e-10 rad at such steps). Steps also end
+    where the record's slope changes (see :func:`record_breaks`).
+    """
+    largest = 0.0
+    for block in stack.blocks:
+        height = block.centre[1] - block.base_level
+        for lever in (block.centre[0] - block.base_left, block.base_right - block.centre[0]):
+            radius = math.hypot(lever, height)
+            inertia = block.inertia + block.mass * radius**2
+            largest = max(largest, math.sqrt(block.mass * gravity * radius / inertia))
+    return min(0.05 / largest, 0.02) if largest > 0.0 else 0.02
+
+
+def record_breaks(time_step: float, horizontal: np.ndarray, vertical: np.ndarray) -> np.ndarray:
+    """Times [s] at which the piecewise-linear record changes slope, and its end.
+
+    A sample is a break point when the second difference of either component
+    is not zero (beyond 1e-12 of the component's peak). Steps end there, so
+    that RK4 never steps across a kink: sliding under a piecewise-linear record
+    is then integrated exactly, and a record resampled finely from a coarser
+    one costs no more steps than the coarse one.
+    """
+    count = horizontal.size
+    kinks = np.zeros(count, dtype=bool)
+    for values in (horizontal, vertical):
+        scale = max(float(np.max(np.abs(values), initial=0.0)), 1e-300)
+        second = np.abs(values[2:] - 2.0 * values[1:-1] + values[:-2])
+        kinks[1:-1] |= second > 1e-12 * scale
+    kinks[-1] = True
+    return np.array(np.flatnonzero(kinks) * time_step, dtype=float)
+
+
+def engine_model(stack: Stack, restitution: np.ndarray) -> tuple:
+    """The arrays of :mod:`freestand.core.stack_engine` describing a stack."""
+    geometry = stack_geometry(stack)
+    mass = np.array([[b.mass, b.mass, b.inertia] for b in stack.blocks], dtype=float).reshape(-1)
+    codes = {Sliding.FREE: 0, Sliding.NONE: 1, Sliding.NO_RIGHT: 2, Sliding.NO_LEFT: 3}
+    return (
+        geometry,
+        1.0 / mass,
+        mass,
+        np.array([b.friction.static for b in stack.blocks], dtype=float),
+        np.array([b.friction.kinetic for b in stack.blocks], dtype=float),
+        np.array([codes[b.sliding] for b in stack.blocks], dtype=np.int64),
+        np.ascontiguousarray(restitution, dtype=float),
+        np.array(
+            [[b.base_left, b.base_right, b.base_level] for b in stack.blocks], dtype=float
+        ).reshape(-1, 3),
+    )
+
+
+def _restitution_factors(restitution, count: int) -> np.ndarray:
+    if restitution is None:
+        return np.ones(count)
+    values = np.broadcast_to(np.asarray(restitution, dtype=float), (count,)).copy()
+    if not np.all((values >= 0.0) & (values <= 1.0)):
+        raise ValueError(
+            "restitution factors must lie in [0, 1] (1: the plastic impact law), "
+            f"not {restitution!r}"
+        )
+    return values
+
+
+def _record_buffers(rows: int, count: int) -> tuple:
+    return (
+        np.empty(rows),
+        np.empty((rows, count, 3)),
+        np.empty((rows, count, 3)),
+        np.empty((rows, count, 2)),
+        np.empty((rows, count)),
+        np.empty((rows, count)),
+        np.empty((rows, count)),
+    )
+
+
+def _event_buffers(rows: int, count: int) -> tuple:
+    return (
+        np.empty(rows),
+        np.empty((rows, 6), dtype=np.int64),
+        np.empty((rows, count), dtype=np.int64),
+        np.empty((rows, count, 3)),
+        np.empty((rows, count, 3)),
+    )
+
+
+def _grow(buffers: tuple, rows: int) -> tuple:
+    grown = []
+    for array in buffers:
+        bigger = np.empty((rows, *array.shape[1:]), dtype=array.dtype)
+        bigger[: array.shape[0]] = array
+        grown.append(bigger)
+    return tuple(grown)
+
+
+def _painleve_reason(stack: Stack, position: np.ndarray, velocity: np.ndarray) -> str:
+    """Why no contact mode is consistent at the last recorded state, in words.
+
+    No mode satisfies the unilateral and Coulomb conditions together, and the
+    tangential impact that should resolve it (Painleve's paradox: a block
+    sliding on one corner, the friction force raising the normal load faster
+    than it can support it) finds no velocity jump that does: the rigid-body
+    model with Coulomb friction has no solution there. Names the interfaces
+    that slide on one contact, with their rotation and friction.
+    """
+    if position.shape[0] == 0:
+        return ""
+    q = position[-1].reshape(-1)
+    qd = velocity[-1].reshape(-1)
+    active = int(np.count_nonzero(np.isfinite(q)) // 3)
+    reason = (
+        " (no contact mode satisfies the unilateral and Coulomb conditions and no "
+        "tangential impact resolves it: a Painleve-type inconsistency of the rigid-body "
+        "model with Coulomb friction"
+    )
+    if active == 0:
+        return reason + ")"
+    sub = Stack(stack.name, stack.blocks[:active])
+    kin = stack_kinematics(sub, q[: 3 * active], qd[: 3 * active])
+    tol = ContactTolerances()
+    found = []
+    for i, block in enumerate(sub.blocks):
+        touching = kin.gap[i] <= tol.gap
+        slip = kin.slip_velocity[i, _lower_contact(kin, i)]
+        if touching.sum() == 1 and abs(slip) > tol.velocity:
+            found.append(
+                f"{block.name} slides on one contact at {slip:.3g} m/s, rotated "
+                f"{kin.rotation[i]:.3g} rad on the body below, mu_0 = "
+                f"{block.friction.static:.3g}, mu = {block.friction.kinetic:.3g}"
+            )
+    if found:
+        reason += "; " + "; ".join(found)
+    return reason + ")"
+
+
+def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev, outcome):
+    rows = int(istate[engine.S_ROWS])
+    time = fstate[engine.F_TIME]
+    times = rec[0][:rows].copy()
+    position = rec[1][:rows].copy()
+    velocity = rec[2][:rows].copy()
+    normal = rec[3][:rows].copy()
+    tangential = rec[4][:rows].copy()
+    rotation = rec[5][:rows].copy()
+    slides = rec[6][:rows].copy()
+    events = []
+    for e in range(int(istate[engine.S_EVENTS])):
+        kind, interface, contact, status, before, after = (int(v) for v in ev[1][e])
         events.append(
             TimeHistoryEvent(
-                time,
-                kind,
+                float(ev[0][e]),
+                engine.EVENT_KINDS[kind],
                 interface,
                 contact,
-                motions(held),
-                velocity_before,
-                qd.reshape(-1, 3).copy(),
-                solve_status,
+                tuple(engine.MOTION_NAMES[int(m)] for m in ev[2][e]),
+                ev[3][e, :before].copy(),
+                ev[4][e, :after].copy(),
+                "ambiguous" if status else "unique",
             )
         )
-        if len(events) > max_events:
-            status, message = "failed", f"more than {max_events} events by t = {time:.6g} s"
-            break
-        try:
-            qdd, forces, kin, _ = sim.evaluate(time, q, qd, slide, held)
-            rates = (qdd, sim.slide_rate(kin, held))
-        except np.linalg.LinAlgError:
-            status, message = "failed", f"singular contact mode at t = {time:.6g} s"
-            break
-        record(time, q, qd, forces, kin)
-
-    if status == "completed":
-        if overturned.all():
-            message = f"every block overturned (by t = {np.nanmax(overturn_time):.6g} s)"
+    overturned = flags[2] > 0.5
+    overturn_time = flags[3].copy()
+    status = "completed"
+    message = ""
+    if outcome == engine.FAILED:
+        status = "failed"
+        failure = int(istate[engine.S_FAILURE])
+        if failure == engine.SINGULAR_MODE:
+            message = f"singular contact mode at t = {time:.6g} s"
+        elif failure == engine.STALLED:
+            kind = events[-1].kind if events else "event"
+            message = f"events repeat without progress at t = {time:.9g} s ({kind})"
+        elif failure == engine.TOO_MANY_EVENTS:
+            message = f"more than {max_events} events by t = {time:.6g} s"
         else:
-            message = f"simulated to t = {time:.6g} s"
-            if overturned.any():
-                names = ", ".join(
-                    b.name for b, o in zip(stack.blocks, overturned, strict=True) if o
-                )
-                message += f"; overturned: {names}"
+            where = "at t = 0" if time == 0.0 else f"at t = {time:.6g} s"
+            message = f"{where}: {engine.FAILURES[failure]}"
+            if failure in (engine.CONTACT_INCONSISTENT, engine.CONTACT_INCONSISTENT_AFTER):
+                message += _painleve_reason(stack, position, velocity)
+    elif overturned.all():
+        message = f"every block overturned (by t = {np.nanmax(overturn_time):.6g} s)"
+    else:
+        message = f"simulated to t = {time:.6g} s"
+        if overturned.any():
+            names = ", ".join(b.name for b, o in zip(stack.blocks, overturned, strict=True) if o)
+            message += f"; overturned: {names}"
+    max_lift = flags[4].copy()
+    max_flight = flags[5].copy()
     lift_threshold = UPLIFT_GAP_FRACTION * np.array(
         [block.base_right - block.base_left for block in stack.blocks]
     )
-    uplift &= max_lift > lift_threshold
-    free_flight &= max_flight > lift_threshold
-    rotation_array = np.array(rotations) if rotations else np.zeros((0, count))
-    slide_array = np.array(slides) if slides else np.zeros((0, count))
-    time_array = np.array(times)
-    velocity_array = np.array(velocities).reshape(-1, count, 3)
-    relative_rate = velocity_array[:, :, 2].copy()
-    relative_rate[:, 1:] -= velocity_array[:, :-1, 2]
+    uplift = (flags[0] > 0.5) & (max_lift > lift_threshold)
+    free_flight = (flags[1] > 0.5) & (max_flight > lift_threshold)
+    relative_rate = velocity[:, :, 2].copy()
+    relative_rate[:, 1:] -= velocity[:, :-1, 2]
     with np.errstate(all="ignore"):
         max_rotation = np.array(
-            [
-                _peak_magnitude(time_array, rotation_array[:, i], relative_rate[:, i])
-                for i in range(count)
-            ]
+            [_peak_magnitude(times, rotation[:, i], relative_rate[:, i]) for i in range(count)]
         )
-        max_slide = np.nan_to_num(np.nanmax(np.abs(slide_array), axis=0, initial=0.0))
+        max_slide = np.nan_to_num(np.nanmax(np.abs(slides), axis=0, initial=0.0))
     return TimeHistoryResult(
         configuration=stack.name,
         block_names=tuple(block.name for block in stack.blocks),
         status=status,
         message=message,
-        time=np.array(times),
-        position=np.array(positions).reshape(-1, count, 3),
-        velocity=np.array(velocities).reshape(-1, count, 3),
-        normal_force=np.array(normals).reshape(-1, count, 2),
-        tangential_force=np.array(tangentials).reshape(-1, count),
-        relative_rotation=rotation_array,
-        slide=slide_array,
+        time=times,
+        position=position,
+        velocity=velocity,
+        normal_force=normal,
+        tangential_force=tangential,
+        relative_rotation=rotation,
+        slide=slides,
         events=tuple(events),
         max_rotation=max_rotation,
         max_slide=max_slide,
@@ -1671,12 +1204,12 @@ def simulate_general(
         overturn_time=overturn_time,
         diagnostics=TimeHistoryDiagnostics(
             time_step=step,
-            steps=steps,
-            contact_solves=sim.contact_solves,
-            impact_solves=sim.impact_solves,
-            ambiguous_solves=sim.ambiguous,
-            max_penetration=sim.max_penetration,
-            max_projection=sim.max_projection,
+            steps=int(istate[engine.S_STEPS]),
+            contact_solves=int(istate[engine.S_CONTACT_SOLVES]),
+            impact_solves=int(istate[engine.S_IMPACT_SOLVES]),
+            ambiguous_solves=int(istate[engine.S_AMBIGUOUS]),
+            max_penetration=float(fstate[engine.F_MAX_PENETRATION]),
+            max_projection=float(fstate[engine.F_MAX_PROJECTION]),
         ),
         max_lift=max_lift,
     )

@@ -1,0 +1,1984 @@
+"""Compiled event-driven time history of a planar stack (the general path's engine).
+
+This module holds the whole loop of :func:`freestand.core.timehistory.simulate_general`
+in numba: the held-mode dynamics, RK4 steps, event detection and location,
+impacts, the choice of the next contact mode, the projection onto the closed
+contacts, overturning and the recording of the history. Python is called only
+between chunks of simulated time (for a progress report and to grow the
+history buffers), never per step.
+
+The physics is the one documented in :mod:`freestand.core.timehistory` and
+``docs/timehistory.md``; the instantaneous contact problem (at a state, or
+at velocity level for an impact) is the one of
+:mod:`freestand.core.contact`, solved here by the same mode enumeration, the
+same admissibility tests, static-friction break-away test, relaxation,
+choice rule and deduplication, written on the Delassus matrix
+``W = J M^-1 J^T`` of the generalised coordinates (``M`` is diagonal: each
+block's coordinates are its centre of gravity and its rotation), as
+:mod:`freestand.core.batch` does at rest::
+
+    qdd = M^-1 (f + J^T Lambda),   a = J qdd + b = W Lambda + h,   h = J M^-1 f + b
+
+where ``a`` are the gap and slip accelerations of the mode's rows. In a
+contact mode the unknowns are the normal forces of the closed contacts and
+the tangential forces of the sticking interfaces; a sliding interface has
+``T = -d mu (N_L + N_R)``.
+
+Codes used by the kernels
+-------------------------
+sliding (per block)
+    0 free, 1 none, 2 no-right, 3 no-left.
+tangential state of a mode
+    0 free (no contact closed), 1 stick, 2 slide +x, 3 slide -x, 4 kinetic
+    (already sliding: kinetic friction against the slip velocity).
+event kinds
+    :data:`EVENT_KINDS`.
+motions
+    :data:`MOTION_NAMES`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba as nb
+import numpy as np
+
+from freestand.core.contact import RELATIVE_TOLERANCE
+
+#: Event kinds, indexed by the kernel's event codes.
+EVENT_KINDS = (
+    "start",
+    "impact",
+    "tangential-impact",
+    "lift-off",
+    "slip",
+    "slip-stop",
+    "stop-impact",
+    "overturn",
+)
+START, IMPACT, TANGENTIAL_IMPACT, LIFT_OFF, SLIP, SLIP_STOP, STOP_IMPACT, OVERTURN = range(8)
+#: Priority of simultaneous events (lower first): overturn, impact, stop-impact,
+#: lift-off, slip, slip-stop.
+_PRIORITY = np.array([9, 1, 9, 3, 4, 5, 2, 0], dtype=np.int64)
+
+#: Motions of a block relative to the body below, indexed by the kernel's codes.
+MOTION_NAMES = ("rest", "slide", "rock", "slide-rock", "free-flight", "overturned")
+
+#: Kernel outcome codes.
+RUNNING, COMPLETED, FAILED, BUFFER_FULL, CHUNK_DONE = range(5)
+
+#: Failure causes (message templates filled by the caller).
+FAILURES = (
+    "",
+    "singular contact mode",
+    "impact problem inconsistent",
+    "contact problem inconsistent",
+    "contact problem inconsistent (also after a tangential impact)",
+    "events repeat without progress",
+    "more than the allowed number of events",
+)
+(
+    NO_FAILURE,
+    SINGULAR_MODE,
+    IMPACT_INCONSISTENT,
+    CONTACT_INCONSISTENT,
+    CONTACT_INCONSISTENT_AFTER,
+    STALLED,
+    TOO_MANY_EVENTS,
+) = range(7)
+
+#: Largest number of distinct admissible states kept per solve.
+MAX_DISTINCT = 16
+
+# --- parameter vector layout (float64) ---------------------------------------------------------
+P_GRAVITY, P_TOL_GAP, P_TOL_VEL, P_TOL_SLIDE, P_TIME_TOL = range(5)
+P_FORCE_EVENT, P_GAP_EVENT, P_EXC_END, P_END, P_STEP, P_EXC_DT = range(5, 11)
+P_SIZE = 11
+
+# --- integer state vector layout (int64) -------------------------------------------------------
+S_ACTIVE, S_STATUS, S_FAILURE, S_STEPS, S_CONTACT_SOLVES, S_IMPACT_SOLVES = range(6)
+S_AMBIGUOUS, S_ROWS, S_EVENTS, S_STALLED, S_BREAK, S_STARTED = range(6, 12)
+S_SIZE = 12
+
+# --- float state vector layout -----------------------------------------------------------------
+F_TIME, F_MAX_PENETRATION, F_MAX_PROJECTION = range(3)
+F_SIZE = 3
+
+
+# --- excitation ---------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True, inline="always")
+def _support(horizontal, vertical, dt, t):
+    """(a_h, a_v) [m/s^2] at ``t`` [s]: linear between samples, zero outside the record."""
+    count = horizontal.shape[0]
+    position = t / dt
+    if position < 0.0 or position > count - 1:
+        return 0.0, 0.0
+    index = min(int(position), count - 2)
+    fraction = position - index
+    a_h = (1.0 - fraction) * horizontal[index] + fraction * horizontal[index + 1]
+    a_v = (1.0 - fraction) * vertical[index] + fraction * vertical[index + 1]
+    return a_h, a_v
+
+
+# --- kinematics ---------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True)
+def kinematics(geometry, active, q, qd, gap, gap_velocity, slip_velocity, rotation, jn, bn, jt, bt,
+               slide=None, first=0):  # fmt: skip
+    """Gaps, relative velocities, Jacobians and velocity terms of the first ``active`` blocks.
+
+    Same equations as :func:`freestand.core.timehistory.stack_kinematics`
+    (``q``, ``qd`` flat, 3 per block; ``jn``, ``jt`` of shape (B, 2, 3 B),
+    only the columns of the interface's two blocks are written and the
+    others must be zero). With ``slide`` (B,) also the slide of each
+    interface's left contact along the lower surface from the lower body's
+    material point it started on, ``t . (P_L - X_L)``. Interfaces below
+    ``first`` are left as they are.
+    """
+    for i in range(first, active):
+        cxu = geometry[i, 0]
+        czu = geometry[i, 1]
+        gxu = cxu + q[3 * i]
+        gzu = czu + q[3 * i + 1]
+        phi_u = q[3 * i + 2]
+        vxu = qd[3 * i]
+        vzu = qd[3 * i + 1]
+        omega_u = qd[3 * i + 2]
+        if i == 0:
+            gxl = 0.0
+            gzl = 0.0
+            phi_l = 0.0
+            vxl = 0.0
+            vzl = 0.0
+            omega_l = 0.0
+            nx, nz = 0.0, 1.0
+            tx, tz = 1.0, 0.0
+            spx, spz = 0.0, geometry[i, 6]
+        else:
+            cxl = geometry[i - 1, 0]
+            czl = geometry[i - 1, 1]
+            gxl = cxl + q[3 * i - 3]
+            gzl = czl + q[3 * i - 2]
+            phi_l = q[3 * i - 1]
+            vxl = qd[3 * i - 3]
+            vzl = qd[3 * i - 2]
+            omega_l = qd[3 * i - 1]
+            sl = math.sin(phi_l)
+            cl = math.cos(phi_l)
+            nx, nz = -sl, cl
+            tx, tz = cl, sl
+            dz = geometry[i, 6] - czl
+            spx = gxl - sl * dz
+            spz = gzl + cl * dz
+        rotation[i] = phi_u - phi_l
+        c1u = -2.0 * math.sin(0.5 * phi_u) ** 2
+        su = math.sin(phi_u)
+        for c in range(2):
+            rx = geometry[i, 2 + 2 * c]
+            rz = geometry[i, 3 + 2 * c]
+            dx = rx - cxu
+            dzz = rz - czu
+            px = rx + q[3 * i] + c1u * dx - su * dzz
+            pz = rz + q[3 * i + 1] + su * dx + c1u * dzz
+            aux = px - gxu
+            auz = pz - gzu
+            pdx = vxu - omega_u * auz
+            pdz = vzu + omega_u * aux
+            alx = px - gxl
+            alz = pz - gzl
+            wx = pdx - vxl + omega_l * alz
+            wz = pdz - vzl - omega_l * alx
+            gap[i, c] = nx * (px - spx) + nz * (pz - spz)
+            gap_velocity[i, c] = nx * wx + nz * wz
+            slip_velocity[i, c] = tx * wx + tz * wz
+            if slide is not None and c == 0:
+                if i:
+                    cxl = geometry[i - 1, 0]
+                    czl = geometry[i - 1, 1]
+                    c1l = -2.0 * math.sin(0.5 * phi_l) ** 2
+                    sl_ = math.sin(phi_l)
+                    ex = rx - cxl
+                    ez = rz - czl
+                    mx = rx + q[3 * i - 3] + c1l * ex - sl_ * ez
+                    mz = rz + q[3 * i - 2] + sl_ * ex + c1l * ez
+                else:
+                    mx = rx
+                    mz = rz
+                slide[i] = tx * (px - mx) + tz * (pz - mz)
+            relx = pdx - vxl
+            relz = pdz - vzl
+            for k in range(2):
+                if k == 0:
+                    d0, d1 = nx, nz
+                else:
+                    d0, d1 = tx, tz
+                jac_u = -d0 * auz + d1 * aux
+                bias = (
+                    -(omega_u**2) * (d0 * aux + d1 * auz)
+                    - omega_l * (-d0 * relz + d1 * relx)
+                    + omega_l * (-d1 * wx + d0 * wz)
+                )
+                if k == 0:
+                    jn[i, c, 3 * i] = d0
+                    jn[i, c, 3 * i + 1] = d1
+                    jn[i, c, 3 * i + 2] = jac_u
+                    bn[i, c] = bias
+                else:
+                    jt[i, c, 3 * i] = d0
+                    jt[i, c, 3 * i + 1] = d1
+                    jt[i, c, 3 * i + 2] = jac_u
+                    bt[i, c] = bias
+                if i:
+                    jac_l = -(-d0 * alz + d1 * alx)
+                    if k == 0:
+                        jn[i, c, 3 * i - 3] = -d0
+                        jn[i, c, 3 * i - 2] = -d1
+                        jn[i, c, 3 * i - 1] = jac_l
+                    else:
+                        jt[i, c, 3 * i - 3] = -d0
+                        jt[i, c, 3 * i - 2] = -d1
+                        jt[i, c, 3 * i - 1] = jac_l
+
+
+# --- the contact solver -------------------------------------------------------------------------
+
+
+@nb.njit(cache=True, inline="always")
+def _row(i, kind, reference):
+    """Row of the 4-per-interface Delassus matrix: gap left, gap right, slip left, slip right."""
+    if kind < 2:
+        return 4 * i + kind
+    return 4 * i + 2 + reference
+
+
+@nb.njit(cache=True)
+def delassus(active, inverse_mass, free_acc, jn, bn, jt, bt, w, h):
+    """``W = J M^-1 J^T`` and ``h = J M^-1 f + b`` over the rows (gap L, gap R, slip L, slip R).
+
+    Each interface's rows involve only its two blocks' columns, so the product is
+    accumulated over those six columns.
+    """
+    rows = 4 * active
+    for r in range(rows):
+        i = r // 4
+        kind = r % 4
+        jr = jn[i, kind] if kind < 2 else jt[i, kind - 2]
+        br = bn[i, kind] if kind < 2 else bt[i, kind - 2]
+        start = 3 * i - 3 if i else 0
+        total = br
+        for col in range(start, 3 * i + 3):
+            total += jr[col] * free_acc[col]
+        h[r] = total
+        for s in range(r, rows):
+            k = s // 4
+            if k > i + 1:
+                w[r, s] = 0.0
+                w[s, r] = 0.0
+                continue
+            kind_s = s % 4
+            js = jn[k, kind_s] if kind_s < 2 else jt[k, kind_s - 2]
+            lo = max(start, 3 * k - 3 if k else 0)
+            hi = min(3 * i + 3, 3 * k + 3)
+            total = 0.0
+            for col in range(lo, hi):
+                total += jr[col] * js[col] * inverse_mass[col]
+            w[r, s] = total
+            w[s, r] = total
+
+
+@nb.njit(cache=True)
+def solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full,
+               with_accelerations=True):  # fmt: skip
+    """Forces ``lam`` (N_L, N_R, T per interface) and contact accelerations of one mode.
+
+    ``mode`` (B, 3): left closed, right closed, tangential code; ``mu`` the
+    coefficient of the sliding interfaces (kinetic, or static for the
+    break-away test). ``a`` (B, 3): gap accelerations left, right and the slip
+    acceleration at the reference contact. Returns False for a singular mode.
+    """
+    k = 0
+    for i in range(active):
+        left = mode[i, 0]
+        right = mode[i, 1]
+        tangential = mode[i, 2]
+        reference = 1 if (right == 1 and left == 0) else 0
+        direction = 0.0
+        if tangential == 2:
+            direction = 1.0
+        elif tangential == 3:
+            direction = -1.0
+        elif tangential == 4:
+            direction = mu[i, 1]  # sign of the slip velocity
+        for side in range(2):
+            if mode[i, side] == 1:
+                index[k] = 4 * i + side
+                coeff[k] = -direction * mu[i, 0]
+                k += 1
+        if tangential == 1:
+            index[k] = 4 * i + 2 + reference
+            coeff[k] = 0.0
+            k += 1
+    for r in range(k):
+        row = index[r]
+        rhs[r] = -h[row]
+        for j in range(k):
+            column = index[j]
+            value = w[row, column]
+            if coeff[j] != 0.0:
+                i = column // 4
+                reference = 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
+                value += coeff[j] * w[row, 4 * i + 2 + reference]
+            matrix[r, j] = value
+    for p in range(k):
+        pivot = p
+        largest = abs(matrix[p, p])
+        for r in range(p + 1, k):
+            if abs(matrix[r, p]) > largest:
+                largest = abs(matrix[r, p])
+                pivot = r
+        if largest == 0.0:
+            return False
+        if pivot != p:
+            for j in range(k):
+                tmp = matrix[p, j]
+                matrix[p, j] = matrix[pivot, j]
+                matrix[pivot, j] = tmp
+            tmp = rhs[p]
+            rhs[p] = rhs[pivot]
+            rhs[pivot] = tmp
+        for r in range(p + 1, k):
+            factor = matrix[r, p] / matrix[p, p]
+            if factor != 0.0:
+                for j in range(p + 1, k):
+                    matrix[r, j] -= factor * matrix[p, j]
+                rhs[r] -= factor * rhs[p]
+    for p in range(k - 1, -1, -1):
+        total = rhs[p]
+        for j in range(p + 1, k):
+            total -= matrix[p, j] * rhs[j]
+        rhs[p] = total / matrix[p, p]
+    # forces: 4 slots per interface (N_L, N_R, T at slip L, T at slip R)
+    for r in range(4 * active):
+        full[r] = 0.0
+    for j in range(k):
+        column = index[j]
+        full[column] += rhs[j]
+        if coeff[j] != 0.0:
+            i = column // 4
+            reference = 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
+            full[4 * i + 2 + reference] += coeff[j] * rhs[j]
+    for i in range(active):
+        lam[i, 0] = full[4 * i]
+        lam[i, 1] = full[4 * i + 1]
+        lam[i, 2] = full[4 * i + 2] + full[4 * i + 3]
+    if not with_accelerations:
+        return True
+    contact_accelerations(active, w, h, mode, full, a)
+    return True
+
+
+@nb.njit(cache=True)
+def contact_accelerations(active, w, h, mode, full, a):
+    """Gap accelerations (left, right) and slip acceleration of every interface, ``W lam + h``."""
+    for i in range(active):
+        reference = 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
+        for kind in range(3):
+            row = _row(i, kind, reference)
+            total = h[row]
+            for s in range(4 * active):
+                total += w[row, s] * full[s]
+            a[i, kind] = total
+        if mode[i, 0] == 1:
+            a[i, 0] = 0.0
+        if mode[i, 1] == 1:
+            a[i, 1] = 0.0
+
+
+@nb.njit(cache=True)
+def accelerations(active, inverse_mass, free_acc, jn, jt, mode, lam, qdd):
+    """``qdd = M^-1 f + M^-1 J^T Lambda`` (the tangential force along the reference row)."""
+    n = 3 * active
+    for c in range(n):
+        qdd[c] = 0.0
+    for i in range(active):
+        reference = 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
+        start = 3 * i - 3 if i else 0
+        for col in range(start, 3 * i + 3):
+            qdd[col] += (
+                jn[i, 0, col] * lam[i, 0]
+                + jn[i, 1, col] * lam[i, 1]
+                + jt[i, reference, col] * lam[i, 2]
+            )
+    for c in range(n):
+        qdd[c] = free_acc[c] + inverse_mass[c] * qdd[c]
+
+
+@nb.njit(cache=True)
+def _local_modes(active_left, active_right, kinetic, sliding, out):
+    """Modes of one interface in the order of ``Interface.modes``; returns their count.
+
+    ``sliding`` is the effective restriction (an unengaged stop is free).
+    """
+    count = 0
+    for state in range(4):
+        left = 1 if state < 2 else 0
+        right = 1 if state == 0 or state == 2 else 0
+        if left > active_left or right > active_right:
+            continue
+        if left == 0 and right == 0:
+            out[count, 0] = 0
+            out[count, 1] = 0
+            out[count, 2] = 0
+            count += 1
+            continue
+        if kinetic and sliding != 1:
+            out[count, 0] = left
+            out[count, 1] = right
+            out[count, 2] = 4
+            count += 1
+            continue
+        out[count, 0] = left
+        out[count, 1] = right
+        out[count, 2] = 1
+        count += 1
+        if sliding == 0 or sliding == 3:
+            out[count, 0] = left
+            out[count, 1] = right
+            out[count, 2] = 2
+            count += 1
+        if sliding == 0 or sliding == 2:
+            out[count, 0] = left
+            out[count, 1] = right
+            out[count, 2] = 3
+            count += 1
+    return count
+
+
+@nb.njit(cache=True)
+def solve_contact_problem(
+    active,
+    inverse_mass,
+    free_acc,
+    jn,
+    bn,
+    jt,
+    bt,
+    contact_active,
+    slip,
+    sliding,
+    mu_static,
+    mu_kinetic,
+    force_tol,
+    accel_tol,
+    out_modes,
+    out_qdd,
+    out_lam,
+):
+    """Every consistent state of the contact problem (as ``contact.solve_contact``).
+
+    ``contact_active`` (B, 2) bool; ``slip`` (B,) the slip velocity (non-zero:
+    kinetic); ``sliding`` (B,) effective restriction codes. Fills the distinct
+    admissible states in the order of the choice rule (``out_modes`` (K, B, 3),
+    ``out_qdd`` (K, 3 B), ``out_lam`` (K, B, 3)) and returns their number
+    (0: inconsistent; more than one: ambiguous; at most :data:`MAX_DISTINCT`
+    kept).
+    """
+    n = 3 * active
+    rows = 4 * active
+    w = np.empty((rows, rows))
+    h = np.empty(rows)
+    delassus(active, inverse_mass, free_acc, jn, bn, jt, bt, w, h)
+    local = np.empty((active, 10, 3), dtype=np.int64)
+    local_count = np.empty(active, dtype=np.int64)
+    total = 1
+    for i in range(active):
+        local_count[i] = _local_modes(
+            1 if contact_active[i, 0] else 0,
+            1 if contact_active[i, 1] else 0,
+            slip[i] != 0.0,
+            sliding[i],
+            local[i],
+        )
+        total *= local_count[i]
+    mu = np.empty((active, 2))
+    mu_break = np.empty((active, 2))
+    for i in range(active):
+        sign = 1.0 if slip[i] > 0.0 else (-1.0 if slip[i] < 0.0 else 0.0)
+        mu[i, 0] = mu_kinetic[i]
+        mu[i, 1] = sign
+        mu_break[i, 0] = mu_kinetic[i] if slip[i] != 0.0 else mu_static[i]
+        mu_break[i, 1] = sign
+    lam_all = np.empty((total, active, 3))
+    qdd_all = np.empty((total, n))
+    key = np.empty(total, dtype=np.int64)
+    physical = np.zeros(total, dtype=np.bool_)
+    candidate = np.zeros(total, dtype=np.bool_)
+    mode = np.empty((active, 3), dtype=np.int64)
+    a = np.empty((active, 3))
+    lam_static = np.empty((active, 3))
+    a_static = np.empty((active, 3))
+    matrix = np.empty((3 * active, 3 * active))
+    rhs = np.empty(3 * active)
+    index = np.empty(3 * active, dtype=np.int64)
+    coeff = np.empty(3 * active)
+    full = np.empty(4 * active)
+    digits = np.zeros(active, dtype=np.int64)
+    for combo in range(total):
+        # itertools.product order: the last interface varies fastest
+        rest = combo
+        for i in range(active - 1, -1, -1):
+            digits[i] = rest % local_count[i]
+            rest //= local_count[i]
+        sticking = 0
+        opened = 0
+        has_slide = False
+        for i in range(active):
+            for c in range(3):
+                mode[i, c] = local[i, digits[i], c]
+            if mode[i, 2] == 1:
+                sticking += 1
+            if mode[i, 2] == 2 or mode[i, 2] == 3:
+                has_slide = True
+            opened += 2 - mode[i, 0] - mode[i, 1]
+        key[combo] = ((active - sticking) * (2 * active + 1) + opened) * total + combo
+        lam = lam_all[combo]
+        if not solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full, False):
+            continue
+        # the inequalities on the forces first (most modes fail there), then the
+        # contact accelerations
+        admissible = True
+        for i in range(active):
+            for c in range(3):
+                if not np.isfinite(lam[i, c]):
+                    admissible = False
+            for side in range(2):
+                if mode[i, side] == 1 and lam[i, side] < -force_tol:
+                    admissible = False
+            if mode[i, 2] == 1 and sliding[i] != 1:
+                limit = mu_static[i] * (lam[i, 0] + lam[i, 1]) + force_tol
+                force = lam[i, 2]
+                if sliding[i] != 2 and -force > limit:
+                    admissible = False
+                if sliding[i] != 3 and force > limit:
+                    admissible = False
+        if not admissible:
+            continue
+        contact_accelerations(active, w, h, mode, full, a)
+        finite = True
+        for i in range(active):
+            for c in range(3):
+                if not np.isfinite(a[i, c]):
+                    finite = False
+        if not finite:
+            continue
+        for i in range(active):
+            if not admissible:
+                break
+            for side in range(2):
+                if mode[i, side] == 1:
+                    if lam[i, side] < -force_tol:
+                        admissible = False
+                elif contact_active[i, side] and a[i, side] < -accel_tol:
+                    admissible = False
+            tangential = mode[i, 2]
+            if tangential == 1:
+                if sliding[i] == 1:
+                    continue
+                limit = mu_static[i] * (lam[i, 0] + lam[i, 1]) + force_tol
+                force = lam[i, 2]
+                if sliding[i] != 2 and -force > limit:
+                    admissible = False
+                if sliding[i] != 3 and force > limit:
+                    admissible = False
+            elif tangential == 2 or tangential == 3:
+                direction = 1.0 if tangential == 2 else -1.0
+                if direction * a[i, 2] < -accel_tol:
+                    admissible = False
+        if not admissible:
+            continue
+        qdd = qdd_all[combo]
+        accelerations(active, inverse_mass, free_acc, jn, jt, mode, lam, qdd)
+        ok = True
+        for c in range(n):
+            if not np.isfinite(qdd[c]):
+                ok = False
+        if not ok:
+            continue
+        candidate[combo] = True
+        if not has_slide:
+            physical[combo] = True
+            continue
+        if solve_mode(
+            active, w, h, mode, mu_break, lam_static, a_static, matrix, rhs, index, coeff, full
+        ):
+            slides = True
+            for i in range(active):
+                tangential = mode[i, 2]
+                if tangential == 2 or tangential == 3:
+                    direction = 1.0 if tangential == 2 else -1.0
+                    if direction * a_static[i, 2] < -accel_tol:
+                        slides = False
+            physical[combo] = slides
+    any_physical = False
+    any_candidate = False
+    for combo in range(total):
+        if candidate[combo]:
+            any_candidate = True
+            if physical[combo]:
+                any_physical = True
+    relaxed = (not any_physical) and any_candidate
+    order = np.argsort(key)
+    kept = np.empty(total, dtype=np.int64)
+    distinct = 0
+    lam_tol = 10.0 * force_tol
+    qdd_tol = 10.0 * accel_tol
+    for position in range(total):
+        combo = order[position]
+        if not candidate[combo]:
+            continue
+        if not (physical[combo] or relaxed):
+            continue
+        new = True
+        for kq in range(distinct):
+            other = kept[kq]
+            differs = False
+            for i in range(active):
+                for c in range(3):
+                    if abs(lam_all[combo, i, c] - lam_all[other, i, c]) > lam_tol:
+                        differs = True
+            if not differs:
+                for c in range(n):
+                    if abs(qdd_all[combo, c] - qdd_all[other, c]) > qdd_tol:
+                        differs = True
+            if not differs:
+                new = False
+                break
+        if not new:
+            continue
+        kept[distinct] = combo
+        if distinct < out_modes.shape[0]:
+            rest = combo
+            for i in range(active - 1, -1, -1):
+                digits[i] = rest % local_count[i]
+                rest //= local_count[i]
+            for i in range(active):
+                for c in range(3):
+                    out_modes[distinct, i, c] = local[i, digits[i], c]
+                    out_lam[distinct, i, c] = lam_all[combo, i, c]
+            for c in range(n):
+                out_qdd[distinct, c] = qdd_all[combo, c]
+        distinct += 1
+    return distinct
+
+
+# --- the time history ---------------------------------------------------------------------------
+
+
+@nb.njit(cache=True)
+def _work(count):
+    """Work arrays of the kernels for a stack of ``count`` blocks."""
+    n = 3 * count
+    return (
+        np.zeros((count, 2, n)),  # 0 jn
+        np.zeros((count, 2)),  # 1 bn
+        np.zeros((count, 2, n)),  # 2 jt
+        np.zeros((count, 2)),  # 3 bt
+        np.zeros((count, 2)),  # 4 gap
+        np.zeros((count, 2)),  # 5 gap velocity
+        np.zeros((count, 2)),  # 6 slip velocity
+        np.zeros(count),  # 7 rotation
+        np.zeros((4 * count, 4 * count)),  # 8 w
+        np.zeros(4 * count),  # 9 h
+        np.zeros((n, n)),  # 10 matrix
+        np.zeros(n),  # 11 rhs
+        np.zeros(n, dtype=np.int64),  # 12 index
+        np.zeros(n),  # 13 coeff
+        np.zeros(4 * count),  # 14 full
+        np.zeros(n),  # 15 free acceleration
+        np.zeros((count, 3)),  # 16 contact accelerations
+        np.zeros((count, 2)),  # 17 mu of the held mode (kinetic, 0)
+        np.zeros(n, dtype=np.int64),  # 18 kinds of the held mode's unknowns
+        np.zeros((10, n)),  # 19 RK4 stages
+        np.zeros((4, count)),  # 20 RK4 slide rates
+        np.zeros((n, n)),  # 21 rows of the held mode's equations
+        np.zeros((n, n)),  # 22 M^-1 G of the held mode's unknowns
+    )
+
+
+@nb.njit(cache=True)
+def _kin(model, active, q, qd, work):
+    geometry = model[0]
+    kinematics(
+        geometry, active, q, qd, work[4], work[5], work[6], work[7], work[0], work[1], work[2],
+        work[3],
+    )  # fmt: skip
+
+
+@nb.njit(cache=True)
+def _free_acceleration(model, active, a_h, a_v, gravity, out):
+    for i in range(active):
+        out[3 * i] = -a_h
+        out[3 * i + 1] = -(gravity - a_v)
+        out[3 * i + 2] = 0.0
+
+
+@nb.njit(cache=True, inline="always")
+def _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam, first=0):
+    """Accelerations and forces of the held mode at a state; kinematics left in ``work``."""
+    horizontal, vertical = exc
+    a_h, a_v = _support(horizontal, vertical, params[P_EXC_DT], t)
+    geometry = model[0]
+    inverse_mass = model[1]
+    jn = work[0]
+    bn = work[1]
+    jt = work[2]
+    bt = work[3]
+    free = work[15]
+    effective_gravity = params[P_GRAVITY] - a_v
+    for i in range(active):
+        free[3 * i] = -a_h
+        free[3 * i + 1] = -effective_gravity
+        free[3 * i + 2] = 0.0
+    kinematics(
+        geometry, active, q, qd, work[4], work[5], work[6], work[7], jn, bn, jt, bt, None, first
+    )
+    return _held_solve(
+        active, inverse_mass, free, jn, bn, jt, bt, mode, work[17], work[21], work[22],
+        work[13], work[10], work[11], qdd, lam, first,
+    )  # fmt: skip
+
+
+@nb.njit(cache=True, inline="always")
+def _reference(mode, i):
+    return 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
+
+
+@nb.njit(cache=True)
+def _slide_rate(active, mode, slip_velocity, out):
+    for i in range(active):
+        out[i] = slip_velocity[i, _reference(mode, i)]
+
+
+@nb.njit(cache=True)
+def _rk4(model, exc, params, active, t, q, qd, slide, h, mode, k1a, k1s, work, out_q, out_qd,
+         out_slide, lam, first=0):  # fmt: skip
+    """One RK4 step of the held mode from ``t`` over ``h``; False for a singular mode."""
+    n = 3 * active
+    stages = work[19]
+    qs = stages[0]
+    vs = stages[1]
+    k2a = stages[2]
+    k3a = stages[3]
+    k4a = stages[4]
+    k2v = stages[5]
+    k3v = stages[6]
+    k2s = work[20][0]
+    k3s = work[20][1]
+    k4s = work[20][2]
+    for c in range(n):
+        qs[c] = q[c] + 0.5 * h * qd[c]
+        k2v[c] = qd[c] + 0.5 * h * k1a[c]
+    if not _evaluate(model, exc, params, active, t + 0.5 * h, qs, k2v, mode, work, k2a, lam, first):
+        return False
+    _slide_rate(active, mode, work[6], k2s)
+    for c in range(n):
+        qs[c] = q[c] + 0.5 * h * k2v[c]
+        k3v[c] = qd[c] + 0.5 * h * k2a[c]
+    if not _evaluate(model, exc, params, active, t + 0.5 * h, qs, k3v, mode, work, k3a, lam, first):
+        return False
+    _slide_rate(active, mode, work[6], k3s)
+    for c in range(n):
+        qs[c] = q[c] + h * k3v[c]
+        vs[c] = qd[c] + h * k3a[c]
+    if not _evaluate(model, exc, params, active, t + h, qs, vs, mode, work, k4a, lam, first):
+        return False
+    _slide_rate(active, mode, work[6], k4s)
+    for c in range(n):
+        out_q[c] = q[c] + h / 6.0 * (qd[c] + 2.0 * k2v[c] + 2.0 * k3v[c] + vs[c])
+        out_qd[c] = qd[c] + h / 6.0 * (k1a[c] + 2.0 * k2a[c] + 2.0 * k3a[c] + k4a[c])
+    for i in range(active):
+        out_slide[i] = slide[i] + h / 6.0 * (k1s[i] + 2.0 * k2s[i] + 2.0 * k3s[i] + k4s[i])
+    return True
+
+
+@nb.njit(cache=True, inline="always")
+def _engaged(sliding, slide, tolerance):
+    if sliding == 2:
+        return slide >= -tolerance
+    if sliding == 3:
+        return slide <= tolerance
+    return True
+
+
+@nb.njit(cache=True)
+def _fired(model, params, active, mode, directions, lam, slide, work, found):
+    """The earliest-priority event that fired at a state (kind, interface, contact) or kind -1.
+
+    ``found`` (3,) int receives it. Same conditions as the former Python loop.
+    """
+    mu_s = model[3]
+    sliding_codes = model[5]
+    gap = work[4]
+    gap_velocity = work[5]
+    slip_velocity = work[6]
+    rotation = work[7]
+    force_event = params[P_FORCE_EVENT]
+    gap_event = params[P_GAP_EVENT]
+    tol_slide = params[P_TOL_SLIDE]
+    tol_vel = params[P_TOL_VEL]
+    best = 100
+    found[0] = -1
+    found[1] = -1
+    found[2] = -1
+    for i in range(active):
+        for c in range(2):
+            if mode[i, c] == 1 and lam[i, c] < -force_event:
+                if _PRIORITY[LIFT_OFF] < best:
+                    best = _PRIORITY[LIFT_OFF]
+                    found[0], found[1], found[2] = LIFT_OFF, i, c
+            if mode[i, c] == 0 and gap[i, c] < -gap_event and gap_velocity[i, c] < 0.0:
+                if _PRIORITY[IMPACT] < best:
+                    best = _PRIORITY[IMPACT]
+                    found[0], found[1], found[2] = IMPACT, i, c
+        sliding = sliding_codes[i]
+        if (sliding == 2 or sliding == 3) and not _engaged(sliding, slide[i], tol_slide):
+            sliding = 0
+        if mode[i, 2] == 1 and sliding != 1:
+            limit = mu_s[i] * (lam[i, 0] + lam[i, 1]) + force_event
+            tangential = lam[i, 2]
+            if (sliding != 2 and -tangential > limit) or (sliding != 3 and tangential > limit):
+                if _PRIORITY[SLIP] < best:
+                    best = _PRIORITY[SLIP]
+                    found[0], found[1], found[2] = SLIP, i, -1
+        reference = _reference(mode, i)
+        slip = slip_velocity[i, reference]
+        if directions[i] != 0 and directions[i] * slip < -1e-3 * tol_vel:
+            if _PRIORITY[SLIP_STOP] < best:
+                best = _PRIORITY[SLIP_STOP]
+                found[0], found[1], found[2] = SLIP_STOP, i, -1
+        code = sliding_codes[i]
+        if (code == 2 and slide[i] > tol_slide and slip > tol_vel) or (
+            code == 3 and slide[i] < -tol_slide and slip < -tol_vel
+        ):
+            if _PRIORITY[STOP_IMPACT] < best:
+                best = _PRIORITY[STOP_IMPACT]
+                found[0], found[1], found[2] = STOP_IMPACT, i, -1
+        if abs(rotation[i]) >= 0.5 * math.pi:
+            if _PRIORITY[OVERTURN] < best:
+                best = _PRIORITY[OVERTURN]
+                found[0], found[1], found[2] = OVERTURN, i, -1
+    return found[0] >= 0
+
+
+@nb.njit(cache=True)
+def _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, out):
+    """``out = M^-1 J^T (J M^-1 J^T)^-1 values``: the smallest correction in the mass metric.
+
+    Gaussian elimination with partial pivoting on the small symmetric system;
+    a rank-deficient system (redundant rows) falls back to least squares.
+    """
+    for r in range(m):
+        rhs[r] = values[r]
+        for s in range(r, m):
+            total = 0.0
+            for col in range(n):
+                total += rows[r, col] * inverse_mass[col] * rows[s, col]
+            system[r, s] = total
+            system[s, r] = total
+    scale = 0.0
+    for r in range(m):
+        scale = max(scale, abs(system[r, r]))
+    singular = False
+    for p in range(m):
+        pivot = p
+        largest = abs(system[p, p])
+        for r in range(p + 1, m):
+            if abs(system[r, p]) > largest:
+                largest = abs(system[r, p])
+                pivot = r
+        if largest <= 1e-12 * scale:
+            singular = True
+            break
+        if pivot != p:
+            for j in range(m):
+                tmp = system[p, j]
+                system[p, j] = system[pivot, j]
+                system[pivot, j] = tmp
+            tmp = rhs[p]
+            rhs[p] = rhs[pivot]
+            rhs[pivot] = tmp
+        for r in range(p + 1, m):
+            factor = system[r, p] / system[p, p]
+            if factor != 0.0:
+                for j in range(p + 1, m):
+                    system[r, j] -= factor * system[p, j]
+                rhs[r] -= factor * rhs[p]
+    if singular:
+        jac = rows[:m, :n].copy()
+        weighted = jac * inverse_mass[:n]
+        solution = np.linalg.lstsq(weighted @ jac.T, values[:m].copy())[0]
+        for r in range(m):
+            rhs[r] = solution[r]
+    else:
+        for p in range(m - 1, -1, -1):
+            total = rhs[p]
+            for j in range(p + 1, m):
+                total -= system[p, j] * rhs[j]
+            rhs[p] = total / system[p, p]
+    for col in range(n):
+        total = 0.0
+        for r in range(m):
+            total += rows[r, col] * rhs[r]
+        out[col] = inverse_mass[col] * total
+
+
+@nb.njit(cache=True)
+def _project(model, active, q, qd, mode, work, fstate):
+    """Put the closed contacts back on their surfaces (positions, then velocities).
+
+    Gauss-Newton in the mass metric (three iterations at most), then the
+    velocities projected onto the closed normals and the sticking tangents.
+    """
+    n = 3 * active
+    inverse_mass = model[1]
+    rows = work[21]
+    values = work[11]
+    system = work[10]
+    rhs = work[13]
+    correction = work[15]
+    for _ in range(3):
+        _kin(model, active, q, qd, work)
+        m = 0
+        largest = 0.0
+        for i in range(active):
+            for c in range(2):
+                if mode[i, c] == 1:
+                    for col in range(n):
+                        rows[m, col] = work[0][i, c, col]
+                    values[m] = work[4][i, c]
+                    if -values[m] > fstate[F_MAX_PENETRATION]:
+                        fstate[F_MAX_PENETRATION] = -values[m]
+                    largest = max(largest, abs(values[m]))
+                    m += 1
+        if m == 0:
+            return
+        if largest <= 1e-14:
+            break
+        _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, correction)
+        for col in range(n):
+            if abs(correction[col]) > fstate[F_MAX_PROJECTION]:
+                fstate[F_MAX_PROJECTION] = abs(correction[col])
+            q[col] -= correction[col]
+    _kin(model, active, q, qd, work)
+    m = 0
+    for i in range(active):
+        for c in range(2):
+            if mode[i, c] == 1:
+                for col in range(n):
+                    rows[m, col] = work[0][i, c, col]
+                m += 1
+        if mode[i, 2] == 1 and mode[i, 0] + mode[i, 1] > 0:
+            reference = _reference(mode, i)
+            for col in range(n):
+                rows[m, col] = work[2][i, reference, col]
+            m += 1
+    if m == 0:
+        return
+    for r in range(m):
+        total = 0.0
+        for col in range(n):
+            total += rows[r, col] * qd[col]
+        values[r] = total
+    _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, correction)
+    for col in range(n):
+        qd[col] -= correction[col]
+
+
+@nb.njit(cache=True)
+def _lower_contact(gap, i):
+    return 0 if gap[i, 0] <= gap[i, 1] else 1
+
+
+@nb.njit(cache=True)
+def _needs_impact(model, params, active, slide, work):
+    sliding_codes = model[5]
+    gap = work[4]
+    gap_velocity = work[5]
+    slip_velocity = work[6]
+    tol_gap = params[P_TOL_GAP]
+    tol_vel = params[P_TOL_VEL]
+    gap_event = params[P_GAP_EVENT]
+    for i in range(active):
+        for c in range(2):
+            approach = gap_velocity[i, c]
+            if gap[i, c] <= tol_gap and approach < -tol_vel:
+                return True
+            if gap[i, c] < -gap_event and approach < 0.0:
+                return True
+        code = sliding_codes[i]
+        engaged = _engaged(code, slide[i], params[P_TOL_SLIDE])
+        slip = slip_velocity[i, _lower_contact(gap, i)]
+        if engaged and ((code == 2 and slip > tol_vel) or (code == 3 and slip < -tol_vel)):
+            if min(gap[i, 0], gap[i, 1]) <= tol_gap:
+                return True
+    return False
+
+
+@nb.njit(cache=True)
+def _into_stop(model, params, active, slide, work):
+    """Whether a block at its engaged end stop still slides into it (kinematics in work)."""
+    sliding_codes = model[5]
+    tol_vel = params[P_TOL_VEL]
+    for i in range(active):
+        code = sliding_codes[i]
+        if not (code == 2 or code == 3):
+            continue
+        if not _engaged(code, slide[i], params[P_TOL_SLIDE]):
+            continue
+        slip = work[6][i, _lower_contact(work[4], i)]
+        if (code == 2 and slip > tol_vel) or (code == 3 and slip < -tol_vel):
+            return True
+    return False
+
+
+@nb.njit(cache=True)
+def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_qd):
+    """Velocity jump of an impact (the contact problem at velocity level); count or 0.
+
+    Returns the number of distinct admissible states (0: inconsistent). The
+    post-impact velocity is written to ``out_qd``; then each interface that
+    received an impulse has the velocity of its upper block relative to the
+    body below multiplied by its restitution factor (1: the plastic law).
+    """
+    n = 3 * active
+    mass = model[2]
+    mu_s = model[3]
+    mu_k = model[4]
+    sliding_codes = model[5]
+    restitution = model[6]
+    _kin(model, active, q, qd, work)
+    gap = work[4]
+    jn = work[0]
+    jt = work[2]
+    tol_gap = params[P_TOL_GAP]
+    tol_vel = params[P_TOL_VEL]
+    bn = np.empty((active, 2))
+    bt = np.empty((active, 2))
+    speed = tol_vel
+    for i in range(active):
+        for c in range(2):
+            vn = 0.0
+            vt = 0.0
+            for col in range(n):
+                vn += jn[i, c, col] * qd[col]
+                vt += jt[i, c, col] * qd[col]
+            bn[i, c] = vn
+            bt[i, c] = vt
+            speed = max(speed, abs(vn), abs(vt))
+    contact_active = np.empty((active, 2), dtype=np.bool_)
+    slip = np.zeros(active)
+    sliding = np.empty(active, dtype=np.int64)
+    total_mass = 0.0
+    for i in range(active):
+        total_mass += mass[3 * i]
+        contact_active[i, 0] = gap[i, 0] <= tol_gap
+        contact_active[i, 1] = gap[i, 1] <= tol_gap
+        code = sliding_codes[i]
+        engaged = _engaged(code, slide[i], params[P_TOL_SLIDE])
+        effective = code
+        if (code == 2 or code == 3) and not engaged:
+            effective = 0
+        sliding[i] = effective
+        s = work[6][i, _lower_contact(gap, i)]
+        direction = 1 if s > 0.0 else (-1 if s < 0.0 else 0)
+        allows = (
+            effective == 0
+            or (effective == 2 and direction < 0)
+            or (effective == 3 and direction > 0)
+        )
+        if allow_stick or abs(s) <= tol_vel or not allows:
+            s = 0.0
+        slip[i] = s
+    zero = np.zeros(n)
+    tiny = np.finfo(np.float64).tiny
+    force_tol = RELATIVE_TOLERANCE * max(total_mass * speed, tiny)
+    accel_tol = RELATIVE_TOLERANCE * max(speed, tiny)
+    modes = np.empty((MAX_DISTINCT, active, 3), dtype=np.int64)
+    jumps = np.empty((MAX_DISTINCT, n))
+    impulses = np.empty((MAX_DISTINCT, active, 3))
+    count = solve_contact_problem(
+        active, model[1], zero, jn, bn, jt, bt, contact_active, slip, sliding, mu_s,
+        mu_k, force_tol, accel_tol, modes, jumps, impulses,
+    )  # fmt: skip
+    istate[S_IMPACT_SOLVES] += 1
+    if count == 0:
+        return 0
+    if count > 1:
+        istate[S_AMBIGUOUS] += 1
+    chosen = 0
+    for k in range(min(count, MAX_DISTINCT)):
+        for c in range(n):
+            out_qd[c] = qd[c] + jumps[k, c]
+        _kin(model, active, q, out_qd, work)
+        if not _into_stop(model, params, active, slide, work):
+            chosen = k
+            break
+    for c in range(n):
+        out_qd[c] = qd[c] + jumps[chosen, c]
+    for i in range(active):
+        factor = restitution[i]
+        if factor == 1.0:
+            continue
+        impulse = abs(impulses[chosen, i, 0]) + abs(impulses[chosen, i, 1])
+        if impulse <= force_tol:
+            continue
+        for c in range(3):
+            lower = out_qd[3 * i - 3 + c] if i else 0.0
+            out_qd[3 * i + c] = lower + factor * (out_qd[3 * i + c] - lower)
+    return count
+
+
+@nb.njit(cache=True)
+def _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, directions):
+    """Solve the contact problem at a state and set the mode to hold; count (0: none)."""
+    n = 3 * active
+    mass = model[2]
+    mu_s = model[3]
+    mu_k = model[4]
+    sliding_codes = model[5]
+    a_h, a_v = _support(exc[0], exc[1], params[P_EXC_DT], t)
+    gravity = params[P_GRAVITY]
+    _kin(model, active, q, qd, work)
+    gap = work[4]
+    tol_gap = params[P_TOL_GAP]
+    tol_vel = params[P_TOL_VEL]
+    contact_active = np.empty((active, 2), dtype=np.bool_)
+    slip = np.zeros(active)
+    sliding = np.empty(active, dtype=np.int64)
+    total_mass = 0.0
+    for i in range(active):
+        total_mass += mass[3 * i]
+        for c in range(2):
+            contact_active[i, c] = gap[i, c] <= tol_gap and work[5][i, c] <= tol_vel
+        code = sliding_codes[i]
+        s = work[6][i, _lower_contact(gap, i)]
+        if abs(s) <= tol_vel or code == 1:
+            s = 0.0
+        slip[i] = s
+        engaged = _engaged(code, slide[i], params[P_TOL_SLIDE])
+        sliding[i] = 0 if ((code == 2 or code == 3) and not engaged) else code
+    free = np.empty(n)
+    _free_acceleration(model, active, a_h, a_v, gravity, free)
+    scale = max(math.hypot(a_h, gravity - a_v), 1e-12)
+    tiny = np.finfo(np.float64).tiny
+    force_tol = RELATIVE_TOLERANCE * max(total_mass * scale, tiny)
+    accel_tol = RELATIVE_TOLERANCE * max(scale, tiny)
+    modes = np.empty((MAX_DISTINCT, active, 3), dtype=np.int64)
+    qdds = np.empty((MAX_DISTINCT, n))
+    forces = np.empty((MAX_DISTINCT, active, 3))
+    count = solve_contact_problem(
+        active, model[1], free, work[0], work[1], work[2], work[3], contact_active, slip,
+        sliding, mu_s, mu_k, force_tol, accel_tol, modes, qdds, forces,
+    )  # fmt: skip
+    istate[S_CONTACT_SOLVES] += 1
+    if count == 0:
+        return 0
+    if count > 1:
+        istate[S_AMBIGUOUS] += 1
+    for i in range(active):
+        mode[i, 0] = modes[0, i, 0]
+        mode[i, 1] = modes[0, i, 1]
+        tangential = modes[0, i, 2]
+        if tangential == 4:
+            tangential = 2 if slip[i] > 0.0 else 3
+        mode[i, 2] = tangential
+        directions[i] = 1 if tangential == 2 else (-1 if tangential == 3 else 0)
+    return count
+
+
+@nb.njit(cache=True)
+def _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode, directions,
+            uplift, free_flight, result):  # fmt: skip
+    """Impact if needed, then the mode to hold, then the projection.
+
+    ``result`` (3,) int: [failure code, impact kind (0 none, IMPACT,
+    TANGENTIAL_IMPACT), solve count of the selection].
+    """
+    result[0] = NO_FAILURE
+    result[1] = 0
+    result[2] = 0
+    n = 3 * active
+    new_qd = np.empty(n)
+    _kin(model, active, q, qd, work)
+    if _needs_impact(model, params, active, slide, work):
+        if _impact(model, params, active, q, qd, slide, False, work, istate, new_qd) == 0:
+            result[0] = IMPACT_INCONSISTENT
+            return
+        qd[:n] = new_qd
+        result[1] = IMPACT
+    count = _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, directions)
+    if count == 0:
+        # no consistent sliding state (Painleve-type): a tangential impact at
+        # velocity level, in which the sliding contacts may stick
+        if _impact(model, params, active, q, qd, slide, True, work, istate, new_qd) == 0:
+            result[0] = CONTACT_INCONSISTENT
+            return
+        qd[:n] = new_qd
+        result[1] = TANGENTIAL_IMPACT
+        count = _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, directions)
+        if count == 0:
+            result[0] = CONTACT_INCONSISTENT_AFTER
+            return
+    result[2] = count
+    _project(model, active, q, qd, mode, work, fstate)
+    for i in range(active):
+        closed = mode[i, 0] + mode[i, 1]
+        if closed < 2:
+            uplift[i] = True
+        if closed == 0 and i > 0:
+            free_flight[i] = True
+
+
+@nb.njit(cache=True)
+def _motion_code(mode, i):
+    closed = mode[i, 0] + mode[i, 1]
+    sliding = mode[i, 2] >= 2
+    if closed == 2:
+        return 1 if sliding else 0
+    if closed == 1:
+        return 3 if sliding else 2
+    return 4
+
+
+@nb.njit(cache=True)
+def _overturned_after(model, params, active, qd, work):
+    """Lowest block past its overturning angle that cannot come back (-1 if none)."""
+    geometry = model[0]
+    mass = model[2]
+    base = model[7]
+    gravity = params[P_GRAVITY]
+    for i in range(active):
+        rotation = work[7][i]
+        omega = qd[3 * i + 2] - (qd[3 * i - 1] if i else 0.0)
+        height = geometry[i, 1] - base[i, 2]
+        if rotation > 0.0:
+            lever = geometry[i, 0] - base[i, 0]
+            away = omega >= 0.0
+        else:
+            lever = base[i, 1] - geometry[i, 0]
+            away = omega <= 0.0
+        critical = math.atan2(lever, height)
+        if abs(rotation) <= critical:
+            continue
+        radius = math.hypot(lever, height)
+        inertia = 1.0 / model[1][3 * i + 2] + mass[3 * i] * radius**2
+        barrier = mass[3 * i] * gravity * radius * (1.0 - math.cos(abs(rotation) - critical))
+        if away or 0.5 * inertia * omega**2 < barrier:
+            return i
+    return -1
+
+
+@nb.njit(cache=True)
+def _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight):
+    row = istate[S_ROWS]
+    rec_time, rec_q, rec_qd, rec_normal, rec_tangential, rec_rotation, rec_slide = rec
+    rec_time[row] = t
+    gap = work[4]
+    for i in range(count):
+        if i < active:
+            top = max(gap[i, 0], gap[i, 1])
+            low = min(gap[i, 0], gap[i, 1])
+            if top > max_lift[i]:
+                max_lift[i] = top
+            if low > max_flight[i]:
+                max_flight[i] = low
+            for c in range(3):
+                rec_q[row, i, c] = q[3 * i + c]
+                rec_qd[row, i, c] = qd[3 * i + c]
+            rec_normal[row, i, 0] = lam[i, 0]
+            rec_normal[row, i, 1] = lam[i, 1]
+            rec_tangential[row, i] = lam[i, 2]
+            rec_rotation[row, i] = work[7][i]
+            rec_slide[row, i] = slide[i]
+        else:
+            for c in range(3):
+                rec_q[row, i, c] = np.nan
+                rec_qd[row, i, c] = np.nan
+            rec_normal[row, i, 0] = np.nan
+            rec_normal[row, i, 1] = np.nan
+            rec_tangential[row, i] = np.nan
+            rec_rotation[row, i] = np.nan
+            rec_slide[row, i] = np.nan
+    istate[S_ROWS] = row + 1
+
+
+@nb.njit(cache=True)
+def _event(t, kind, interface, contact, status, active_before, active_after, mode, qd_before,
+           qd_after, count, ev, istate):  # fmt: skip
+    """Append an event; motions of the first ``active_after`` blocks from ``mode``."""
+    e = istate[S_EVENTS]
+    ev_time, ev_code, ev_motion, ev_before, ev_after = ev
+    ev_time[e] = t
+    ev_code[e, 0] = kind
+    ev_code[e, 1] = interface
+    ev_code[e, 2] = contact
+    ev_code[e, 3] = status
+    ev_code[e, 4] = active_before
+    ev_code[e, 5] = active_after
+    for i in range(count):
+        ev_motion[e, i] = _motion_code(mode, i) if i < active_after else 5
+        for c in range(3):
+            ev_before[e, i, c] = qd_before[3 * i + c] if i < active_before else np.nan
+            ev_after[e, i, c] = qd_after[3 * i + c] if i < active_after else np.nan
+    istate[S_EVENTS] = e + 1
+
+
+@nb.njit(cache=True)
+def _next_end(t, params, breaks, istate, h_cap):
+    """End of the next step: the next break point after ``t``, or ``t + h_cap``, or the end."""
+    end = params[P_END]
+    k = istate[S_BREAK]
+    while k < breaks.shape[0] and breaks[k] <= t + 1e-6 * h_cap:
+        k += 1
+    istate[S_BREAK] = k
+    target = t + h_cap
+    if k < breaks.shape[0] and breaks[k] < target:
+        target = breaks[k]
+    return min(target, end)
+
+
+@nb.njit(cache=True)
+def _margin(model, params, mode, directions, lam, slide, work, kind, i, c):
+    """Signed distance to an event's condition (positive: not fired), for locating it.
+
+    The event functions of :func:`_fired`: a closed contact's normal force,
+    an open contact's gap, the friction margin of a sticking interface, a
+    sliding interface's slip velocity, the slide past an end stop, the
+    rotation to pi/2.
+    """
+    if kind == LIFT_OFF:
+        return lam[i, c] + params[P_FORCE_EVENT]
+    if kind == IMPACT:
+        return work[4][i, c] + params[P_GAP_EVENT]
+    if kind == SLIP:
+        sliding = model[5][i]
+        if (sliding == 2 or sliding == 3) and not _engaged(sliding, slide[i], params[P_TOL_SLIDE]):
+            sliding = 0
+        limit = model[3][i] * (lam[i, 0] + lam[i, 1]) + params[P_FORCE_EVENT]
+        tangential = lam[i, 2]
+        worst = -math.inf
+        if sliding != 2:
+            worst = max(worst, -tangential)
+        if sliding != 3:
+            worst = max(worst, tangential)
+        return limit - worst
+    if kind == SLIP_STOP:
+        slip = work[6][i, _reference(mode, i)]
+        return directions[i] * slip + 1e-3 * params[P_TOL_VEL]
+    if kind == STOP_IMPACT:
+        if model[5][i] == 2:
+            return params[P_TOL_SLIDE] - slide[i]
+        return slide[i] + params[P_TOL_SLIDE]
+    return 0.5 * math.pi - abs(work[7][i])
+
+
+@nb.njit(cache=True)
+def _hermite(active, q0, v0, a0, s0, r0, q1, v1, a1, s1, r1, h, s, out_q, out_v, out_s):
+    """State at ``s`` (fraction of the step) on the step's Hermite interpolants.
+
+    Quintic in the coordinates (position, velocity and acceleration at both
+    ends), its derivative for the velocities, cubic for the slides (slide and
+    slide rate at both ends).
+    """
+    s2 = s * s
+    s3 = s2 * s
+    s4 = s3 * s
+    s5 = s4 * s
+    h0 = 1.0 - 10.0 * s3 + 15.0 * s4 - 6.0 * s5
+    h1 = s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5
+    h2 = 0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5
+    h3 = 0.5 * s3 - s4 + 0.5 * s5
+    h4 = -4.0 * s3 + 7.0 * s4 - 3.0 * s5
+    h5 = 10.0 * s3 - 15.0 * s4 + 6.0 * s5
+    d0 = -30.0 * s2 + 60.0 * s3 - 30.0 * s4
+    d1 = 1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4
+    d2 = s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4
+    d3 = 1.5 * s2 - 4.0 * s3 + 2.5 * s4
+    d4 = -12.0 * s2 + 28.0 * s3 - 15.0 * s4
+    d5 = 30.0 * s2 - 60.0 * s3 + 30.0 * s4
+    hh = h * h
+    for c in range(3 * active):
+        out_q[c] = h0 * q0[c] + h1 * h * v0[c] + h2 * hh * a0[c] + h3 * hh * a1[c]
+        out_q[c] += h4 * h * v1[c] + h5 * q1[c]
+        out_v[c] = (d0 * q0[c] + d1 * h * v0[c] + d2 * hh * a0[c] + d3 * hh * a1[c]
+                    + d4 * h * v1[c] + d5 * q1[c]) / h  # fmt: skip
+    c0 = 1.0 - 3.0 * s2 + 2.0 * s3
+    c1 = s - 2.0 * s2 + s3
+    c2 = -s2 + s3
+    c3 = 3.0 * s2 - 2.0 * s3
+    for i in range(active):
+        out_s[i] = c0 * s0[i] + c1 * h * r0[i] + c2 * h * r1[i] + c3 * s1[i]
+
+
+@nb.njit(cache=True)
+def _stuck_below(active, mode, qd):
+    """Number of bottom blocks that stick to the support and do not move.
+
+    Their coordinates are not integrated during a step (the RK4 stages solve
+    the blocks above them only); the full system is evaluated at the step's
+    end, where their own events (lift-off, slip) are checked.
+    """
+    first = 0
+    while first < active:
+        if mode[first, 0] != 1 or mode[first, 1] != 1 or mode[first, 2] != 1:
+            break
+        moving = False
+        for c in range(3 * first, 3 * first + 3):
+            if abs(qd[c]) > 1e-9:
+                moving = True
+        if moving:
+            break
+        first += 1
+    return first
+
+
+@nb.njit(cache=True)
+def _at_rest(active, mode, qd):
+    """Whether every interface sticks with both contacts closed and nothing moves."""
+    for i in range(active):
+        if mode[i, 0] != 1 or mode[i, 1] != 1 or mode[i, 2] != 1:
+            return False
+    for c in range(3 * active):
+        if abs(qd[c]) > 1e-9:
+            return False
+    return True
+
+
+@nb.njit(cache=True)
+def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, mode, directions,
+        istate, fstate, flags, rec, ev):  # fmt: skip
+    """Advance the simulation until the end, a failure, full buffers or ``chunk_end``.
+
+    Resumable: every piece of the loop's state lives in the arguments
+    (``q``, ``qd`` (3 B), ``slide`` (B), the held ``mode`` (B, 3) and
+    slide ``directions`` (B), ``istate``/``fstate`` counters, ``flags``
+    (uplift, free flight, overturned as floats, overturn time, max lift,
+    max flight: (6, B))). Returns the outcome code.
+    """
+    count = model[0].shape[0]
+    work = _work(count)
+    n_full = 3 * count
+    lam = np.zeros((count, 3))
+    qdd = np.zeros(n_full)
+    qdd1 = np.zeros(n_full)
+    q1 = np.zeros(n_full)
+    qd1 = np.zeros(n_full)
+    slide1 = np.zeros(count)
+    qm = np.zeros(n_full)
+    qdm = np.zeros(n_full)
+    slide_m = np.zeros(count)
+    lam1 = np.zeros((count, 3))
+    lam2 = np.zeros((count, 3))
+    lam_lo = np.zeros((count, 3))
+    lam_hi = np.zeros((count, 3))
+    rates_s = np.zeros(count)
+    q_end = np.zeros(n_full)
+    qd_end = np.zeros(n_full)
+    a_end = np.zeros(n_full)
+    slide_end = np.zeros(count)
+    rate_end = np.zeros(count)
+    found = np.zeros(3, dtype=np.int64)
+    found_m = np.zeros(3, dtype=np.int64)
+    settle = np.zeros(3, dtype=np.int64)
+    velocity_before = np.zeros(n_full)
+    uplift = np.zeros(count, dtype=np.bool_)
+    free_flight = np.zeros(count, dtype=np.bool_)
+    for i in range(count):
+        uplift[i] = flags[0, i] > 0.5
+        free_flight[i] = flags[1, i] > 0.5
+    max_lift = flags[4]
+    max_flight = flags[5]
+    rows_capacity = rec[0].shape[0]
+    events_capacity = ev[0].shape[0]
+    end = params[P_END]
+    time_tol = params[P_TIME_TOL]
+    exc_end = params[P_EXC_END]
+    active = istate[S_ACTIVE]
+    t = fstate[F_TIME]
+    for i in range(count):
+        work[17][i, 0] = model[4][i]
+        work[17][i, 1] = 0.0
+    if istate[S_STARTED] == 0:
+        if rows_capacity < 4 or events_capacity < 4:
+            return BUFFER_FULL
+        istate[S_STARTED] = 1
+        velocity_before[:] = qd
+        _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
+                directions, uplift, free_flight, settle)  # fmt: skip
+        if settle[0] != NO_FAILURE:
+            istate[S_FAILURE] = settle[0]
+            istate[S_STATUS] = FAILED
+            return FAILED
+        status = 1 if settle[2] > 1 else 0
+        if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
+            istate[S_FAILURE] = SINGULAR_MODE
+            istate[S_STATUS] = FAILED
+            return FAILED
+        _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
+        _event(t, START, -1, -1, status, active, active, mode, velocity_before, qd, count, ev,
+               istate)  # fmt: skip
+        if settle[1] != 0:
+            _event(t, settle[1], -1, -1, status, active, active, mode, velocity_before, qd,
+                   count, ev, istate)  # fmt: skip
+    else:
+        if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
+            istate[S_FAILURE] = SINGULAR_MODE
+            istate[S_STATUS] = FAILED
+            return FAILED
+    _slide_rate(active, mode, work[6], rates_s)
+    outcome = RUNNING
+    while active > 0 and t < end - 1e-12 * max(end, 1.0):
+        if t >= chunk_end:
+            outcome = CHUNK_DONE
+            break
+        if istate[S_ROWS] + 4 > rows_capacity or istate[S_EVENTS] + 4 > events_capacity:
+            outcome = BUFFER_FULL
+            break
+        n = 3 * active
+        h = _next_end(t, params, breaks, istate, h_cap) - t
+        if h <= 1e-3 * time_tol:
+            h = h_cap
+        resting = _at_rest(active, mode, qd)
+        first = _stuck_below(active, mode, qd)
+        if resting:
+            # the whole stack moves with the support: nothing moves in its frame and the
+            # forces are linear in the support accelerations, hence in time between two
+            # break points; only the end of the segment is evaluated
+            q1[:n] = q[:n]
+            qd1[:n] = qd[:n]
+            slide1[:active] = slide[:active]
+        elif not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, qdd, rates_s, work,
+                      q1, qd1, slide1, lam1, first):  # fmt: skip
+            istate[S_FAILURE] = SINGULAR_MODE
+            outcome = FAILED
+            break
+        if not _evaluate(model, exc, params, active, t + h, q1, qd1, mode, work, qdd1, lam1):
+            istate[S_FAILURE] = SINGULAR_MODE
+            outcome = FAILED
+            break
+        if resting:
+            qdd1[:n] = 0.0
+        if not _fired(model, params, active, mode, directions, lam1, slide1, work, found):
+            t += h
+            qdd[:n] = qdd1[:n]
+            q[:n] = q1[:n]
+            qd[:n] = qd1[:n]
+            slide[:active] = slide1[:active]
+            lam[:active] = lam1[:active]
+            _slide_rate(active, mode, work[6], rates_s)
+            istate[S_STEPS] += 1
+            drift = 0.0
+            for i in range(active):
+                for c in range(2):
+                    if mode[i, c] == 1:
+                        drift = max(drift, abs(work[4][i, c]))
+            if drift > 1e-3 * params[P_TOL_GAP]:
+                _project(model, active, q, qd, mode, work, fstate)
+                if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
+                    istate[S_FAILURE] = SINGULAR_MODE
+                    outcome = FAILED
+                    break
+                _slide_rate(active, mode, work[6], rates_s)
+            _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
+            if t >= exc_end:
+                index = _overturned_after(model, params, active, qd, work)
+                if index >= 0:
+                    velocity_before[:n] = qd[:n]
+                    for j in range(index, count):
+                        if flags[2, j] < 0.5:
+                            flags[2, j] = 1.0
+                            flags[3, j] = t
+                    _event(t, OVERTURN, index, -1, 0, active, index, mode, velocity_before,
+                           qd, count, ev, istate)  # fmt: skip
+                    active = index
+                    istate[S_ACTIVE] = active
+                    if active == 0:
+                        break
+                    velocity_before[: 3 * active] = qd[: 3 * active]
+                    _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate,
+                            mode, directions, uplift, free_flight, settle)  # fmt: skip
+                    if settle[0] != NO_FAILURE:
+                        istate[S_FAILURE] = settle[0]
+                        outcome = FAILED
+                        break
+                    if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
+                        istate[S_FAILURE] = SINGULAR_MODE
+                        outcome = FAILED
+                        break
+                    _slide_rate(active, mode, work[6], rates_s)
+            continue
+        # locate the earliest event to time_tol: a bracket [low, high] (not fired,
+        # fired) cut by the Illinois variant of regula falsi on the event's
+        # function (bisection while that function is not known on both sides)
+        low = 0.0
+        high = h
+        failed = False
+        if resting:
+            # the earliest crossing of a force margin: linear between the excitation's
+            # samples, so the segment is first narrowed to the samples around it
+            seg_lo = 0.0
+            seg_hi = h
+            lam_lo[:active] = lam[:active]
+            lam_hi[:active] = lam1[:active]
+            dt_exc = params[P_EXC_DT]
+            k_sample = math.floor(t / dt_exc + 1e-9) + 1
+            while k_sample * dt_exc < t + h - 1e-6 * time_tol:
+                tm = k_sample * dt_exc - t
+                _evaluate(model, exc, params, active, t + tm, q, qd, mode, work, qdd1, lam2)
+                if _fired(model, params, active, mode, directions, lam2, slide, work, found_m):
+                    seg_hi = tm
+                    lam_hi[:active] = lam2[:active]
+                    break
+                seg_lo = tm
+                lam_lo[:active] = lam2[:active]
+                k_sample += 1
+            earliest = seg_hi
+            for i in range(active):
+                for kind in (LIFT_OFF, SLIP):
+                    for c in range(2 if kind == LIFT_OFF else 1):
+                        g1 = _margin(model, params, mode, directions, lam_hi, slide, work, kind,
+                                     i, c if kind == LIFT_OFF else -1)  # fmt: skip
+                        if g1 >= 0.0:
+                            continue
+                        g0 = _margin(model, params, mode, directions, lam_lo, slide, work, kind,
+                                     i, c if kind == LIFT_OFF else -1)  # fmt: skip
+                        crossing = seg_lo
+                        if g0 > 0.0:
+                            crossing = seg_lo + (seg_hi - seg_lo) * g0 / (g0 - g1)
+                        earliest = min(earliest, crossing)
+            low = max(0.0, earliest - time_tol)
+            high = min(h, earliest + time_tol)
+            located = False
+            if low > 0.0:
+                _evaluate(model, exc, params, active, t + low, q, qd, mode, work, qdd1, lam1)
+                if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
+                    # the margins were not linear over the segment: search [0, low]
+                    high = low
+                    low = 0.0
+                    found[:] = found_m
+                    located = True
+            if not located and high < h:
+                _evaluate(model, exc, params, active, t + high, q, qd, mode, work, qdd1, lam1)
+                if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
+                    # located to the tolerance; events crossing within it are taken as
+                    # simultaneous (reported by priority, as at a jump of the excitation)
+                    found[:] = found_m
+                    low = max(0.0, high - 0.5 * time_tol)
+                else:
+                    low = high
+                    high = h
+        if resting:
+            # a bracket of at most twice the tolerance: bisection
+            g_high = -1.0
+            g_low = math.nan
+        else:
+            g_high = _margin(model, params, mode, directions, lam1, slide1, work, found[0],
+                             found[1], found[2])  # fmt: skip
+            # the step's end, for the interpolant below
+            q_end[:n] = q1[:n]
+            qd_end[:n] = qd1[:n]
+            a_end[:n] = qdd1[:n]
+            slide_end[:active] = slide1[:active]
+            _slide_rate(active, mode, work[6], rate_end)
+            _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd1, lam1)
+            g_low = _margin(model, params, mode, directions, lam1, slide, work, found[0],
+                            found[1], found[2])  # fmt: skip
+            if g_low > 0.0 and g_high < 0.0:
+                # the event's time on the step's quintic Hermite interpolant (positions,
+                # velocities and accelerations at both ends): one evaluation per trial;
+                # then a bracket of true RK4 states around it, checked
+                a = 0.0
+                b = h
+                ga = g_low
+                gb = g_high
+                last = 0
+                for _ in range(40):
+                    if b - a <= 0.1 * time_tol:
+                        break
+                    x = a + ga * (b - a) / (ga - gb)
+                    x = min(max(x, a + 0.01 * time_tol), b - 0.01 * time_tol)
+                    _hermite(active, q, qd, qdd, slide, rates_s, q_end, qd_end, a_end,
+                             slide_end, rate_end, h, x / h, qm, qdm, slide_m)  # fmt: skip
+                    _evaluate(model, exc, params, active, t + x, qm, qdm, mode, work, qdd1,
+                              lam1)  # fmt: skip
+                    gx = _margin(model, params, mode, directions, lam1, slide_m, work,
+                                 found[0], found[1], found[2])  # fmt: skip
+                    if gx < 0.0:
+                        b = x
+                        gb = gx
+                        if last == 1:
+                            ga *= 0.5
+                        last = 1
+                    else:
+                        a = x
+                        ga = gx
+                        if last == -1:
+                            gb *= 0.5
+                        last = -1
+                upper = min(h, b + 0.45 * time_tol)
+                lower = max(0.0, upper - 0.9 * time_tol)
+                if upper < high and lower > low:
+                    ok = _rk4(model, exc, params, active, t, q, qd, slide, upper, mode, qdd,
+                              rates_s, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
+                    ok = ok and _evaluate(model, exc, params, active, t + upper, qm, qdm,
+                                          mode, work, qdd1, lam1)  # fmt: skip
+                    if ok and _fired(model, params, active, mode, directions, lam1, slide_m,
+                                     work, found_m):  # fmt: skip
+                        high = upper
+                        q1[:n] = qm[:n]
+                        qd1[:n] = qdm[:n]
+                        slide1[:active] = slide_m[:active]
+                        if (found_m[0] != found[0] or found_m[1] != found[1]
+                                or found_m[2] != found[2]):  # fmt: skip
+                            g_low = math.nan
+                        found[:] = found_m
+                        g_high = _margin(model, params, mode, directions, lam1, slide_m, work,
+                                         found[0], found[1], found[2])  # fmt: skip
+                        ok = _rk4(model, exc, params, active, t, q, qd, slide, lower, mode,
+                                  qdd, rates_s, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
+                        ok = ok and _evaluate(model, exc, params, active, t + lower, qm, qdm,
+                                              mode, work, qdd1, lam1)  # fmt: skip
+                        if ok and not _fired(model, params, active, mode, directions, lam1,
+                                             slide_m, work, found_m):  # fmt: skip
+                            low = lower
+                            g_low = _margin(model, params, mode, directions, lam1, slide_m,
+                                            work, found[0], found[1], found[2])  # fmt: skip
+                        elif ok:
+                            high = lower
+                            q1[:n] = qm[:n]
+                            qd1[:n] = qdm[:n]
+                            slide1[:active] = slide_m[:active]
+                            found[:] = found_m
+                            g_low = math.nan
+                    elif ok:
+                        low = upper
+                        g_low = _margin(model, params, mode, directions, lam1, slide_m, work,
+                                        found[0], found[1], found[2])  # fmt: skip
+        side = 0
+        while high - low > time_tol:
+            width = high - low
+            if g_low > 0.0 and g_high < 0.0:
+                middle = low + g_low * width / (g_low - g_high)
+                middle = min(max(middle, low + 0.01 * time_tol), high - 0.01 * time_tol)
+            else:
+                middle = 0.5 * (low + high)
+            if not _rk4(model, exc, params, active, t, q, qd, slide, middle, mode, qdd, rates_s,
+                        work, qm, qdm, slide_m, lam1, first):  # fmt: skip
+                failed = True
+                break
+            if not _evaluate(model, exc, params, active, t + middle, qm, qdm, mode, work, qdd1,
+                             lam1):  # fmt: skip
+                failed = True
+                break
+            if _fired(model, params, active, mode, directions, lam1, slide_m, work, found_m):
+                high = middle
+                q1[:n] = qm[:n]
+                qd1[:n] = qdm[:n]
+                slide1[:active] = slide_m[:active]
+                if found_m[0] != found[0] or found_m[1] != found[1] or found_m[2] != found[2]:
+                    g_low = math.nan  # another event: its function is not known at low
+                    side = 0
+                found[:] = found_m
+                g_high = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
+                                 found[1], found[2])  # fmt: skip
+                if side == 1:
+                    g_low *= 0.5
+                side = 1
+            else:
+                low = middle
+                g_low = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
+                                found[1], found[2])  # fmt: skip
+                if side == -1:
+                    g_high *= 0.5
+                side = -1
+        if failed:
+            istate[S_FAILURE] = SINGULAR_MODE
+            outcome = FAILED
+            break
+        q[:n] = q1[:n]
+        qd[:n] = qd1[:n]
+        slide[:active] = slide1[:active]
+        t += high
+        istate[S_STEPS] += 1
+        if high <= 2.0 * time_tol:
+            istate[S_STALLED] += 1
+        else:
+            istate[S_STALLED] = 0
+        if istate[S_STALLED] > 50:
+            istate[S_FAILURE] = STALLED
+            outcome = FAILED
+            break
+        # state at the event (kinematics and forces of the held mode)
+        _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam)
+        _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
+        kind = found[0]
+        interface = found[1]
+        contact = found[2]
+        velocity_before[:n] = qd[:n]
+        before = active
+        if kind == OVERTURN:
+            for j in range(interface, count):
+                if flags[2, j] < 0.5:
+                    flags[2, j] = 1.0
+                    flags[3, j] = t
+            active = interface
+            istate[S_ACTIVE] = active
+            if active == 0:
+                _event(t, kind, interface, contact, 0, before, 0, mode, velocity_before, qd,
+                       count, ev, istate)  # fmt: skip
+                break
+        _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
+                directions, uplift, free_flight, settle)  # fmt: skip
+        if settle[0] != NO_FAILURE:
+            istate[S_FAILURE] = settle[0]
+            outcome = FAILED
+            break
+        impacted = settle[1]
+        if impacted == TANGENTIAL_IMPACT or (
+            impacted != 0 and kind != IMPACT and kind != STOP_IMPACT and kind != OVERTURN
+        ):
+            kind = impacted
+        _event(t, kind, interface, contact, 1 if settle[2] > 1 else 0, before, active, mode,
+               velocity_before, qd, count, ev, istate)  # fmt: skip
+        if istate[S_EVENTS] > max_events:
+            istate[S_FAILURE] = TOO_MANY_EVENTS
+            outcome = FAILED
+            break
+        if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
+            istate[S_FAILURE] = SINGULAR_MODE
+            outcome = FAILED
+            break
+        _slide_rate(active, mode, work[6], rates_s)
+        _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
+    fstate[F_TIME] = t
+    istate[S_ACTIVE] = active
+    for i in range(count):
+        flags[0, i] = 1.0 if uplift[i] else 0.0
+        flags[1, i] = 1.0 if free_flight[i] else 0.0
+    if outcome == RUNNING:
+        outcome = COMPLETED
+    istate[S_STATUS] = outcome
+    return outcome
+
+
+@nb.njit(cache=True)
+def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, force_g, coeff,
+                matrix, rhs, qdd, lam, first=0):  # fmt: skip
+    """Forces and accelerations of a held mode, without the contact accelerations.
+
+    The unknowns ``x_j`` are the closed contacts' normal forces and the
+    sticking interfaces' tangential forces; each acts along
+    ``G_j = J_j + c_j J_t`` (``c_j = -d mu`` carries a sliding interface's
+    friction). Equations: zero gap acceleration at the closed contacts and
+    zero slip acceleration at the sticking interfaces,
+    ``sum_j (J_r M^-1 G_j^T) x_j = -(J_r M^-1 f + b_r)``; then
+    ``qdd = M^-1 (f + sum_j G_j^T x_j)``. ``row_j``, ``force_g`` (3 B, 3 B)
+    work arrays. Returns False when singular.
+
+    With ``first`` > 0 the blocks below ``first`` are held fixed (they stick to
+    the support, nothing moves): only the interfaces from ``first`` up and
+    the coordinates of their upper blocks take part; the others get no
+    acceleration and their forces are not computed (zero).
+    """
+    n = 3 * active
+    c0 = 3 * first
+    k = 0
+    for i in range(active):
+        lam[i, 0] = 0.0
+        lam[i, 1] = 0.0
+        lam[i, 2] = 0.0
+    for i in range(first, active):
+        tangential = mode[i, 2]
+        reference = 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
+        direction = 0.0
+        if tangential == 2:
+            direction = 1.0
+        elif tangential == 3:
+            direction = -1.0
+        c_slide = -direction * mu[i, 0]
+        for side in range(2):
+            if mode[i, side] == 1:
+                total = bn[i, side]
+                for col in range(c0, n):
+                    value = jn[i, side, col]
+                    row_j[k, col] = value
+                    force_g[k, col] = inverse_mass[col] * (value + c_slide * jt[i, reference, col])
+                    total += value * free[col]
+                rhs[k] = -total
+                coeff[k] = 3 * i + side
+                k += 1
+        if tangential == 1:
+            total = bt[i, reference]
+            for col in range(c0, n):
+                value = jt[i, reference, col]
+                row_j[k, col] = value
+                force_g[k, col] = inverse_mass[col] * value
+                total += value * free[col]
+            rhs[k] = -total
+            coeff[k] = 3 * i + 2
+            k += 1
+    for r in range(k):
+        for j in range(k):
+            total = 0.0
+            for col in range(c0, n):
+                total += row_j[r, col] * force_g[j, col]
+            matrix[r, j] = total
+    for p in range(k):
+        pivot = p
+        largest = abs(matrix[p, p])
+        for r in range(p + 1, k):
+            if abs(matrix[r, p]) > largest:
+                largest = abs(matrix[r, p])
+                pivot = r
+        if largest == 0.0:
+            return False
+        if pivot != p:
+            for j in range(k):
+                tmp = matrix[p, j]
+                matrix[p, j] = matrix[pivot, j]
+                matrix[pivot, j] = tmp
+            tmp = rhs[p]
+            rhs[p] = rhs[pivot]
+            rhs[pivot] = tmp
+        for r in range(p + 1, k):
+            factor = matrix[r, p] / matrix[p, p]
+            if factor != 0.0:
+                for j in range(p + 1, k):
+                    matrix[r, j] -= factor * matrix[p, j]
+                rhs[r] -= factor * rhs[p]
+    for p in range(k - 1, -1, -1):
+        total = rhs[p]
+        for j in range(p + 1, k):
+            total -= matrix[p, j] * rhs[j]
+        rhs[p] = total / matrix[p, p]
+    for c in range(n):
+        qdd[c] = free[c] if c >= c0 else 0.0
+    for j in range(k):
+        x = rhs[j]
+        slot = int(coeff[j])
+        i = slot // 3
+        kind = slot % 3
+        lam[i, kind] += x
+        if kind < 2:
+            tangential = mode[i, 2]
+            if tangential == 2:
+                lam[i, 2] -= mu[i, 0] * x
+            elif tangential == 3:
+                lam[i, 2] += mu[i, 0] * x
+        for col in range(c0, n):
+            qdd[col] += force_g[j, col] * x
+    return True

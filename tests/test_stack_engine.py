@@ -1,0 +1,168 @@
+"""Tests of the compiled stack engine (freestand.core.stack_engine) behind the general path."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from freestand.core import stack_engine as engine
+from freestand.core.contact import Tangential, solve_contact
+from freestand.core.model import Block, Friction, Sliding, Stack
+from freestand.core.timehistory import (
+    ContactTolerances,
+    SupportMotion,
+    contact_problem_in_motion,
+    engine_model,
+    record_breaks,
+    simulate,
+    stack_kinematics,
+)
+from tests.strategies import stacks
+
+G = 9.81
+_CODES = {Sliding.FREE: 0, Sliding.NONE: 1, Sliding.NO_RIGHT: 2, Sliding.NO_LEFT: 3}
+_TANGENTIAL = {
+    Tangential.FREE: 0,
+    Tangential.STICK: 1,
+    Tangential.SLIDE_POSITIVE: 2,
+    Tangential.SLIDE_NEGATIVE: 3,
+    Tangential.KINETIC: 4,
+}
+
+
+def rectangle(half_width=0.2, height=1.2, mass=100.0, static=0.8, kinetic=None) -> Block:
+    kinetic = static if kinetic is None else kinetic
+    return Block(
+        "block",
+        mass,
+        mass * (4 * half_width**2 + height**2) / 12.0,
+        (0.0, 0.5 * height),
+        -half_width,
+        half_width,
+        0.0,
+        Friction(static, kinetic),
+    )
+
+
+def compiled_solve(stack: Stack, q, qd, inertial: float, vertical: float):
+    """The engine's contact solve on the problem ``contact_problem_in_motion`` builds."""
+    problem = contact_problem_in_motion(stack, q, qd, inertial, vertical)
+    count = len(stack.blocks)
+    model = engine_model(stack, np.ones(count))
+    kin = stack_kinematics(stack, q, qd)
+    free = np.zeros(3 * count)
+    free[0::3] = inertial
+    free[1::3] = -(G - vertical)
+    active = np.array([interface.active for interface in problem.interfaces], dtype=bool)
+    slip = np.array([interface.slip_velocity for interface in problem.interfaces])
+    sliding = np.array(
+        [_CODES[interface.effective_sliding()] for interface in problem.interfaces],
+        dtype=np.int64,
+    )
+    force_tol = engine.RELATIVE_TOLERANCE * problem.force_scale
+    accel_tol = engine.RELATIVE_TOLERANCE * problem.acceleration_scale
+    modes = np.empty((engine.MAX_DISTINCT, count, 3), dtype=np.int64)
+    qdd = np.empty((engine.MAX_DISTINCT, 3 * count))
+    lam = np.empty((engine.MAX_DISTINCT, count, 3))
+    distinct = engine.solve_contact_problem(
+        count, model[1], free, kin.normal_jacobian, kin.normal_bias, kin.tangential_jacobian,
+        kin.tangential_bias, active, slip, sliding, model[3], model[4], force_tol, accel_tol,
+        modes, qdd, lam,
+    )  # fmt: skip
+    return problem, distinct, modes, qdd, lam
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    stack=stacks(max_blocks=3),
+    seed=st.integers(0, 2**31),
+    inertial=st.floats(-2.0 * G, 2.0 * G),
+    vertical=st.floats(-0.5 * G, 0.9 * G),
+)
+def test_compiled_contact_solve_agrees_with_the_numpy_oracle(stack, seed, inertial, vertical):
+    # random states near rest (contacts touching, small velocities) so that every kind of
+    # mode (closed, open, kinetic, starting slides) appears
+    rng = np.random.default_rng(seed)
+    n = 3 * len(stack.blocks)
+    q = rng.normal(size=n) * np.tile([1e-9, 1e-9, 1e-9], n // 3)
+    qd = rng.normal(size=n) * rng.choice([0.0, 1e-6, 0.05], size=n)
+    problem, distinct, modes, qdd, lam = compiled_solve(stack, q, qd, inertial, vertical)
+    oracle = solve_contact(problem)
+    assert (distinct == 0) == (oracle.status == "inconsistent")
+    if distinct == 0:
+        return
+    assert (distinct > 1) == oracle.ambiguous
+    chosen = oracle.chosen
+    expected = [
+        (int(m.left_closed), int(m.right_closed), _TANGENTIAL[m.tangential]) for m in chosen.modes
+    ]
+    assert [tuple(int(v) for v in row) for row in modes[0]] == expected
+    scale = problem.acceleration_scale
+    np.testing.assert_allclose(qdd[0], chosen.acceleration, atol=1e-7 * scale, rtol=1e-7)
+    force = problem.force_scale
+    np.testing.assert_allclose(lam[0, :, :2], chosen.normal_force, atol=1e-7 * force, rtol=1e-7)
+    np.testing.assert_allclose(lam[0, :, 2], chosen.tangential_force, atol=1e-7 * force)
+
+
+def test_restitution_factor_scales_housners_ratio():
+    block = rectangle(0.2, 1.2)
+    alpha = math.atan(0.2 / 0.6)
+    housner = 1.0 - 1.5 * math.sin(alpha) ** 2  # Housner 1963, eq. 4
+    pivot = np.array([block.base_left, 0.0])
+    arm = np.array(block.centre) - pivot
+    theta = 0.5 * alpha
+    c, s = math.cos(theta), math.sin(theta)
+    moved = pivot + np.array([c * arm[0] - s * arm[1], s * arm[0] + c * arm[1]])
+    start = np.array([*(moved - np.array(block.centre)), theta])
+    for factor in (1.0, 0.8):
+        result = simulate(
+            Stack("one", (block,)), lambda t: (0.0, 0.0), 1.5, initial_position=start,
+            restitution=factor,
+        )  # fmt: skip
+        impact = result.events_of("impact")[0]
+        ratio = impact.velocity_after[0, 2] / impact.velocity_before[0, 2]
+        assert ratio == pytest.approx(factor * housner, rel=1e-9)
+
+
+def test_restitution_must_lie_between_zero_and_one():
+    with pytest.raises(ValueError, match="restitution"):
+        simulate(Stack("one", (rectangle(),)), lambda t: (0.0, 0.0), 0.1, restitution=1.5)
+
+
+def test_progress_reports_increasing_fractions_up_to_one():
+    reports: list[float] = []
+    motion = SupportMotion(0.005, np.sin(np.arange(801) * 0.05))
+    result = simulate(
+        Stack("one", (rectangle(),)), motion, method="general", progress=reports.append
+    )
+    assert result.status == "completed"
+    assert len(reports) >= 10
+    assert reports == sorted(reports)
+    assert reports[-1] == 1.0
+
+
+def test_a_resampled_record_has_the_break_points_of_the_coarse_one():
+    rng = np.random.default_rng(3)
+    coarse = rng.normal(size=41)
+    coarse_breaks = record_breaks(0.01, coarse, np.zeros_like(coarse))
+    fine_time = np.arange(401) * 0.001
+    fine = np.interp(fine_time, np.arange(41) * 0.01, coarse)
+    fine_breaks = record_breaks(0.001, fine, np.zeros_like(fine))
+    np.testing.assert_allclose(fine_breaks, coarse_breaks, atol=1e-12)
+
+
+def test_rest_phases_are_not_integrated_and_keep_the_stack_still():
+    # a pulse below both thresholds: the stack rests throughout, the forces follow
+    block = rectangle(0.3, 1.0, static=0.8)
+    motion = SupportMotion(0.01, 0.5 * G * np.sin(np.linspace(0.0, math.pi, 101)))
+    result = simulate(Stack("one", (block,)), motion, method="general")
+    assert [event.kind for event in result.events] == ["start"]
+    assert np.all(result.position == 0.0)
+    # the friction force carries the inertial force m a_h at every recorded instant
+    a_h = np.array([motion(t)[0] for t in result.time])
+    np.testing.assert_allclose(result.tangential_force[:, 0], block.mass * a_h, atol=1e-6)
+    assert ContactTolerances().gap > 0.0
