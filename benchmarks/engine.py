@@ -56,8 +56,8 @@ try:
 except ImportError:  # optional benchmark dependency
     mujoco = None
 
+from freestand.core.dynamics.timehistory import SupportMotion, simulate, stack_kinematics
 from freestand.core.model import Block, Friction, Stack
-from freestand.core.timehistory import SupportMotion, simulate, stack_kinematics
 from freestand.io.model_file import load_model
 from freestand.io.records import load_record
 

@@ -16,7 +16,8 @@ import time
 
 import numpy as np
 
-from freestand.core.beam import (
+from freestand.core.motion.spectra import Spectrum
+from freestand.core.structure.beam import (
     SimplySupportedBeam,
     dunkerley_frequency,
     exact_frequency,
@@ -24,7 +25,6 @@ from freestand.core.beam import (
     frequency_sweep,
     jump_check,
 )
-from freestand.core.spectra import Spectrum
 
 SPAN = 9.8
 PARKING = (1.33, SPAN - 1.33)

@@ -36,17 +36,17 @@ from pathlib import Path
 
 import numpy as np
 
-from freestand.core.fragility.campaign import (
+from freestand.core.dynamics.timehistory import SupportMotion, simulate
+from freestand.core.model import Block, Friction, Sliding, Stack
+from freestand.core.motion.ground_motion import synthetic_ground_motion
+from freestand.core.sweeps.fragility.campaign import (
     Campaign,
     run_tasks,
     sample_stacks,
     simulate_task,
 )
-from freestand.core.fragility.intensity import IntensityMeasure
-from freestand.core.fragility.outcomes import Outcome, default_outcomes
-from freestand.core.ground_motion import synthetic_ground_motion
-from freestand.core.model import Block, Friction, Sliding, Stack
-from freestand.core.timehistory import SupportMotion, simulate
+from freestand.core.sweeps.fragility.intensity import IntensityMeasure
+from freestand.core.sweeps.fragility.outcomes import Outcome, default_outcomes
 from freestand.io.campaign_runner import run_campaign
 from freestand.io.model_file import load_model
 from freestand.io.parameters import parse_variation

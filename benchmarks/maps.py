@@ -22,10 +22,10 @@ from pathlib import Path
 import numba
 import numpy as np
 
-from freestand.core.batch import Parameter, case_inputs, solve_batch
-from freestand.core.mode_map import Axis, mode_map
+from freestand.core.contact.batch import Parameter, case_inputs, solve_batch
+from freestand.core.contact.screening import initial_motion
 from freestand.core.model import Block, Friction, Stack
-from freestand.core.screening import initial_motion
+from freestand.core.sweeps.mode_map import Axis, mode_map
 from freestand.io.model_file import load_model
 
 MODEL = load_model(Path(__file__).resolve().parents[1] / "examples" / "crane.toml")

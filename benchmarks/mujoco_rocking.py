@@ -5,9 +5,9 @@ b = 0.2 m, half-height h = 0.6 m: the block of Makris and Roussos 2000;
 alpha = atan(1/3) = 0.3218 rad, p = 3.411 rad/s), 100 kg, on a rigid
 horizontal support, friction high enough that it does not slide.
 
-- freestand: :func:`freestand.core.rocking_dynamics.simulate` (exact
+- freestand: :func:`freestand.core.rocking.integrator.simulate` (exact
   nonlinear rocking equation, Housner impacts) and
-  :func:`~freestand.core.rocking_dynamics.exact_minimum_overturning_amplitude`.
+  :func:`~freestand.core.rocking.integrator.exact_minimum_overturning_amplitude`.
 - MuJoCo: a box geom (2b x 0.2 m x 2h) on a plane, in the x-z plane (slide x,
   slide z and a hinge about y through the centre of gravity), 2 ms step.
   The support acceleration a_g(t) is applied as the d'Alembert force
@@ -50,15 +50,15 @@ except ImportError:  # optional benchmark dependency
 
 from scipy.integrate import solve_ivp
 
+from freestand.core.dynamics.timehistory import SupportMotion
+from freestand.core.dynamics.timehistory import simulate as simulate_time_history
 from freestand.core.model import Block, Friction, Stack
-from freestand.core.rocking import RockingBlock
-from freestand.core.rocking_dynamics import (
+from freestand.core.rocking.integrator import (
     SampledAcceleration,
     exact_minimum_overturning_amplitude,
     simulate,
 )
-from freestand.core.timehistory import SupportMotion
-from freestand.core.timehistory import simulate as simulate_time_history
+from freestand.core.rocking.properties import RockingBlock
 from freestand.io.records import read_at2
 
 ROOT = Path(__file__).resolve().parents[1]

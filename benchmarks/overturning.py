@@ -12,8 +12,8 @@ import time
 import numba
 import numpy as np
 
-from freestand.core.rocking import RockingBlock
-from freestand.core.rocking_dynamics import exact_minimum_overturning_amplitude
+from freestand.core.rocking.integrator import exact_minimum_overturning_amplitude
+from freestand.core.rocking.properties import RockingBlock
 
 CART = RockingBlock(25600.0, 124100.0, (-1.33, -2.83), (1.33, -2.83))
 

@@ -17,10 +17,10 @@ import time
 
 import numpy as np
 
-from freestand.core.design_spectra import rg160_spectrum
-from freestand.core.ground_motion import synthetic_ground_motion
-from freestand.core.response_spectrum import SpectrumPlan
-from freestand.core.spectrum_matching import AcceptanceCriteria, generate_suite
+from freestand.core.motion.design_spectra import rg160_spectrum
+from freestand.core.motion.ground_motion import synthetic_ground_motion
+from freestand.core.motion.response_spectrum import SpectrumPlan
+from freestand.core.motion.spectrum_matching import AcceptanceCriteria, generate_suite
 
 
 def main(count: int) -> None:

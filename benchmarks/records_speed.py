@@ -16,9 +16,9 @@ import time
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from freestand.core.ground_motion import synthetic_ground_motion
-from freestand.core.response_spectrum import response_spectrum, spectral_response
-from freestand.core.sliding import slide_block
+from freestand.core.dynamics.sliding import slide_block
+from freestand.core.motion.ground_motion import synthetic_ground_motion
+from freestand.core.motion.response_spectrum import response_spectrum, spectral_response
 
 
 def best_of(function, repeats=5):

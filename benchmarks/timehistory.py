@@ -25,8 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
+from freestand.core.dynamics.timehistory import SupportMotion, simulate
 from freestand.core.model import Block, Friction, Stack
-from freestand.core.timehistory import SupportMotion, simulate
 from freestand.io.model_file import load_model
 
 SAMPLING = 200.0  # samples per second

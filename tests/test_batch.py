@@ -2,9 +2,9 @@
 
 Random stacks of 1-3 blocks (any sliding restriction, centres inside or
 outside their bases, friction 0-1.5, excitations including a_ver >= g) are
-solved by :func:`freestand.core.batch.solve_batch` and
-:func:`freestand.core.batch.solve_excitation_plane` and compared with
-:func:`freestand.core.screening.initial_motion`: status (incl. ambiguous and
+solved by :func:`freestand.core.contact.batch.solve_batch` and
+:func:`freestand.core.contact.batch.solve_excitation_plane` and compared with
+:func:`freestand.core.contact.screening.initial_motion`: status (incl. ambiguous and
 inconsistent), every block's motion, pivot and slide direction, every
 admissible state, and accelerations and forces.
 """
@@ -16,7 +16,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from freestand.core.batch import (
+from freestand.core.contact.batch import (
     MOTIONS,
     STATUS_NAMES,
     BatchStack,
@@ -26,8 +26,8 @@ from freestand.core.batch import (
     solve_batch,
     solve_excitation_plane,
 )
+from freestand.core.contact.screening import initial_motion
 from freestand.core.model import Block, Friction, Sliding, Stack
-from freestand.core.screening import initial_motion
 
 GRAVITY = 9.81
 # Tolerances: the batch solver eliminates the accelerations (Schur complement)

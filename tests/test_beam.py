@@ -10,7 +10,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
-from freestand.core.beam import (
+from freestand.core.motion.spectra import Spectrum
+from freestand.core.structure.beam import (
     SimplySupportedBeam,
     bare_beam_frequency,
     dunkerley_frequency,
@@ -21,7 +22,6 @@ from freestand.core.beam import (
     spring_mass_frequency,
     static_flexibility,
 )
-from freestand.core.spectra import Spectrum
 from freestand.errors import FreestandError
 
 CRANE = SimplySupportedBeam(9.8, 2.1e11, 0.014, 16600.0, 25600.0)

@@ -6,7 +6,7 @@ import json
 
 import pytest
 
-from freestand.core.ground_motion import half_sine_pulse
+from freestand.core.motion.ground_motion import half_sine_pulse
 from freestand.io.records import write_at2
 from freestand.io.suites import suite_text
 from tests.conftest import CRANE, run_freestand
@@ -134,7 +134,7 @@ def test_bad_options_give_messages(files, args, message, capsys, monkeypatch):
 
 
 def test_crane_defaults_name_every_block():
-    from freestand.core.fragility.outcomes import default_outcomes
+    from freestand.core.sweeps.fragility.outcomes import default_outcomes
     from freestand.io.model_file import load_model
 
     stack = load_model(CRANE).configuration("x-z cart right")

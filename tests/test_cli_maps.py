@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from freestand.core.sampling import Fixed, Normal, TruncatedNormal, Uniform
+from freestand.core.sweeps.sampling import Fixed, Normal, TruncatedNormal, Uniform
 from freestand.errors import FreestandError
 from freestand.io.model_file import load_model
 from freestand.io.parameters import check_parameters, parse_axis, parse_variation

@@ -43,7 +43,7 @@ def test_scale_and_peak_exclude_each_other():
 
 def test_spectral_scaling_matches_the_target(tmp_path):
     """--spectral A@F,zeta: the scaled record's PSA at F is A (linear oscillator, exact)."""
-    from freestand.core.response_spectrum import spectral_response
+    from freestand.core.motion.response_spectrum import spectral_response
     from freestand.io.records import load_record
 
     result = run_freestand(

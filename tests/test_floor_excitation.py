@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from freestand.core.ground_motion import synthetic_ground_motion
-from freestand.core.response_spectrum import floor_motion, spectral_response
+from freestand.core.motion.ground_motion import synthetic_ground_motion
+from freestand.core.motion.response_spectrum import floor_motion, spectral_response
 from freestand.errors import FreestandError
 from freestand.io.model_file import load_model
 from freestand.io.records import write_at2

@@ -7,13 +7,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from freestand.core.fragility.campaign import Campaign, run_tasks
-from freestand.core.fragility.fit import fit_fragility
-from freestand.core.fragility.intensity import IntensityMeasure, intensity, rocking_threshold
-from freestand.core.fragility.outcomes import Outcome
-from freestand.core.ground_motion import half_sine_pulse, synthetic_ground_motion
 from freestand.core.model import Block, Friction, Sliding, Stack
-from freestand.core.response_spectrum import spectral_response
+from freestand.core.motion.ground_motion import half_sine_pulse, synthetic_ground_motion
+from freestand.core.motion.response_spectrum import spectral_response
+from freestand.core.sweeps.fragility.campaign import Campaign, run_tasks
+from freestand.core.sweeps.fragility.fit import fit_fragility
+from freestand.core.sweeps.fragility.intensity import IntensityMeasure, intensity, rocking_threshold
+from freestand.core.sweeps.fragility.outcomes import Outcome
 from freestand.io.parameters import parse_variation
 
 BLOCK = Block("block", 500.0, 266.6666666666667, (0.0, 1.2), -0.4, 0.4, 0.0,

@@ -7,9 +7,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from freestand.core.dynamics.timehistory import stack_kinematics
 from freestand.core.geometry import block_outlines, place, stack_poses
 from freestand.core.model import Block, Friction, Stack
-from freestand.core.timehistory import stack_kinematics
 
 
 def rectangle(name, half_width, height, level, mass=100.0):

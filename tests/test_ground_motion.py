@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from freestand.core.ground_motion import (
+from freestand.core.motion.ground_motion import (
     GroundMotion,
     combine_components,
     half_sine_pulse,
@@ -15,7 +15,7 @@ from freestand.core.ground_motion import (
     resample,
     synthetic_ground_motion,
 )
-from freestand.core.response_spectrum import spectral_response
+from freestand.core.motion.response_spectrum import spectral_response
 
 G = 9.81
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from freestand.core.screening import screen
+from freestand.core.contact.screening import screen
 from freestand.errors import FreestandError
 from freestand.io.model_file import load_model, load_model_text
 from tests.conftest import CRANE

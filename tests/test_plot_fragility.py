@@ -6,8 +6,8 @@ matplotlib.use("Agg")
 
 import numpy as np  # noqa: E402
 
-from freestand.core.fragility.analysis import analyse  # noqa: E402
-from freestand.core.fragility.outcomes import Outcome  # noqa: E402
+from freestand.core.sweeps.fragility.analysis import analyse  # noqa: E402
+from freestand.core.sweeps.fragility.outcomes import Outcome  # noqa: E402
 from freestand.plot.fragility import plot_fragility, save_fragility_figure  # noqa: E402
 
 

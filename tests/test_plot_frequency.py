@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
-from freestand.core.beam import SimplySupportedBeam, frequency_sweep, jump_check
-from freestand.core.spectra import Spectrum
+from freestand.core.motion.spectra import Spectrum
+from freestand.core.structure.beam import SimplySupportedBeam, frequency_sweep, jump_check
 from freestand.plot.frequency import plot_frequency_sweep, save_frequency_figure
 
 PARKING = (1.33, 8.47)

@@ -6,13 +6,13 @@ matplotlib.use("Agg")
 
 import numpy as np  # noqa: E402
 
-from freestand.core.design_spectra import crane_stand_in_spectra  # noqa: E402
-from freestand.core.overturning import (  # noqa: E402
+from freestand.core.motion.design_spectra import crane_stand_in_spectra  # noqa: E402
+from freestand.core.rocking.overturning import (  # noqa: E402
     check_spectrum,
     overturning_limits,
     rectangular_pulse_limits,
 )
-from freestand.core.rocking import RockingBlock  # noqa: E402
+from freestand.core.rocking.properties import RockingBlock  # noqa: E402
 from freestand.plot.overturning import (  # noqa: E402
     plot_pulse_limits,
     plot_rectangular_pulse,

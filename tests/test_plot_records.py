@@ -8,7 +8,7 @@ matplotlib.use("Agg")
 
 import numpy as np
 
-from freestand.core.design_spectra import rg160_spectrum
+from freestand.core.motion.design_spectra import rg160_spectrum
 from freestand.plot.records import plot_floor_motion, plot_record_spectra
 
 

@@ -8,8 +8,8 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from PIL import Image, ImageChops  # noqa: E402
 
+from freestand.core.dynamics.timehistory import SupportMotion, simulate  # noqa: E402
 from freestand.core.model import Block, Friction, Sliding, Stack  # noqa: E402
-from freestand.core.timehistory import SupportMotion, simulate  # noqa: E402
 from freestand.plot.timehistory import (  # noqa: E402
     animate_time_history,
     frame_indices,

@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from freestand.core.ground_motion import synthetic_ground_motion
+from freestand.core.motion.ground_motion import synthetic_ground_motion
 from freestand.errors import FreestandError
 from freestand.io.records import (
     load_record,

@@ -7,8 +7,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
-from freestand.core.ground_motion import GroundMotion, baseline_correct
-from freestand.core.response_spectrum import SpectrumPlan, floor_motion, spectral_response
+from freestand.core.motion.ground_motion import GroundMotion, baseline_correct
+from freestand.core.motion.response_spectrum import SpectrumPlan, floor_motion, spectral_response
 
 records = arrays(
     float,

@@ -18,16 +18,16 @@ import numpy as np
 import pytest
 
 import freestand
-from freestand.core.beam import dunkerley_frequency, exact_frequency
-from freestand.core.overturning import (
+from freestand.core.contact.screening import initial_motion
+from freestand.core.rocking.overturning import (
     CURVE_FREQUENCIES,
     TABLE_FREQUENCIES,
     check_spectrum,
     overturning_limits,
     rectangular_pulse_limits,
 )
-from freestand.core.rocking import RockingBlock
-from freestand.core.screening import initial_motion
+from freestand.core.rocking.properties import RockingBlock
+from freestand.core.structure.beam import dunkerley_frequency, exact_frequency
 from freestand.errors import FreestandError
 from freestand.io.model_file import load_model_text
 from freestand.report.content import collect_report, report_date, summary_sentences
@@ -273,8 +273,8 @@ def test_overturning_conclusions_name_the_weight_and_give_the_vertical_limits(cr
     (item,) = [a for a in content.overturning if a.configuration == "x-z cart right"]
     assert item.vertical == pytest.approx(2.35)
     # independent check: the same block with the weight m (g - a_v)
-    from freestand.core.overturning import CURVE_FREQUENCIES, overturning_limits
-    from freestand.core.rocking import RockingBlock
+    from freestand.core.rocking.overturning import CURVE_FREQUENCIES, overturning_limits
+    from freestand.core.rocking.properties import RockingBlock
 
     stack = next(s for s in content.model.configurations if s.name == "x-z cart right")
     lighter = RockingBlock.from_block(

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from freestand.core.ground_motion import half_sine_pulse
+from freestand.core.motion.ground_motion import half_sine_pulse
 from freestand.errors import FreestandError
 from freestand.io.model_file import load_model
 from freestand.io.records import write_at2

@@ -8,14 +8,14 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from freestand.core.model import Block, Friction
-from freestand.core.rocking import RockingBlock
-from freestand.core.rocking_dynamics import (
+from freestand.core.rocking.integrator import (
     Pulse,
     SampledAcceleration,
     exact_minimum_overturning_amplitude,
     rocking_energy,
     simulate,
 )
+from freestand.core.rocking.properties import RockingBlock
 from freestand.errors import FreestandError
 
 blocks = st.builds(

@@ -7,9 +7,10 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from freestand.core.batch import Parameter
+from freestand.core.contact.batch import Parameter
+from freestand.core.contact.screening import initial_motion
 from freestand.core.model import Excitation
-from freestand.core.sampling import (
+from freestand.core.sweeps.sampling import (
     Fixed,
     LogNormal,
     Normal,
@@ -22,7 +23,6 @@ from freestand.core.sampling import (
     monte_carlo,
     wilson_interval,
 )
-from freestand.core.screening import initial_motion
 from freestand.io.model_file import load_model
 
 MODEL = load_model(__file__.rsplit("/tests/", 1)[0] + "/examples/crane.toml")

@@ -14,8 +14,8 @@ import math
 
 from hypothesis import HealthCheck, given, settings
 
+from freestand.core.contact.screening import Motion, initial_motion
 from freestand.core.model import Sliding
-from freestand.core.screening import Motion, initial_motion
 from tests.strategies import excitations, stacks
 
 G = 9.81

@@ -9,12 +9,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from freestand.core.dynamics.single_block import simulate_single_block
+from freestand.core.dynamics.timehistory import SupportMotion, simulate
 from freestand.core.model import Block, Friction, Sliding, Stack
-from freestand.core.rocking import RockingBlock
-from freestand.core.rocking_dynamics import SampledAcceleration
-from freestand.core.rocking_dynamics import simulate as simulate_rocking
-from freestand.core.single_block import simulate_single_block
-from freestand.core.timehistory import SupportMotion, simulate
+from freestand.core.rocking.integrator import SampledAcceleration
+from freestand.core.rocking.integrator import simulate as simulate_rocking
+from freestand.core.rocking.properties import RockingBlock
 from freestand.io.model_file import load_model
 from tests.conftest import CRANE, run_freestand
 

@@ -93,7 +93,7 @@ def test_record_spectrum_is_the_records_response_spectrum(tmp_path):
     """kind = "record": the Nigam-Jennings spectrum of the scaled record, any direction."""
     import numpy as np
 
-    from freestand.core.response_spectrum import response_spectrum
+    from freestand.core.motion.response_spectrum import response_spectrum
     from freestand.io.records import load_record
 
     motion = load_record(RECORDS / "synthetic_H.AT2").scaled_to_peak(0.3 * 9.81)

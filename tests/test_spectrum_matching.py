@@ -5,10 +5,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from freestand.core.design_spectra import en1998_spectrum, rg160_spectrum
-from freestand.core.ground_motion import GroundMotion, baseline_correct
-from freestand.core.response_spectrum import response_spectrum
-from freestand.core.spectrum_matching import (
+from freestand.core.motion.design_spectra import en1998_spectrum, rg160_spectrum
+from freestand.core.motion.ground_motion import GroundMotion, baseline_correct
+from freestand.core.motion.response_spectrum import response_spectrum
+from freestand.core.motion.spectrum_matching import (
     AcceptanceCriteria,
     arias_intensity,
     correlation_matrix,
@@ -16,7 +16,7 @@ from freestand.core.spectrum_matching import (
     significant_duration,
     zero_period_acceleration,
 )
-from freestand.core.synthesis import draw_seed_parameters, seed_acceleration
+from freestand.core.motion.synthesis import draw_seed_parameters, seed_acceleration
 
 G = 9.81
 

@@ -1,4 +1,4 @@
-"""Tests of the compiled stack engine (freestand.core.stack_engine) behind the general path."""
+"""Tests of the compiled stack engine (freestand.core.dynamics.engine) behind the general path."""
 
 from __future__ import annotations
 
@@ -9,10 +9,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from freestand.core import stack_engine as engine
-from freestand.core.contact import Tangential, solve_contact
-from freestand.core.model import Block, Friction, Sliding, Stack
-from freestand.core.timehistory import (
+from freestand.core.contact.modes import Tangential, solve_contact
+from freestand.core.dynamics import engine
+from freestand.core.dynamics.timehistory import (
     ContactTolerances,
     SupportMotion,
     contact_problem_in_motion,
@@ -21,6 +20,7 @@ from freestand.core.timehistory import (
     simulate,
     stack_kinematics,
 )
+from freestand.core.model import Block, Friction, Sliding, Stack
 from tests.strategies import stacks
 
 G = 9.81

@@ -1,4 +1,4 @@
-"""Unit and property tests of the time-history simulation (freestand.core.timehistory)."""
+"""Unit and property tests of the time-history simulation (freestand.core.dynamics.timehistory)."""
 
 from __future__ import annotations
 
@@ -9,10 +9,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from freestand.core.contact import solve_contact
-from freestand.core.model import Block, Friction, Sliding, Stack
-from freestand.core.screening import contact_problem_at_rest
-from freestand.core.timehistory import (
+from freestand.core.contact.modes import solve_contact
+from freestand.core.contact.screening import contact_problem_at_rest
+from freestand.core.dynamics.timehistory import (
     ContactTolerances,
     SupportMotion,
     contact_problem_in_motion,
@@ -20,6 +19,7 @@ from freestand.core.timehistory import (
     simulate,
     stack_kinematics,
 )
+from freestand.core.model import Block, Friction, Sliding, Stack
 from tests.strategies import stacks
 
 G = 9.81

@@ -14,8 +14,8 @@ import json
 import numpy as np
 import pytest
 
+from freestand.core.contact.screening import Motion, force_envelope, initial_motion, screen
 from freestand.core.model import Excitation
-from freestand.core.screening import Motion, force_envelope, initial_motion, screen
 from freestand.io.model_file import load_model
 from tests.conftest import CRANE, run_freestand
 

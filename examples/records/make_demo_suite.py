@@ -21,12 +21,22 @@ if __name__ == "__main__":
     sys.exit(
         main(
             [
-                "records", "generate",
-                "--target", "rg1.60:pga=0.3g,damping=5%",
-                "--vertical", "rg1.60:pga=0.3g,damping=5%,direction=vertical",
-                "--count", "30", "--duration", "20", "--seed", "1",
-                "--output", str(output),
-                "--plot", str(output.with_suffix(".png")),
+                "records",
+                "generate",
+                "--target",
+                "rg1.60:pga=0.3g,damping=5%",
+                "--vertical",
+                "rg1.60:pga=0.3g,damping=5%,direction=vertical",
+                "--count",
+                "30",
+                "--duration",
+                "20",
+                "--seed",
+                "1",
+                "--output",
+                str(output),
+                "--plot",
+                str(output.with_suffix(".png")),
             ]
         )  # fmt: skip
     )

@@ -5,7 +5,7 @@
 Writes COUNT (default 8) pairs of synthetic records (horizontal and vertical,
 AT2 files) of DURATION seconds (default 10) and ``suite.toml`` listing them
 into FOLDER. The records come from
-:func:`freestand.core.ground_motion.synthetic_ground_motion` with seeds 1, 2,
+:func:`freestand.core.motion.ground_motion.synthetic_ground_motion` with seeds 1, 2,
 ...: band-limited noise with an envelope, not recordings of earthquakes. The
 same call always writes the same files.
 """
@@ -13,7 +13,7 @@ same call always writes the same files.
 import sys
 from pathlib import Path
 
-from freestand.core.ground_motion import synthetic_ground_motion
+from freestand.core.motion.ground_motion import synthetic_ground_motion
 from freestand.io.records import write_at2
 from freestand.io.suites import suite_text
 

@@ -3,7 +3,7 @@
     python examples/records/make_synthetic_records.py
 
 The records are synthetic: band-limited noise with an envelope, made by
-:func:`freestand.core.ground_motion.synthetic_ground_motion` with its default
+:func:`freestand.core.motion.ground_motion.synthetic_ground_motion` with its default
 arguments (seed 20240601, 15 s at 0.005 s, horizontal peak 0.25 g with a
 Kanai-Tajimi filter at 2.5 Hz, vertical peak 2/3 of it at 6 Hz). They are not
 recordings of an earthquake. The same call always gives the same files.
@@ -11,7 +11,7 @@ recordings of an earthquake. The same call always gives the same files.
 
 from pathlib import Path
 
-from freestand.core.ground_motion import synthetic_ground_motion
+from freestand.core.motion.ground_motion import synthetic_ground_motion
 from freestand.io.records import write_at2
 
 HERE = Path(__file__).resolve().parent

@@ -36,9 +36,9 @@ _PUBLIC = {
     "load_model": "freestand.io.model_file",
     "load_record": "freestand.io.records",
     "load_suite": "freestand.io.suites",
-    "GroundMotion": "freestand.core.ground_motion",
-    "SupportMotion": "freestand.core.timehistory",
-    "TimeHistoryResult": "freestand.core.timehistory",
+    "GroundMotion": "freestand.core.motion.ground_motion",
+    "SupportMotion": "freestand.core.dynamics.timehistory",
+    "TimeHistoryResult": "freestand.core.dynamics.timehistory",
     "Block": "freestand.core.model",
     "Stack": "freestand.core.model",
     "Friction": "freestand.core.model",
@@ -47,9 +47,9 @@ _PUBLIC = {
     "screen": "freestand.api",
     "simulate": "freestand.api",
     "support_motion": "freestand.api",
-    "response_spectrum": "freestand.core.response_spectrum",
-    "RockingBlock": "freestand.core.rocking",
-    "overturning_limits": "freestand.core.overturning",
+    "response_spectrum": "freestand.core.motion.response_spectrum",
+    "RockingBlock": "freestand.core.rocking.properties",
+    "overturning_limits": "freestand.core.rocking.overturning",
 }
 
 __all__ = ["FreestandError", "__version__", *_PUBLIC]

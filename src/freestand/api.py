@@ -19,12 +19,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from freestand.core.ground_motion import GroundMotion
+from freestand.core.contact.screening import GRAVITY, InitialMotion
+from freestand.core.contact.screening import screen as _screen_stack
+from freestand.core.dynamics.timehistory import SupportMotion, TimeHistoryResult
+from freestand.core.dynamics.timehistory import simulate as _simulate_stack
 from freestand.core.model import Excitation, Stack
-from freestand.core.screening import GRAVITY, InitialMotion
-from freestand.core.screening import screen as _screen_stack
-from freestand.core.timehistory import SupportMotion, TimeHistoryResult
-from freestand.core.timehistory import simulate as _simulate_stack
+from freestand.core.motion.ground_motion import GroundMotion
 
 
 def support_motion(motion: GroundMotion | SupportMotion) -> SupportMotion:
@@ -100,7 +100,7 @@ def simulate(
         Simulated time [s]; by default the record and then free motion until
         the stack is at rest again or a block overturns.
     **options
-        Passed to :func:`freestand.core.timehistory.simulate` (``method``,
+        Passed to :func:`freestand.core.dynamics.timehistory.simulate` (``method``,
         ``max_step`` [s], ``gravity`` [m/s^2], ...).
 
     Returns

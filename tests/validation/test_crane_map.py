@@ -14,9 +14,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from freestand.core.batch import Parameter
-from freestand.core.mode_map import Axis, mode_map, model_points
-from freestand.core.screening import initial_motion
+from freestand.core.contact.batch import Parameter
+from freestand.core.contact.screening import initial_motion
+from freestand.core.sweeps.mode_map import Axis, mode_map, model_points
 from freestand.io.model_file import load_model
 from freestand.plot.maps import plot_mode_maps
 

@@ -13,7 +13,7 @@ import math
 
 import pytest
 
-from freestand.core.design_spectra import (
+from freestand.core.motion.design_spectra import (
     RG160_FACTORS,
     crane_stand_in_spectra,
     en1998_damping_correction,
@@ -61,7 +61,7 @@ def test_rg160_rejects_untabulated_damping():
 @pytest.mark.parametrize("spectrum_type", [1, 2])
 @pytest.mark.parametrize("ground", list("ABCDE"))
 def test_en1998_horizontal_corners(spectrum_type, ground):
-    from freestand.core.design_spectra import EN1998_HORIZONTAL
+    from freestand.core.motion.design_spectra import EN1998_HORIZONTAL
 
     ag = 2.5
     soil, t_b, t_c, t_d = EN1998_HORIZONTAL[spectrum_type][ground]

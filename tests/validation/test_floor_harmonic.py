@@ -20,8 +20,8 @@ import math
 import numpy as np
 import pytest
 
-from freestand.core.ground_motion import GroundMotion
-from freestand.core.response_spectrum import floor_motion, spectral_response
+from freestand.core.motion.ground_motion import GroundMotion
+from freestand.core.motion.response_spectrum import floor_motion, spectral_response
 
 
 @pytest.mark.parametrize("ratio", [0.5, 0.8, 1.0, 1.3, 2.0])
@@ -47,8 +47,8 @@ def test_floor_motion_matches_harmonic_steady_state(ratio, damping):
 
 def test_floor_peak_is_the_ground_spectrum_at_the_structure_frequency():
     """The paper's elastic case: floor peak = the input spectrum at 2.5 Hz, 5 %."""
-    from freestand.core.design_spectra import crane_stand_in_spectra
-    from freestand.core.spectrum_matching import generate_suite
+    from freestand.core.motion.design_spectra import crane_stand_in_spectra
+    from freestand.core.motion.spectrum_matching import generate_suite
 
     target = crane_stand_in_spectra()[0]  # 2.70 m/s^2 rigid, 10.31 m/s^2 at 2.5 Hz
     record = generate_suite(target, count=1, duration=8.0, seed=4).horizontal.records[0]

@@ -14,7 +14,7 @@ import pytest
 from scipy.optimize import minimize
 from scipy.stats import norm
 
-from freestand.core.fragility.fit import Z05, fit_cloud, fit_fragility
+from freestand.core.sweeps.fragility.fit import Z05, fit_cloud, fit_fragility
 
 THETA, BETA = 2.0, 0.4
 LEVELS = np.linspace(0.5, 5.0, 10)

@@ -12,14 +12,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from freestand.core.fragility.analysis import analyse
-from freestand.core.fragility.campaign import Campaign, run_tasks
-from freestand.core.fragility.intensity import IntensityMeasure
-from freestand.core.fragility.outcomes import Outcome
-from freestand.core.ground_motion import half_sine_pulse
 from freestand.core.model import Block, Friction, Sliding, Stack
-from freestand.core.rocking import RockingBlock
-from freestand.core.rocking_dynamics import exact_minimum_overturning_amplitude
+from freestand.core.motion.ground_motion import half_sine_pulse
+from freestand.core.rocking.integrator import exact_minimum_overturning_amplitude
+from freestand.core.rocking.properties import RockingBlock
+from freestand.core.sweeps.fragility.analysis import analyse
+from freestand.core.sweeps.fragility.campaign import Campaign, run_tasks
+from freestand.core.sweeps.fragility.intensity import IntensityMeasure
+from freestand.core.sweeps.fragility.outcomes import Outcome
 
 # a block 0.8 m wide, 2.4 m high (alpha = 0.32 rad), on a base it cannot slide on
 BLOCK = Block(

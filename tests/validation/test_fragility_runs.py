@@ -21,12 +21,12 @@ import time
 import numpy as np
 import pytest
 
-from freestand.core.fragility.analysis import analyse
-from freestand.core.fragility.campaign import Campaign, run_tasks
-from freestand.core.fragility.intensity import IntensityMeasure
-from freestand.core.fragility.outcomes import Outcome
-from freestand.core.ground_motion import half_sine_pulse
 from freestand.core.model import Block, Friction, Sliding, Stack
+from freestand.core.motion.ground_motion import half_sine_pulse
+from freestand.core.sweeps.fragility.analysis import analyse
+from freestand.core.sweeps.fragility.campaign import Campaign, run_tasks
+from freestand.core.sweeps.fragility.intensity import IntensityMeasure
+from freestand.core.sweeps.fragility.outcomes import Outcome
 from freestand.io.campaign_runner import CampaignInterrupted, run_campaign
 from freestand.io.parameters import parse_variation
 from freestand.io.store import CampaignStore

@@ -13,8 +13,8 @@ import math
 import pytest
 from scipy.integrate import solve_ivp
 
-from freestand.core.rocking import RockingBlock
-from freestand.core.rocking_dynamics import Pulse, exact_minimum_overturning_amplitude, simulate
+from freestand.core.rocking.integrator import Pulse, exact_minimum_overturning_amplitude, simulate
+from freestand.core.rocking.properties import RockingBlock
 
 G = 9.81
 BLOCK = RockingBlock.rectangle(1.0, 0.2, 0.6)

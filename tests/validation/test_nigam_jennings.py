@@ -28,14 +28,14 @@ from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 from scipy.linalg import expm
 
-from freestand.core.response_spectrum import (
+from freestand.core.motion.response_spectrum import (
     _closed_form_coefficients,
     nigam_jennings_coefficients,
     oscillator_response,
     response_spectrum,
     spectral_response,
 )
-from freestand.core.spectra import Spectrum
+from freestand.core.motion.spectra import Spectrum
 
 
 def _expm_coefficients(omega, zeta, h):

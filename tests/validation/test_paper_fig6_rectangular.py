@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from freestand.core.rocking import RockingBlock
-from freestand.core.rocking_dynamics import Pulse, exact_rectangular_duration, simulate
+from freestand.core.rocking.integrator import Pulse, exact_rectangular_duration, simulate
+from freestand.core.rocking.properties import RockingBlock
 
 CART = RockingBlock(25600.0, 124100.0, (-1.33, -2.83), (1.33, -2.83))
 

@@ -13,10 +13,10 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from freestand.core.design_spectra import crane_stand_in_spectra
-from freestand.core.overturning import check_spectrum, overturning_limits
-from freestand.core.rocking import RockingBlock
-from freestand.core.rocking_dynamics import Pulse, exact_minimum_overturning_amplitude, simulate
+from freestand.core.motion.design_spectra import crane_stand_in_spectra
+from freestand.core.rocking.integrator import Pulse, exact_minimum_overturning_amplitude, simulate
+from freestand.core.rocking.overturning import check_spectrum, overturning_limits
+from freestand.core.rocking.properties import RockingBlock
 
 CART = RockingBlock(25600.0, 124100.0, (-1.33, -2.83), (1.33, -2.83))
 

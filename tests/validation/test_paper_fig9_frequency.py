@@ -16,7 +16,8 @@ import math
 import numpy as np
 import pytest
 
-from freestand.core.beam import (
+from freestand.core.motion.spectra import Spectrum
+from freestand.core.structure.beam import (
     SimplySupportedBeam,
     bare_beam_frequency,
     dunkerley_frequency,
@@ -26,7 +27,6 @@ from freestand.core.beam import (
     load_flexibility,
     spring_mass_frequency,
 )
-from freestand.core.spectra import Spectrum
 
 SPAN = 9.8
 PARKING = (1.33, SPAN - 1.33)

@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from freestand.core.screening import Motion, initial_motion
+from freestand.core.contact.screening import Motion, initial_motion
 
 RELATIVE_TOLERANCE = 1e-6  # both are exact linear solutions: only round-off differs
 G = 9.81

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import pytest
 
-from freestand.core.screening import Motion, initial_motion
+from freestand.core.contact.screening import Motion, initial_motion
 
 ACCELERATION_TOLERANCE = 0.05  # m/s^2, the paper rounds to 0.1 m/s^2
 ANGULAR_TOLERANCE = 0.01  # rad/s^2, the spec quotes 1.32 rad/s^2

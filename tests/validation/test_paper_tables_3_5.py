@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import pytest
 
-from freestand.core.screening import initial_motion
+from freestand.core.contact.screening import initial_motion
 
 FORCE_TOLERANCE = 1600.0  # N, 0.5 % of the total reduced weight (see module docstring)
 

@@ -22,8 +22,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from freestand.core.contact.screening import Motion, initial_motion
 from freestand.core.model import Block, Friction, Sliding, Stack
-from freestand.core.screening import Motion, initial_motion
 
 G = 9.81
 MARGIN = 0.02  # relative distance kept from region boundaries

@@ -6,7 +6,7 @@ Sources:
   Zhang and Makris (2001), J. Eng. Mech. 127(5), eqs. 10-12;
 - sliding on a rigid support: Newmark (1965), Geotechnique 15(2);
 - half-sine overturning limits: the exact nonlinear equation
-  (:func:`freestand.core.rocking_dynamics.exact_minimum_overturning_amplitude`,
+  (:func:`freestand.core.rocking.integrator.exact_minimum_overturning_amplitude`,
   validated against Makris and Roussos 2000 and the paper's Fig. 7).
 
 Record: examples/records/synthetic_H.AT2 and synthetic_UP.AT2 (a synthetic
@@ -22,10 +22,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from freestand.core.dynamics.timehistory import SupportMotion, simulate
 from freestand.core.model import Block, Friction, Sliding, Stack
-from freestand.core.rocking import RockingBlock
-from freestand.core.rocking_dynamics import exact_minimum_overturning_amplitude
-from freestand.core.timehistory import SupportMotion, simulate
+from freestand.core.rocking.integrator import exact_minimum_overturning_amplitude
+from freestand.core.rocking.properties import RockingBlock
 from freestand.io.records import load_record
 
 RECORDS = Path(__file__).resolve().parents[2] / "examples" / "records"

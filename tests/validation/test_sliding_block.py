@@ -21,8 +21,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from freestand.core.ground_motion import GroundMotion, rectangular_pulse, synthetic_ground_motion
-from freestand.core.sliding import rectangular_pulse_slide, slide_block
+from freestand.core.dynamics.sliding import rectangular_pulse_slide, slide_block
+from freestand.core.motion.ground_motion import (
+    GroundMotion,
+    rectangular_pulse,
+    synthetic_ground_motion,
+)
 
 G = 9.81
 

@@ -22,8 +22,8 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from freestand.core.dynamics.timehistory import simulate
 from freestand.core.model import Stack
-from freestand.core.timehistory import simulate
 
 AMPLITUDE = 10.0  # m/s^2
 DURATION = 0.3  # s

@@ -22,8 +22,8 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
+from freestand.core.dynamics.timehistory import simulate
 from freestand.core.model import Block, Friction, Stack
-from freestand.core.timehistory import simulate
 
 G = 9.81
 

@@ -22,8 +22,8 @@ from __future__ import annotations
 
 import pytest
 
+from freestand.core.dynamics.timehistory import simulate
 from freestand.core.model import Block, Friction, Stack
-from freestand.core.timehistory import simulate
 
 G = 9.81
 

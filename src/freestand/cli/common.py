@@ -28,7 +28,7 @@ from pathlib import Path
 from rich.console import Console
 from rich.markup import escape
 
-from freestand.core.spectra import Spectrum
+from freestand.core.motion.spectra import Spectrum
 from freestand.errors import FreestandError
 from freestand.io.model_file import ModelFile, load_model
 from freestand.io.spectrum_input import parse_spectrum_option

@@ -118,7 +118,7 @@ def fragility(
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
     """Fragility curves: probability of overturning, sliding, uplift, flight against IM."""
-    from freestand.core.fragility.analysis import analyse
+    from freestand.core.sweeps.fragility.analysis import analyse
     from freestand.io.fragility_options import parse_outcome
     from freestand.io.fragility_results import fragility_document
     from freestand.io.store import CampaignStore

@@ -18,7 +18,7 @@ from freestand.cli.common import (
     resolve_spectrum,
     staging,
 )
-from freestand.core.beam import frequency_sweep, jump_check
+from freestand.core.structure.beam import frequency_sweep, jump_check
 from freestand.errors import FreestandError
 
 

@@ -16,9 +16,9 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from rich.table import Table
 
 from freestand.cli.common import check_file, check_folder, load, staging, warn
-from freestand.core.batch import MOTIONS, STATUS_NAMES
-from freestand.core.mode_map import ModeMap, mode_map, model_points, point_label
-from freestand.core.sampling import INTERVALS, monte_carlo
+from freestand.core.contact.batch import MOTIONS, STATUS_NAMES
+from freestand.core.sweeps.mode_map import ModeMap, mode_map, model_points, point_label
+from freestand.core.sweeps.sampling import INTERVALS, monte_carlo
 from freestand.errors import FreestandError
 from freestand.io.parameters import check_parameters, parse_axis, parse_variation
 

@@ -19,7 +19,8 @@ from freestand.cli.common import (
     resolve_spectrum,
     staging,
 )
-from freestand.core.overturning import (
+from freestand.core.contact.screening import Motion, initial_motion
+from freestand.core.rocking.overturning import (
     CURVE_FREQUENCIES,
     TABLE_FREQUENCIES,
     check_spectrum,
@@ -27,8 +28,7 @@ from freestand.core.overturning import (
     rectangular_amplitude_grid,
     rectangular_pulse_limits,
 )
-from freestand.core.rocking import RockingBlock
-from freestand.core.screening import Motion, initial_motion
+from freestand.core.rocking.properties import RockingBlock
 from freestand.errors import FreestandError
 
 #: Highest pulse frequency accepted [Hz]: beyond, the pulse is far shorter than any rocking

@@ -16,7 +16,7 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from rich.table import Table
 
 from freestand.cli.common import console
-from freestand.core.spectra import Spectrum
+from freestand.core.motion.spectra import Spectrum
 from freestand.errors import FreestandError
 
 records_app = typer.Typer(
@@ -35,7 +35,7 @@ _FIGURE_SUFFIXES = (".png", ".svg", ".pdf")
 
 
 def _damping(text: str, option: str) -> float:
-    from freestand.io.spectrum_input import damping_fraction
+    from freestand.io.units import damping_fraction
 
     return damping_fraction(text.strip(), field="damping", source=option)
 
@@ -149,8 +149,8 @@ def spectrum(
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
     """Pseudo-acceleration spectra of records (horizontal and vertical), against a target."""
-    from freestand.core.response_spectrum import SpectrumPlan
-    from freestand.core.spectrum_matching import AcceptanceCriteria
+    from freestand.core.motion.response_spectrum import SpectrumPlan
+    from freestand.core.motion.spectrum_matching import AcceptanceCriteria
 
     _check_output_file(plot, "--plot", _FIGURE_SUFFIXES)
     _check_output_file(csv_file, "--csv", (".csv",))
@@ -401,8 +401,8 @@ def generate(
     quiet: bool = typer.Option(False, "--quiet", help="No progress bar."),
 ) -> None:
     """Generate a suite of spectrum-compatible records, with acceptance checks and a suite file."""
-    from freestand.core.ground_motion import GroundMotion
-    from freestand.core.spectrum_matching import generate_suite
+    from freestand.core.motion.ground_motion import GroundMotion
+    from freestand.core.motion.spectrum_matching import generate_suite
     from freestand.io.suites import write_suite
 
     if file_format not in ("at2", "csv"):
@@ -610,7 +610,7 @@ def floor(
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
     """In-structure motion: absolute acceleration of a linear oscillator under the record."""
-    from freestand.core.response_spectrum import floor_motion, spectral_response
+    from freestand.core.motion.response_spectrum import floor_motion, spectral_response
     from freestand.io.records import load_record, write_at2, write_csv_record
 
     f = _frequency(frequency, "--frequency")

@@ -13,9 +13,9 @@ from rich.markup import escape
 from rich.table import Table
 
 from freestand.cli.common import load
+from freestand.core.contact.screening import force_envelope
+from freestand.core.contact.screening import screen as screen_stack
 from freestand.core.model import VERTICAL_SENSES
-from freestand.core.screening import force_envelope
-from freestand.core.screening import screen as screen_stack
 from freestand.errors import FreestandError
 from freestand.io.results import envelope_document, screening_document
 from freestand.report.tables import (

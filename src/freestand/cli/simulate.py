@@ -10,8 +10,8 @@ from pathlib import Path
 import numpy as np
 import typer
 from rich.console import Console
-from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
 from rich.markup import escape
+from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
 from freestand.cli.common import (
@@ -24,8 +24,8 @@ from freestand.cli.common import (
     staging,
     warn,
 )
-from freestand.core.timehistory import METHODS, SupportMotion
-from freestand.core.timehistory import simulate as simulate_stack
+from freestand.core.dynamics.timehistory import METHODS, SupportMotion
+from freestand.core.dynamics.timehistory import simulate as simulate_stack
 from freestand.errors import FreestandError
 from freestand.io.records import check_record_values, load_record, parse_spectral_target
 

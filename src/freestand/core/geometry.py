@@ -1,11 +1,11 @@
 """Where the blocks of a stack are: outlines and contact points at a state of motion.
 
-Pure geometry for drawing a time history (:mod:`freestand.core.timehistory`).
+Pure geometry for drawing a time history (:mod:`freestand.core.dynamics.timehistory`).
 
 A rigid placement ("pose") maps a point ``X`` of a block at rest to its place
 ``x = R(theta) X + d`` in the support's frame, ``R`` the counter-clockwise
 rotation. A block with the state ``q = (u_x, u_z, phi)`` of
-:func:`freestand.core.timehistory.simulate` (its centre ``C`` displaced by
+:func:`freestand.core.dynamics.timehistory.simulate` (its centre ``C`` displaced by
 ``u``, rotated by ``phi`` about it) has ``theta = phi`` and
 ``d = C + u - R(phi) C``, i.e. ``x = C + u + R(phi) (X - C)``.
 
@@ -110,7 +110,7 @@ def stack_poses(stack: Stack, position: np.ndarray, exaggeration: float = 1.0) -
         Blocks bottom to top.
     position : numpy.ndarray
         Shape (B, 3): ``(u_x [m], u_z [m], phi [rad])`` of each block, as in
-        :class:`freestand.core.timehistory.TimeHistoryResult` (NaN after a
+        :class:`freestand.core.dynamics.timehistory.TimeHistoryResult` (NaN after a
         block overturned).
     exaggeration : float, optional
         Factor ``k`` [-] on each block's rotation relative to the body below,

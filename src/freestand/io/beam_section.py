@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from freestand.core.beam import SimplySupportedBeam
+from freestand.core.structure.beam import SimplySupportedBeam
 from freestand.errors import FreestandError
 from freestand.io.units import to_si
 

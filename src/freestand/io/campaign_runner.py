@@ -1,6 +1,6 @@
 """Running the chunks of a fragility campaign: in this process, on local cores, or on Dask.
 
-The tasks of a :class:`~freestand.core.fragility.campaign.Campaign` are cut
+The tasks of a :class:`~freestand.core.sweeps.fragility.campaign.Campaign` are cut
 into fixed chunks (chunk c holds tasks ``c * size`` to ``(c + 1) * size - 1``).
 A chunk is the unit of work and of storage: each finished chunk is handed to
 the store (one Parquet part) as soon as it arrives, in whatever order the
@@ -24,7 +24,7 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 
 import numpy as np
 
-from freestand.core.fragility.campaign import Campaign, run_tasks
+from freestand.core.sweeps.fragility.campaign import Campaign, run_tasks
 from freestand.errors import FreestandError
 from freestand.io.store import CampaignStore
 

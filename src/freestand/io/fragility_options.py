@@ -18,10 +18,10 @@ import re
 
 import numpy as np
 
-from freestand.core.fragility.intensity import KINDS, IntensityMeasure
-from freestand.core.fragility.outcomes import KINDS as OUTCOME_KINDS
-from freestand.core.fragility.outcomes import Outcome
 from freestand.core.model import Stack
+from freestand.core.sweeps.fragility.intensity import KINDS, IntensityMeasure
+from freestand.core.sweeps.fragility.outcomes import KINDS as OUTCOME_KINDS
+from freestand.core.sweeps.fragility.outcomes import Outcome
 from freestand.errors import FreestandError
 from freestand.io.units import to_si
 
@@ -226,8 +226,8 @@ def build_campaign(
     tuple
         (Campaign, RecordSuite).
     """
-    from freestand.core.fragility.campaign import Campaign
-    from freestand.core.fragility.outcomes import default_outcomes
+    from freestand.core.sweeps.fragility.campaign import Campaign
+    from freestand.core.sweeps.fragility.outcomes import default_outcomes
     from freestand.io.parameters import check_parameters, parse_variation
     from freestand.io.suites import load_suite
 

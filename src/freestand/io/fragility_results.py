@@ -9,8 +9,8 @@ import platform
 
 import numpy as np
 
-from freestand.core.fragility.analysis import FragilityResult
-from freestand.core.fragility.campaign import Campaign
+from freestand.core.sweeps.fragility.analysis import FragilityResult
+from freestand.core.sweeps.fragility.campaign import Campaign
 
 #: How the HCLPF is defined (in the JSON document and the docs).
 HCLPF_DEFINITION = (

@@ -24,7 +24,7 @@ from typing import Any
 from pydantic import BaseModel, ConfigDict, ValidationError, field_validator, model_validator
 
 from freestand.core.model import VERTICAL_SENSES, Block, Excitation, Friction, Sliding, Stack
-from freestand.core.spectra import Spectrum
+from freestand.core.motion.spectra import Spectrum
 from freestand.errors import FreestandError
 from freestand.io.beam_section import BeamSection, parse_beam_section
 from freestand.io.spectrum_input import parse_spectrum_sections
@@ -389,7 +389,7 @@ class _FloorSpec(_Strict):
     @field_validator("damping", mode="before")
     @classmethod
     def _damping(cls, value, info):
-        from freestand.io.spectrum_input import damping_fraction
+        from freestand.io.units import damping_fraction
 
         return damping_fraction(value, field="floor.damping", source="")
 
@@ -401,7 +401,7 @@ class _ExcitationSpec(_Strict):
     vertical: Quantity = 0.0
     vertical_senses: str = "given"
     # a ground record (relative to the model file) whose peak, after the optional floor
-    # filter, is the horizontal acceleration (freestand.core.response_spectrum.floor_motion)
+    # filter, is the horizontal acceleration (freestand.core.motion.response_spectrum.floor_motion)
     record: str | None = None
     floor: _FloorSpec | None = None
 
@@ -448,7 +448,7 @@ class _ExcitationSpec(_Strict):
         """Horizontal acceleration [m/s^2]: given, or the peak of the (floor-filtered) record."""
         if self.record is None:
             return float(self.horizontal)
-        from freestand.core.response_spectrum import floor_motion
+        from freestand.core.motion.response_spectrum import floor_motion
         from freestand.io.records import load_record
 
         path = Path(self.record)

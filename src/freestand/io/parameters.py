@@ -29,10 +29,10 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from freestand.core.batch import BLOCK_FIELDS, EXCITATION_FIELDS, Parameter
-from freestand.core.mode_map import Axis
+from freestand.core.contact.batch import BLOCK_FIELDS, EXCITATION_FIELDS, Parameter
 from freestand.core.model import Stack
-from freestand.core.sampling import (
+from freestand.core.sweeps.mode_map import Axis
+from freestand.core.sweeps.sampling import (
     Fixed,
     LogNormal,
     Normal,

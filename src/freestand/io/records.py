@@ -42,7 +42,7 @@ from pathlib import Path
 
 import numpy as np
 
-from freestand.core.ground_motion import GroundMotion, combine_components
+from freestand.core.motion.ground_motion import GroundMotion, combine_components
 from freestand.errors import FreestandError
 from freestand.io.units import to_si
 
@@ -875,7 +875,7 @@ def load_record(
     GroundMotion
         Horizontal [m/s^2] and, if given, downward vertical [m/s^2]
         acceleration. Components with different steps or lengths are combined
-        by :func:`freestand.core.ground_motion.combine_components` (finer step,
+        by :func:`freestand.core.motion.ground_motion.combine_components` (finer step,
         linear interpolation, zeros after the shorter one).
     """
     path = Path(path)
@@ -1008,7 +1008,7 @@ def parse_spectral_target(
         For a text not of that form, a negative acceleration, a frequency that
         is not positive or a damping outside [0, 1).
     """
-    from freestand.io.spectrum_input import damping_fraction
+    from freestand.io.units import damping_fraction
 
     value, at, rest = text.partition("@")
     if not at or not value.strip() or not rest.strip():

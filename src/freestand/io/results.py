@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from freestand.core.screening import BlockState, ForceEnvelope, InitialMotion
+from freestand.core.contact.screening import BlockState, ForceEnvelope, InitialMotion
 
 
 def _sense(sense: int) -> str:

@@ -1,6 +1,6 @@
 """Response spectra at the input boundary: CSV files, model sections, options.
 
-Sources, all turned into :class:`freestand.core.spectra.Spectrum`:
+Sources, all turned into :class:`freestand.core.motion.spectra.Spectrum`:
 
 - a CSV file: ``#`` comment lines, then a header row naming the two columns
   with their units in brackets, ``frequency [Hz], acceleration [m/s^2]``
@@ -14,7 +14,7 @@ Sources, all turned into :class:`freestand.core.spectra.Spectrum`:
 - ``record``: the response spectrum of a ground-motion record (``file``:
   PEER ``.AT2``, CSV with units or one column with ``dt`` and ``unit``;
   optional ``scale`` [-] or ``peak`` acceleration), computed by the exact
-  Nigam-Jennings recursion of :mod:`freestand.core.response_spectrum` at the
+  Nigam-Jennings recursion of :mod:`freestand.core.motion.response_spectrum` at the
   given ``damping``;
 - in a model file, ``[[spectrum]]`` tables with a ``name`` and a ``kind``
   among ``csv`` (``file``, relative to the model file), ``rg1.60``,
@@ -34,33 +34,17 @@ from pathlib import Path
 
 import numpy as np
 
-from freestand.core.design_spectra import crane_stand_in_spectra, en1998_spectrum, rg160_spectrum
-from freestand.core.spectra import Spectrum
+from freestand.core.motion.design_spectra import (
+    crane_stand_in_spectra,
+    en1998_spectrum,
+    rg160_spectrum,
+)
+from freestand.core.motion.spectra import Spectrum
 from freestand.errors import FreestandError
-from freestand.io.units import to_si
+from freestand.io.units import damping_fraction, to_si
 
 KINDS = ("csv", "rg1.60", "en1998", "table", "record")
 _HEADER = re.compile(r"^\s*([A-Za-z _]+?)\s*\[(.+)\]\s*$")
-
-
-def damping_fraction(value, *, field: str, source: str) -> float:
-    """Damping as a fraction: 0.05, "5 %" or "5%"."""
-    if isinstance(value, str) and value.strip().endswith("%"):
-        try:
-            result = float(value.strip()[:-1]) / 100.0
-        except ValueError:
-            raise FreestandError(
-                f'{value!r} is not a percentage; write e.g. "5 %"', source=source, field=field
-            ) from None
-    else:
-        result = to_si(value, "dimensionless", field=field, source=source)
-    if not 0 <= result < 1:
-        raise FreestandError(
-            f'{value!r} is not a fraction of critical damping; give e.g. 0.05 or "5 %"',
-            source=source,
-            field=field,
-        )
-    return result
 
 
 def _direction(value, *, field: str, source: str) -> str:
@@ -318,7 +302,7 @@ def _record_spectrum(
     gravity: float,
 ) -> Spectrum:
     """Pseudo-acceleration spectrum of a record file (kind ``record``)."""
-    from freestand.core.response_spectrum import response_spectrum
+    from freestand.core.motion.response_spectrum import response_spectrum
     from freestand.io.records import load_record
 
     path = Path(file)

@@ -26,7 +26,7 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
-from freestand.core.ground_motion import GroundMotion
+from freestand.core.motion.ground_motion import GroundMotion
 from freestand.errors import FreestandError
 from freestand.io.records import load_record
 from freestand.io.units import to_si

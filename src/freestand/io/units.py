@@ -156,3 +156,23 @@ def to_si(
             field=field,
         )
     return result
+
+
+def damping_fraction(value, *, field: str, source: str) -> float:
+    """Damping as a fraction: 0.05, "5 %" or "5%"."""
+    if isinstance(value, str) and value.strip().endswith("%"):
+        try:
+            result = float(value.strip()[:-1]) / 100.0
+        except ValueError:
+            raise FreestandError(
+                f'{value!r} is not a percentage; write e.g. "5 %"', source=source, field=field
+            ) from None
+    else:
+        result = to_si(value, "dimensionless", field=field, source=source)
+    if not 0 <= result < 1:
+        raise FreestandError(
+            f'{value!r} is not a fraction of critical damping; give e.g. 0.05 or "5 %"',
+            source=source,
+            field=field,
+        )
+    return result

@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from freestand.core.fragility.analysis import FragilityResult
+from freestand.core.sweeps.fragility.analysis import FragilityResult
 
 
 def plot_fragility(result: FragilityResult, im_label: str, title: str = "") -> Figure:

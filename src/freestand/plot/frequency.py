@@ -6,8 +6,8 @@ from pathlib import Path
 
 import numpy as np
 
-from freestand.core.beam import REACH_TOLERANCE, FrequencySweep, JumpCheck
-from freestand.core.spectra import Spectrum
+from freestand.core.motion.spectra import Spectrum
+from freestand.core.structure.beam import REACH_TOLERANCE, FrequencySweep, JumpCheck
 
 
 def plot_frequency_sweep(
@@ -24,7 +24,7 @@ def plot_frequency_sweep(
     ----------
     sweep : FrequencySweep
         Frequencies [Hz] against positions [m], from
-        :func:`freestand.core.beam.frequency_sweep`.
+        :func:`freestand.core.structure.beam.frequency_sweep`.
     parking : tuple of float, optional
         The parking range of the cart's centre [m], shaded. Taken from
         ``jump`` when not given.

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from freestand.core.mode_map import ModeMap
+from freestand.core.sweeps.mode_map import ModeMap
 
 #: Colours by the words of a region name (first match wins), else a cycle.
 _PALETTE = (

@@ -1,6 +1,6 @@
 """Figures of the overturning assessment (analogues of the paper's Figs. 6-8).
 
-Each function takes result objects of :mod:`freestand.core.overturning`, draws
+Each function takes result objects of :mod:`freestand.core.rocking.overturning`, draws
 on a new figure (Agg-safe: no window is opened) and returns the
 :class:`matplotlib.figure.Figure`. :func:`save_figure` (defined in
 :mod:`freestand.plot.figures`, importable from here) writes PNG and SVG.
@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from freestand.core.overturning import OverturningLimits, RectangularPulseLimits
-from freestand.core.spectra import Spectrum
+from freestand.core.motion.spectra import Spectrum
+from freestand.core.rocking.overturning import OverturningLimits, RectangularPulseLimits
 from freestand.plot.figures import save_figure
 
 __all__ = [
@@ -123,7 +123,7 @@ def plot_spectrum_check(
     spectrum : Spectrum
         The horizontal response spectrum.
     checks : dict of str to SpectrumCheck, optional
-        Results of :func:`freestand.core.overturning.check_spectrum`; the point
+        Results of :func:`freestand.core.rocking.overturning.check_spectrum`; the point
         of smallest margin of each is marked.
     title : str, optional
         Figure title.

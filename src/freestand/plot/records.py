@@ -6,7 +6,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from freestand.core.spectra import Spectrum
+from freestand.core.motion.spectra import Spectrum
 
 
 def plot_record_spectra(

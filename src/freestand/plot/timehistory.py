@@ -1,9 +1,9 @@
-"""Figures and animation of a time-history simulation (:mod:`freestand.core.timehistory`).
+"""Figures and animation of a time-history simulation (:mod:`freestand.core.dynamics.timehistory`).
 
 :func:`plot_time_history` draws stacked panels sharing the time axis (support
 acceleration, slides, rocking angles, contact forces) with the events marked;
 :func:`animate_time_history` writes an animated GIF of the blocks moving.
-Both take a :class:`~freestand.core.timehistory.TimeHistoryResult` and draw on
+Both take a :class:`~freestand.core.dynamics.timehistory.TimeHistoryResult` and draw on
 new figures (Agg-safe: no window is opened).
 """
 
@@ -15,9 +15,9 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
+from freestand.core.dynamics.timehistory import SupportMotion, TimeHistoryResult
 from freestand.core.geometry import block_outlines, place, stack_poses
 from freestand.core.model import Stack
-from freestand.core.timehistory import SupportMotion, TimeHistoryResult
 
 #: Event kinds marked on the rotation panel (rocking) and on the slide panel
 #: (sliding): marker, label. Overturning is a vertical line on every panel.

@@ -27,9 +27,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from freestand import __version__
-from freestand.core.beam import FrequencySweep, JumpCheck, frequency_sweep, jump_check
+from freestand.core.contact.screening import BlockState, InitialMotion, Motion, screen
 from freestand.core.model import Block, Stack
-from freestand.core.overturning import (
+from freestand.core.motion.spectra import Spectrum, SpectrumCheck
+from freestand.core.rocking.overturning import (
     CURVE_FREQUENCIES,
     TABLE_FREQUENCIES,
     OverturningLimits,
@@ -39,9 +40,8 @@ from freestand.core.overturning import (
     rectangular_amplitude_grid,
     rectangular_pulse_limits,
 )
-from freestand.core.rocking import RockingBlock
-from freestand.core.screening import BlockState, InitialMotion, Motion, screen
-from freestand.core.spectra import Spectrum, SpectrumCheck
+from freestand.core.rocking.properties import RockingBlock
+from freestand.core.structure.beam import FrequencySweep, JumpCheck, frequency_sweep, jump_check
 from freestand.errors import FreestandError
 from freestand.io.model_file import ModelFile
 
@@ -78,9 +78,9 @@ class RockingAssessment:
         The same over an amplitude grid, for the Fig. 6 analogue.
     half_sine_table : OverturningLimits
         Half-sine limits (Housner, Makris-Roussos, exact) at
-        :data:`~freestand.core.overturning.TABLE_FREQUENCIES` [m/s^2].
+        :data:`~freestand.core.rocking.overturning.TABLE_FREQUENCIES` [m/s^2].
     half_sine : OverturningLimits
-        The same over :data:`~freestand.core.overturning.CURVE_FREQUENCIES`,
+        The same over :data:`~freestand.core.rocking.overturning.CURVE_FREQUENCIES`,
         with the frequency up to which ``operating_amplitude`` overturns.
     spectrum : Spectrum or None
         The model's horizontal spectrum, if it has one.

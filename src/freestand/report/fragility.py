@@ -23,7 +23,7 @@ import html
 import math
 from dataclasses import dataclass
 
-from freestand.core.fragility.analysis import FragilityResult
+from freestand.core.sweeps.fragility.analysis import FragilityResult
 from freestand.errors import FreestandError
 
 _KEYS = {
@@ -66,7 +66,7 @@ def assess_fragility(model, workers: int | None = None) -> FragilitySection | No
     cloud = bool(table.get("cloud", False))
     if cloud == ("levels" in table):
         raise FreestandError('give levels = "A:B:N" or cloud = true', source=source)
-    from freestand.core.fragility.analysis import analyse
+    from freestand.core.sweeps.fragility.analysis import analyse
     from freestand.io.campaign_runner import default_chunk_size, run_campaign
     from freestand.io.fragility_options import build_campaign
     from freestand.io.fragility_results import (

@@ -21,8 +21,8 @@ from itertools import count
 
 import numpy as np
 
-from freestand.core.overturning import HALF_SINE_LIMITS
-from freestand.core.screening import InitialMotion
+from freestand.core.contact.screening import InitialMotion
+from freestand.core.rocking.overturning import HALF_SINE_LIMITS
 from freestand.report.content import (
     FrequencyAssessment,
     ReportContent,

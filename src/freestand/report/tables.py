@@ -10,8 +10,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from freestand.core.contact.screening import BlockState, InitialMotion, Motion
 from freestand.core.model import Stack
-from freestand.core.screening import BlockState, InitialMotion, Motion
 
 MOTION_HEADERS = (
     "configuration",

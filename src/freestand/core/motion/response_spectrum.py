@@ -46,7 +46,7 @@ from dataclasses import dataclass, field
 import numba
 import numpy as np
 
-from freestand.core.spectra import Spectrum
+from freestand.core.motion.spectra import Spectrum
 
 #: Default number of sub-steps per oscillator period below which a step is divided.
 MIN_STEPS_PER_PERIOD = 20
@@ -538,7 +538,7 @@ def _check_damping(damping: float) -> None:
 
 
 def _is_record(value) -> bool:
-    """A record in the sense of :class:`freestand.core.ground_motion.GroundMotion`.
+    """A record in the sense of :class:`freestand.core.motion.ground_motion.GroundMotion`.
 
     Read by its attributes (``dt``, ``horizontal``, ``vertical``, ``name``),
     so that spectra need not import the record type that uses them.
@@ -592,7 +592,7 @@ def spectral_response(
     Parameters
     ----------
     motion_or_array : GroundMotion or array_like
-        The record: a :class:`~freestand.core.ground_motion.GroundMotion` or
+        The record: a :class:`~freestand.core.motion.ground_motion.GroundMotion` or
         support accelerations a_g(t_i) [m/s^2] at t_i = i dt.
     dt : float, optional
         Time step [s]; required with an array.

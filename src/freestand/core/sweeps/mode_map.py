@@ -8,10 +8,10 @@ names show where the boundaries between rest, slide, rock and slide-rock
 lie.
 
 When both axes are excitation components the map uses
-:func:`freestand.core.batch.solve_excitation_plane` (each contact mode's
+:func:`freestand.core.contact.batch.solve_excitation_plane` (each contact mode's
 solution is linear in ``s a_hor`` and ``g - a_ver``, so the boundaries are
 straight lines through ``(0, g)`` in the ``(a_hor, a_ver)`` plane); otherwise
-:func:`freestand.core.batch.solve_batch`.
+:func:`freestand.core.contact.batch.solve_batch`.
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from freestand.core.batch import (
+from freestand.core.contact.batch import (
     AMBIGUOUS,
     EXCITATION_FIELDS,
     BatchResult,
@@ -30,8 +30,8 @@ from freestand.core.batch import (
     solve_batch,
     solve_excitation_plane,
 )
+from freestand.core.contact.screening import GRAVITY
 from freestand.core.model import Excitation, Stack
-from freestand.core.screening import GRAVITY
 
 
 @dataclass(frozen=True)
@@ -86,7 +86,7 @@ class ModeMap:
         Grid values, shapes (nx,) and (ny,).
     codes : numpy.ndarray
         Shape (ny, nx): joint-state code of every node
-        (:meth:`freestand.core.batch.BatchResult.state_codes`).
+        (:meth:`freestand.core.contact.batch.BatchResult.state_codes`).
     labels : dict
         Code -> region name ("bridge slides, cart rests").
     ambiguous : numpy.ndarray

@@ -49,7 +49,7 @@ import numpy as np
 from scipy.linalg import eigh
 from scipy.optimize import brentq
 
-from freestand.core.spectra import Spectrum
+from freestand.core.motion.spectra import Spectrum
 from freestand.errors import FreestandError
 
 TWO_PI = 2.0 * math.pi

@@ -32,7 +32,7 @@ from enum import StrEnum
 
 import numpy as np
 
-from freestand.core.contact import (
+from freestand.core.contact.modes import (
     ContactDiagnostics,
     ContactProblem,
     ContactResult,
@@ -41,8 +41,8 @@ from freestand.core.contact import (
     Tangential,
     solve_contact,
 )
+from freestand.core.contact.paper_cases import paper_case
 from freestand.core.model import Excitation, Stack
-from freestand.core.paper_cases import paper_case
 
 #: Standard value of the gravitational acceleration used by the paper [m/s^2].
 GRAVITY = 9.81
@@ -343,7 +343,7 @@ def initial_motion(
 ) -> InitialMotion:
     """Initial type of motion, accelerations and contact forces of a stack.
 
-    Solves the complementarity problem of :mod:`freestand.core.contact` for
+    Solves the complementarity problem of :mod:`freestand.core.contact.modes` for
     the stack at rest under the inertial forces ``s m a_hor`` (horizontal)
     and the reduced weights ``m (g - a_ver)`` (paper section 3, eqs. of
     3.1.1-3.1.2.3 for two blocks, generalised to any stack).

@@ -6,7 +6,7 @@ quantities of Housner's inverted-pendulum theory about each pivot and the
 classical closed-form overturning limits that the paper uses in its section 5
 (Figs. 6 and 7), together with the corrected linearised limit of Makris and
 Roussos (2000). The exact limits from the nonlinear equation of motion are in
-:mod:`freestand.core.rocking_dynamics`.
+:mod:`freestand.core.rocking.integrator`.
 
 Conventions
 -----------

@@ -3,7 +3,7 @@
 Engineers rarely know the friction coefficient, the exact centre of gravity
 or the excitation level. A sweep draws the uncertain inputs from
 distributions, solves the initial motion of every sample with the batch
-solver (:mod:`freestand.core.batch`, paper section 3) and reports, for every
+solver (:mod:`freestand.core.contact.batch`, paper section 3) and reports, for every
 case (configuration x excitation x sense), the probability of each initial
 motion of each block with a binomial confidence interval.
 
@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from freestand.core.batch import (
+from freestand.core.contact.batch import (
     AMBIGUOUS,
     FREE_FLIGHT,
     INCONSISTENT,
@@ -32,8 +32,8 @@ from freestand.core.batch import (
     case_inputs,
     solve_batch,
 )
+from freestand.core.contact.screening import GRAVITY
 from freestand.core.model import Excitation, Stack
-from freestand.core.screening import GRAVITY
 
 # --- distributions ------------------------------------------------------------------------------
 
@@ -508,7 +508,7 @@ def monte_carlo(
         ``horizontal``/``vertical`` variations act on).
     variations : sequence of Variation
         Uncertain inputs. Kinetic friction is kept at or below static
-        friction (:func:`freestand.core.batch.case_inputs`).
+        friction (:func:`freestand.core.contact.batch.case_inputs`).
     count : int
         Samples per case N.
     seed : int, optional

@@ -50,7 +50,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.special import log_ndtr, ndtr, ndtri
 
-from freestand.core.sampling import wilson_interval
+from freestand.core.sweeps.sampling import wilson_interval
 
 #: beta is kept in [BETA_MIN, BETA_MAX] by the optimiser [-]: a replicate
 #: whose stripes separate perfectly converges to BETA_MIN (a step function).

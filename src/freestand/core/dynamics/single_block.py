@@ -4,14 +4,14 @@ A single block on the support under a sampled record either rests, rocks
 without slipping, or slides without lifting off, as long as the assumptions
 of each motion hold; each of these motions has an exact equation that is
 integrated far faster than the general stack path
-(:func:`freestand.core.timehistory.simulate_general`):
+(:func:`freestand.core.dynamics.timehistory.simulate_general`):
 
 * rocking about either lower contact with impacts (Housner 1963; Zhang and
   Makris 2001): the compiled integrator of
-  :mod:`freestand.core.rocking_dynamics`, with the vertical record entering
+  :mod:`freestand.core.rocking.integrator`, with the vertical record entering
   as the effective gravity ``g - a_v(t)``;
 * sliding without rotation (Newmark 1965): the exact event-driven solver of
-  :mod:`freestand.core.sliding`.
+  :mod:`freestand.core.dynamics.sliding`.
 
 Each result is checked against the assumptions that make it a solution of the
 full problem (the same contact problem as the general path):
@@ -32,7 +32,7 @@ sliding
     that side. Sliding against an end stop is left to the general path.
 
 When neither motion passes, the caller (the front end
-:func:`freestand.core.timehistory.simulate`) runs the general path and
+:func:`freestand.core.dynamics.timehistory.simulate`) runs the general path and
 reports the failed assumption in ``diagnostics.fallback``.
 
 References
@@ -49,14 +49,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from freestand.core.ground_motion import GroundMotion
-from freestand.core.model import Block, Sliding, Stack
-from freestand.core.rocking import RockingBlock
-from freestand.core.rocking_dynamics import SampledAcceleration, largest_step
-from freestand.core.rocking_dynamics import simulate as simulate_rocking
-from freestand.core.screening import GRAVITY
-from freestand.core.sliding import slide_block
-from freestand.core.timehistory import (
+from freestand.core.contact.screening import GRAVITY
+from freestand.core.dynamics.results import (
     EVENT_TOLERANCE,
     UPLIFT_GAP_FRACTION,
     ContactTolerances,
@@ -66,6 +60,12 @@ from freestand.core.timehistory import (
     TimeHistoryResult,
     _peak_magnitude,
 )
+from freestand.core.dynamics.sliding import slide_block
+from freestand.core.model import Block, Sliding, Stack
+from freestand.core.motion.ground_motion import GroundMotion
+from freestand.core.rocking.integrator import SampledAcceleration, largest_step
+from freestand.core.rocking.integrator import simulate as simulate_rocking
+from freestand.core.rocking.properties import RockingBlock
 
 
 @dataclass(frozen=True)
@@ -519,7 +519,7 @@ def simulate_single_block(
     Returns
     -------
     SingleBlockAttempt
-        With a :class:`~freestand.core.timehistory.TimeHistoryResult` in the
+        With a :class:`~freestand.core.dynamics.timehistory.TimeHistoryResult` in the
         general path's form when the rocking (or rest) motion or the sliding
         motion satisfies its assumptions (see the module notes); the failed
         assumptions otherwise.

@@ -11,8 +11,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from freestand.core.fragility.fit import Fragility, fit_cloud, fit_fragility
-from freestand.core.fragility.outcomes import Outcome
+from freestand.core.sweeps.fragility.fit import Fragility, fit_cloud, fit_fragility
+from freestand.core.sweeps.fragility.outcomes import Outcome
 
 #: Statuses whose outcomes count.
 COUNTED = ("completed", "capped")
@@ -81,7 +81,7 @@ def analyse(
     Parameters
     ----------
     rows : dict of str to numpy.ndarray
-        The columns of :func:`freestand.core.fragility.campaign.run_tasks`
+        The columns of :func:`freestand.core.sweeps.fragility.campaign.run_tasks`
         (from one run or from a store).
     outcomes : sequence of Outcome
     levels : array_like
@@ -90,7 +90,7 @@ def analyse(
     unit : str, optional
         IM unit, for messages.
     bootstrap, confidence, seed
-        As for :func:`freestand.core.fragility.fit.fit_fragility`.
+        As for :func:`freestand.core.sweeps.fragility.fit.fit_fragility`.
 
     Returns
     -------

@@ -250,9 +250,9 @@ class GroundMotion:
         -----
         The response of a linear oscillator is linear in the record, so one
         factor target / PSA(f) matches it exactly (PSA by
-        :func:`freestand.core.response_spectrum.spectral_response`).
+        :func:`freestand.core.motion.response_spectrum.spectral_response`).
         """
-        from freestand.core.response_spectrum import spectral_response
+        from freestand.core.motion.response_spectrum import spectral_response
 
         if not (target >= 0 and math.isfinite(target)):
             raise ValueError(f"target spectral value must be non-negative, got {target!r}")
@@ -600,7 +600,7 @@ def synthetic_acceleration(
     Procedure: (1) standard normal white noise from ``default_rng(seed)``;
     (2) Kanai-Tajimi filter: the absolute acceleration of an oscillator
     (f_g, zeta_g) on that noise (Kanai 1957; Tajimi 1960), computed with the
-    exact recursion of :func:`freestand.core.response_spectrum.oscillator_response`;
+    exact recursion of :func:`freestand.core.motion.response_spectrum.oscillator_response`;
     (3) multiplication by the envelope of Jennings, Housner and Tsai (1968);
     (4) zero-phase Butterworth high-pass; (5) baseline correction: subtract
     envelope (c0 + c1 t / T) with c0, c1 such that the final ground velocity and
@@ -610,7 +610,7 @@ def synthetic_acceleration(
     """
     from scipy.signal import butter, sosfiltfilt
 
-    from freestand.core.response_spectrum import oscillator_response
+    from freestand.core.motion.response_spectrum import oscillator_response
 
     n = int(round(duration / dt)) + 1
     t = np.arange(n) * dt

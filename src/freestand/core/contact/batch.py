@@ -1,8 +1,8 @@
 """Batch solver: the initial motion of many stacks at once.
 
-The same contact problem as :func:`freestand.core.screening.initial_motion`
+The same contact problem as :func:`freestand.core.contact.screening.initial_motion`
 (paper section 3, solved by enumerating contact modes as in
-:mod:`freestand.core.contact`), for thousands to millions of cases that share
+:mod:`freestand.core.contact.modes`), for thousands to millions of cases that share
 one stack *structure* (number of blocks and sliding restrictions) but may
 differ in every number: masses, inertias, centres, contact positions,
 friction coefficients and the excitation.
@@ -23,13 +23,13 @@ and the tangential forces of the sticking interfaces (a sliding interface
 has ``T = -d mu (N_L + N_R)``); the mode's equations are the zero gap
 acceleration of each closed contact and the zero slip acceleration of each
 sticking interface, a system of at most 3 unknowns per interface. This is the
-Schur complement of :func:`freestand.core.contact.solve_contact`'s full
+Schur complement of :func:`freestand.core.contact.modes.solve_contact`'s full
 system; the two are singular together.
 
 Everything after the linear solve is reproduced exactly from
-:mod:`freestand.core.contact`: the admissibility inequalities with
+:mod:`freestand.core.contact.modes`: the admissibility inequalities with
 ``RELATIVE_TOLERANCE`` scaled by the force and acceleration scales of
-:func:`freestand.core.screening.contact_problem_at_rest`, the static-friction
+:func:`freestand.core.contact.screening.contact_problem_at_rest`, the static-friction
 break-away test for interfaces that start sliding, the relaxation when no
 mode passes it, the choice rule (most sticking interfaces, then fewest open
 contacts, then enumeration order) and the deduplication of identical
@@ -56,9 +56,9 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from numba import njit, prange
 
-from freestand.core.contact import RELATIVE_TOLERANCE, Interface, Tangential
+from freestand.core.contact.modes import RELATIVE_TOLERANCE, Interface, Tangential
+from freestand.core.contact.screening import GRAVITY, Motion
 from freestand.core.model import Sliding, Stack
-from freestand.core.screening import GRAVITY, Motion
 
 #: Status names, indexed by :attr:`BatchResult.status` codes.
 STATUS_NAMES: tuple[str, ...] = ("unique", "ambiguous", "inconsistent", "free-flight", "invalid")
@@ -411,7 +411,7 @@ def case_inputs(
 @dataclass(frozen=True)
 class ModeTable:
     """The contact modes of a stack structure, in the enumeration order of
-    :func:`freestand.core.contact.solve_contact`.
+    :func:`freestand.core.contact.modes.solve_contact`.
 
     Attributes
     ----------
@@ -539,7 +539,7 @@ class ModeTable:
 def _jacobian(cx, cz, bl, br, lvl, jac):
     """Rows (gap left, gap right, slip) per interface of the at-rest stack.
 
-    Same rows as :func:`freestand.core.screening._contact_rows`; both slip
+    Same rows as :func:`freestand.core.contact.screening._contact_rows`; both slip
     rows of an interface are equal (its contacts lie on one level).
     """
     count = cx.shape[0]
@@ -666,7 +666,7 @@ def _finite(values):
 
 @njit(cache=True)
 def _admissible(mode, sliding, mu_static, lam, a, force_tol, accel_tol):
-    """The inequalities of :func:`freestand.core.contact._admissible` (kinetic solution)."""
+    """The inequalities of :func:`freestand.core.contact.modes._admissible` (kinetic solution)."""
     for i in range(mode.shape[0]):
         normal_left = lam[3 * i]
         normal_right = lam[3 * i + 1]
@@ -695,7 +695,7 @@ def _admissible(mode, sliding, mu_static, lam, a, force_tol, accel_tol):
 
 @njit(cache=True)
 def _slides_with_static(mode, a_static, accel_tol):
-    """:func:`freestand.core.contact._slides_with_static_friction`."""
+    """:func:`freestand.core.contact.modes._slides_with_static_friction`."""
     for i in range(mode.shape[0]):
         tangential = mode[i, 2]
         if tangential >= 2:
@@ -716,7 +716,7 @@ def _choose(
     accel_tol,
     alternatives,
 ):
-    """Choice rule and deduplication of :func:`freestand.core.contact.solve_contact`.
+    """Choice rule and deduplication of :func:`freestand.core.contact.modes.solve_contact`.
 
     Fills ``alternatives`` (mode indices, -1 padded) and returns
     ``(distinct count, relaxed)``.
@@ -1242,7 +1242,7 @@ class BatchResult:
     relaxed : numpy.ndarray
         Shape (N,) bool: no state passed the static-friction break-away test
         and the kinetic-only states were accepted
-        (:class:`freestand.core.contact.ContactDiagnostics`).
+        (:class:`freestand.core.contact.modes.ContactDiagnostics`).
     motion : numpy.ndarray
         Shape (N, B) int8 codes into :data:`MOTIONS` (-1: no state).
     pivot : numpy.ndarray
@@ -1343,7 +1343,7 @@ def _chunks(count: int, parts: int) -> np.ndarray:
 
 
 def _tidy(values: np.ndarray, scale: np.ndarray) -> np.ndarray:
-    """Round away the 1e-13 residues as :func:`freestand.core.screening._clean` does."""
+    """Round away the 1e-13 residues as :func:`freestand.core.contact.screening._clean` does."""
     return np.where(np.abs(values) <= 1e-10 * np.maximum(scale, 1.0), 0.0, values)
 
 
@@ -1402,7 +1402,7 @@ def solve_batch(
     chunk: int = 65536,
 ) -> BatchResult:
     """Initial motion of every case (paper section 3; same answers as
-    :func:`freestand.core.screening.initial_motion`).
+    :func:`freestand.core.contact.screening.initial_motion`).
 
     Parameters
     ----------

@@ -1,21 +1,21 @@
 """Compiled event-driven time history of a planar stack (the general path's engine).
 
-This module holds the whole loop of :func:`freestand.core.timehistory.simulate_general`
+This module holds the whole loop of :func:`freestand.core.dynamics.timehistory.simulate_general`
 in numba: the held-mode dynamics, RK4 steps, event detection and location,
 impacts, the choice of the next contact mode, the projection onto the closed
 contacts, overturning and the recording of the history. Python is called only
 between chunks of simulated time (for a progress report and to grow the
 history buffers), never per step.
 
-The physics is the one documented in :mod:`freestand.core.timehistory` and
+The physics is the one documented in :mod:`freestand.core.dynamics.timehistory` and
 ``docs/timehistory.md``; the instantaneous contact problem (at a state, or
 at velocity level for an impact) is the one of
-:mod:`freestand.core.contact`, solved here by the same mode enumeration, the
+:mod:`freestand.core.contact.modes`, solved here by the same mode enumeration, the
 same admissibility tests, static-friction break-away test, relaxation,
 choice rule and deduplication, written on the Delassus matrix
 ``W = J M^-1 J^T`` of the generalised coordinates (``M`` is diagonal: each
 block's coordinates are its centre of gravity and its rotation), as
-:mod:`freestand.core.batch` does at rest::
+:mod:`freestand.core.contact.batch` does at rest::
 
     qdd = M^-1 (f + J^T Lambda),   a = J qdd + b = W Lambda + h,   h = J M^-1 f + b
 
@@ -44,7 +44,7 @@ import math
 import numba as nb
 import numpy as np
 
-from freestand.core.contact import RELATIVE_TOLERANCE
+from freestand.core.contact.modes import RELATIVE_TOLERANCE
 
 #: Event kinds, indexed by the kernel's event codes.
 EVENT_KINDS = (
@@ -131,7 +131,7 @@ def kinematics(geometry, active, q, qd, gap, gap_velocity, slip_velocity, rotati
                slide=None, first=0):  # fmt: skip
     """Gaps, relative velocities, Jacobians and velocity terms of the first ``active`` blocks.
 
-    Same equations as :func:`freestand.core.timehistory.stack_kinematics`
+    Same equations as :func:`freestand.core.dynamics.timehistory.stack_kinematics`
     (``q``, ``qd`` flat, 3 per block; ``jn``, ``jt`` of shape (B, 2, 3 B),
     only the columns of the interface's two blocks are written and the
     others must be zero). With ``slide`` (B,) also the slide of each

@@ -1,12 +1,12 @@
 """The simulations of a fragility campaign: records x levels x samples x polarities.
 
-Every task is one time-history simulation (:func:`freestand.core.timehistory.simulate`)
+Every task is one time-history simulation (:func:`freestand.core.dynamics.timehistory.simulate`)
 of the stack, with its uncertain inputs drawn for that task, under one record
 scaled to one intensity level (or unscaled, for a cloud analysis), in one
 polarity (the sign of a horizontal record is arbitrary).
 
 Determinism: the inputs of sample k at record r and level l are drawn by
-:func:`freestand.core.sampling.draw_samples` with a seed derived from
+:func:`freestand.core.sweeps.sampling.draw_samples` with a seed derived from
 ``numpy.random.SeedSequence(seed, spawn_key=(r, l))``; both polarities use
 the same inputs (common random numbers). Every task is thus a pure function
 of the campaign and its index, and the results do not depend on how the
@@ -35,13 +35,13 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from freestand.core.batch import case_inputs
-from freestand.core.fragility.intensity import IntensityMeasure, intensity, scale_factor
-from freestand.core.fragility.outcomes import Outcome, block_values
-from freestand.core.ground_motion import GroundMotion
+from freestand.core.contact.batch import case_inputs
+from freestand.core.contact.screening import GRAVITY
 from freestand.core.model import Friction, Stack
-from freestand.core.sampling import Variation, draw_samples
-from freestand.core.screening import GRAVITY
+from freestand.core.motion.ground_motion import GroundMotion
+from freestand.core.sweeps.fragility.intensity import IntensityMeasure, intensity, scale_factor
+from freestand.core.sweeps.fragility.outcomes import Outcome, block_values
+from freestand.core.sweeps.sampling import Variation, draw_samples
 
 #: A block is at rest when its centre's speed and ``|omega| * base width`` are
 #: below this [m/s] (1 mm/s) ...
@@ -82,7 +82,7 @@ class Campaign:
     free_time : float
         Cap on the time simulated after the end of a record [s].
     method : str
-        Solver choice of :func:`~freestand.core.timehistory.simulate`.
+        Solver choice of :func:`~freestand.core.dynamics.timehistory.simulate`.
     record_intensity : numpy.ndarray
         IM of each record as given [IM unit] (computed when omitted).
     """
@@ -188,7 +188,7 @@ def sample_stacks(stack: Stack, variations, values) -> list[Stack | None]:
 
     Notes
     -----
-    The values act as :func:`freestand.core.batch.case_inputs` applies them
+    The values act as :func:`freestand.core.contact.batch.case_inputs` applies them
     (set, add or scale; kinetic friction stays at or below static friction).
     """
     if not variations:
@@ -252,7 +252,7 @@ def simulate_task(
     ``polarity``) is simulated; if the stack is still moving at its end,
     again to ``free_time`` after it (see the module notes).
     """
-    from freestand.core.timehistory import SupportMotion, simulate
+    from freestand.core.dynamics.timehistory import SupportMotion, simulate
 
     horizontal = np.asarray(motion.horizontal) * (factor * polarity)
     vertical = None if motion.vertical is None else np.asarray(motion.vertical) * factor
@@ -313,7 +313,7 @@ def run_tasks(campaign: Campaign, start: int, stop: int) -> dict[str, np.ndarray
         the IM of the scaled record, the drawn inputs (in SI, a factor for
         ``*=``), the status and message, the solver path
         (``diagnostics.method``), the simulated time [s], the per-block
-        values of :data:`freestand.core.fragility.outcomes.BLOCK_VALUES` (NaN
+        values of :data:`freestand.core.sweeps.fragility.outcomes.BLOCK_VALUES` (NaN
         for failed and invalid simulations) and whether each outcome occurred.
     """
     names = columns(campaign)

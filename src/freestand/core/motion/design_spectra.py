@@ -1,6 +1,6 @@
 """Design response spectra: US NRC RG 1.60, EN 1998-1, and the crane's stand-in.
 
-Each function returns a :class:`freestand.core.spectra.Spectrum` (spectral
+Each function returns a :class:`freestand.core.motion.spectra.Spectrum` (spectral
 acceleration [m/s^2] against frequency [Hz]).
 """
 
@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from freestand.core.spectra import Spectrum
+from freestand.core.motion.spectra import Spectrum
 
 #: 36 inches per 1 g of peak ground acceleration [m] (RG 1.60, control point D).
 RG160_DISPLACEMENT_PER_G = 36 * 0.0254

@@ -1,6 +1,6 @@
 """Exact nonlinear rocking of a rigid block with impacts (numba-compiled).
 
-The block of :class:`freestand.core.rocking.RockingBlock` rocks about ``pivot``
+The block of :class:`freestand.core.rocking.properties.RockingBlock` rocks about ``pivot``
 (rotation theta > 0) or about ``other_pivot`` (theta < 0). About the pivot of
 side s = sgn(theta), with b_s, h_s, R_s, alpha_s, I_s its geometry and
 inertia, the equation of motion is the equation of Zhang and Makris (2001,
@@ -45,7 +45,7 @@ from dataclasses import dataclass
 import numba as nb
 import numpy as np
 
-from freestand.core.rocking import RockingBlock
+from freestand.core.rocking.properties import RockingBlock
 from freestand.errors import FreestandError
 
 #: Pulse kinds and their integer codes in the compiled code.

@@ -2,7 +2,7 @@
 
 The block (mass m) rests on a support with horizontal acceleration a_h(t)
 (+x) and downward acceleration a_v(t) (see
-:mod:`freestand.core.ground_motion`). The normal force is N = m (g - a_v).
+:mod:`freestand.core.motion.ground_motion`). The normal force is N = m (g - a_v).
 With s the displacement of the block relative to the support (+x) and Coulomb
 friction (paper section 3.1.2.1; Newmark 1965):
 
@@ -45,7 +45,7 @@ from dataclasses import dataclass, field
 import numba
 import numpy as np
 
-from freestand.core.ground_motion import GroundMotion
+from freestand.core.motion.ground_motion import GroundMotion
 
 # indices into the statistics array of the kernel
 _S_MAX_ABS = 0

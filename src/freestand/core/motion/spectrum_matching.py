@@ -4,7 +4,7 @@ A suite of records compatible with a design spectrum (US NRC SRP 3.7.1) is made
 in three steps for each record:
 
 1. a **seed** from the stochastic model of Rezaeian and Der Kiureghian (2010)
-   (:mod:`freestand.core.synthesis`): a nonstationary motion with a realistic
+   (:mod:`freestand.core.motion.synthesis`): a nonstationary motion with a realistic
    envelope and a frequency content that changes in time;
 2. **spectral matching** by the continuous-wavelet-transform method of Montejo
    and Suarez (2013): the record is the sum of its wavelet details at the
@@ -21,11 +21,11 @@ in three steps for each record:
    Al Atik and Abrahamson (2010);
 3. **baseline correction**: an envelope-weighted linear correction makes the
    final velocity and displacement zero
-   (:func:`freestand.core.ground_motion.baseline_correct`).
+   (:func:`freestand.core.motion.ground_motion.baseline_correct`).
 
 The spectrum of every iterate is computed by the exact piecewise-linear
-recursion of :mod:`freestand.core.response_spectrum`, with its coefficients
-built once (:class:`~freestand.core.response_spectrum.SpectrumPlan`).
+recursion of :mod:`freestand.core.motion.response_spectrum`, with its coefficients
+built once (:class:`~freestand.core.motion.response_spectrum.SpectrumPlan`).
 
 Acceptance (SRP 3.7.1 option 1 approach 2, as in the issue): the spectrum at
 the target's damping, at 100 log-spaced frequencies per decade from 0.2 to
@@ -53,10 +53,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from freestand.core.ground_motion import baseline_correct
-from freestand.core.response_spectrum import SpectrumPlan
-from freestand.core.spectra import Spectrum
-from freestand.core.synthesis import SeedParameters, draw_seed_parameters, seed_acceleration
+from freestand.core.motion.ground_motion import baseline_correct
+from freestand.core.motion.response_spectrum import SpectrumPlan
+from freestand.core.motion.spectra import Spectrum
+from freestand.core.motion.synthesis import SeedParameters, draw_seed_parameters, seed_acceleration
 
 
 @dataclass(frozen=True)
@@ -97,7 +97,7 @@ def zero_period_acceleration(target: Spectrum) -> float:
     """The target's zero-period (rigid) acceleration [m/s^2].
 
     ``metadata["zero_period_acceleration"]`` when the spectrum states it (the
-    design spectra of :mod:`freestand.core.design_spectra` do), otherwise its
+    design spectra of :mod:`freestand.core.motion.design_spectra` do), otherwise its
     value at its highest tabulated frequency.
     """
     value = target.metadata.get("zero_period_acceleration")

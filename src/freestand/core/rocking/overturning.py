@@ -1,7 +1,7 @@
 """Overturning assessment of a rocking block (paper section 5, Figs. 6-8).
 
-Collects the closed-form limits of :mod:`freestand.core.rocking` and the exact
-limits of :mod:`freestand.core.rocking_dynamics` into result objects that a
+Collects the closed-form limits of :mod:`freestand.core.rocking.properties` and the exact
+limits of :mod:`freestand.core.rocking.integrator` into result objects that a
 command, a report or :mod:`freestand.plot.overturning` can consume, and checks
 a response spectrum against them.
 
@@ -30,12 +30,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from freestand.core.rocking import RockingBlock
-from freestand.core.rocking_dynamics import (
+from freestand.core.motion.spectra import Spectrum, SpectrumCheck, spectrum_check
+from freestand.core.rocking.integrator import (
     exact_minimum_overturning_amplitude,
     exact_rectangular_duration,
 )
-from freestand.core.spectra import Spectrum, SpectrumCheck, spectrum_check
+from freestand.core.rocking.properties import RockingBlock
 
 #: Names of the half-sine limits, in the order they are reported.
 HALF_SINE_LIMITS = ("housner", "makris-roussos", "exact")

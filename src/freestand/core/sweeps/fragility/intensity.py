@@ -6,16 +6,16 @@ Kinds:
     Peak horizontal ground acceleration max |a_h| [m/s^2].
 ``pgv``
     Peak horizontal ground velocity [m/s] (the record integrated from rest,
-    :meth:`freestand.core.ground_motion.GroundMotion.velocity`).
+    :meth:`freestand.core.motion.ground_motion.GroundMotion.velocity`).
 ``sa``
     Pseudo-spectral acceleration of the horizontal component at frequency f
     [Hz] and damping zeta [-], ``omega^2 max|u|`` [m/s^2]
-    (:func:`freestand.core.response_spectrum.spectral_response`).
+    (:func:`freestand.core.motion.response_spectrum.spectral_response`).
 ``pga-alpha``
     PGA / (g tan alpha) [-] of a block: the peak acceleration as a multiple
     of the acceleration that starts the block rocking on a rigid base,
     ``g tan(alpha)`` (Housner 1963), alpha the smaller slenderness angle of
-    its two lower contacts (:class:`freestand.core.rocking.RockingBlock`).
+    its two lower contacts (:class:`freestand.core.rocking.properties.RockingBlock`).
 
 All four are proportional to the scale factor of a record (the oscillator and
 the integration are linear), so a record is scaled to a level x by the single
@@ -28,10 +28,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from freestand.core.ground_motion import GroundMotion
+from freestand.core.contact.screening import GRAVITY
 from freestand.core.model import Stack
-from freestand.core.rocking import RockingBlock
-from freestand.core.screening import GRAVITY
+from freestand.core.motion.ground_motion import GroundMotion
+from freestand.core.rocking.properties import RockingBlock
 
 #: IM kinds and their SI units.
 KINDS = {"pga": "m/s^2", "pgv": "m/s", "sa": "m/s^2", "pga-alpha": "-"}
@@ -132,7 +132,7 @@ def intensity(
     if measure.kind == "pgv":
         return motion.peak_horizontal_velocity
     if measure.kind == "sa":
-        from freestand.core.response_spectrum import spectral_response
+        from freestand.core.motion.response_spectrum import spectral_response
 
         response = spectral_response(motion, None, [measure.frequency], measure.damping)
         return float(response.pseudo_acceleration[0])

@@ -1,0 +1,1 @@
+"""What happens at an instant: the contact problem of a stack, screening from rest."""

@@ -1,0 +1,1 @@
+"""What happens over time: stack time histories and single-block fast paths."""

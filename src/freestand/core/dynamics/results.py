@@ -1,0 +1,319 @@
+"""Types shared by every time-history path: support motion, tolerances, events, results.
+
+:mod:`freestand.core.dynamics.timehistory` (the general event-driven path and
+the front end) and :mod:`freestand.core.dynamics.single_block` (the exact
+single-block fast path) both return a :class:`TimeHistoryResult` built from
+these; they live here so that neither path imports the other's module.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+#: Events on forces fire below ``-EVENT_TOLERANCE * force scale`` (larger than
+#: the contact solver's tolerance, so that the state found by bisection is
+#: unambiguous for the solver).
+EVENT_TOLERANCE = 1e-7
+
+
+#: A contact has lifted off (``uplift``) when its gap exceeds this fraction of
+#: the base width of its interface [-]: 1 micrometre per metre of base. Smaller
+#: openings (a contact mode that opens for an instant at round-off level) are
+#: not a physical lift-off.
+UPLIFT_GAP_FRACTION = 1e-6
+
+
+@dataclass(frozen=True)
+class SupportMotion:
+    """Support accelerations sampled at a constant time step, piecewise linear in time.
+
+    Parameters
+    ----------
+    time_step : float
+        Sampling interval dt [s], positive.
+    horizontal : numpy.ndarray
+        Horizontal support acceleration a_h [m/s^2] at ``k dt``, +x positive.
+    vertical : numpy.ndarray or None
+        Downward support acceleration a_v [m/s^2] at ``k dt`` (the weight is
+        ``m (g - a_v)``); None for none. Same length as ``horizontal``.
+
+    Notes
+    -----
+    Before the first and after the last sample the accelerations are zero.
+    """
+
+    time_step: float
+    horizontal: np.ndarray
+    vertical: np.ndarray | None = None
+
+    def __post_init__(self) -> None:
+        if not (self.time_step > 0.0 and math.isfinite(self.time_step)):
+            raise ValueError(f"time_step must be positive, not {self.time_step!r}")
+        horizontal = np.asarray(self.horizontal, dtype=float)
+        if horizontal.ndim != 1 or horizontal.size < 2:
+            raise ValueError("horizontal must be a 1-D array of at least 2 samples")
+        object.__setattr__(self, "horizontal", horizontal)
+        if self.vertical is not None:
+            vertical = np.asarray(self.vertical, dtype=float)
+            if vertical.shape != horizontal.shape:
+                raise ValueError(
+                    f"vertical has {vertical.size} samples, horizontal {horizontal.size}; "
+                    "give both at the same instants"
+                )
+            object.__setattr__(self, "vertical", vertical)
+
+    @property
+    def duration(self) -> float:
+        """Time of the last sample [s]."""
+        return (self.horizontal.size - 1) * self.time_step
+
+    def __call__(self, time: float) -> tuple[float, float]:
+        """(a_h, a_v) [m/s^2] at ``time`` [s] by linear interpolation."""
+        position = time / self.time_step
+        if position < 0.0 or position > self.horizontal.size - 1:
+            return 0.0, 0.0
+        index = min(int(position), self.horizontal.size - 2)
+        fraction = position - index
+        a_h = (1.0 - fraction) * self.horizontal[index] + fraction * self.horizontal[index + 1]
+        if self.vertical is None:
+            return float(a_h), 0.0
+        a_v = (1.0 - fraction) * self.vertical[index] + fraction * self.vertical[index + 1]
+        return float(a_h), float(a_v)
+
+
+@dataclass(frozen=True)
+class ContactTolerances:
+    """Tolerances that decide the contact state from the kinematics.
+
+    Parameters
+    ----------
+    gap : float
+        A contact with ``gap <= gap`` [m] touches.
+    velocity : float
+        A touching contact is active when its gap velocity is ``<= velocity``
+        [m/s]; a slip velocity within ``velocity`` counts as zero (the
+        interface may stick).
+    slide : float
+        An end stop is engaged when the slide is within ``slide`` [m] of the
+        parking position.
+    """
+
+    gap: float = 1e-7
+    velocity: float = 1e-4
+    slide: float = 1e-7
+
+
+@dataclass(frozen=True)
+class TimeHistoryEvent:
+    """One event of a simulation.
+
+    Attributes
+    ----------
+    time : float
+        Time [s].
+    kind : str
+        ``"start"``, ``"impact"`` (a gap closed), ``"tangential-impact"`` (no
+        consistent sliding state: a velocity jump in which sliding contacts
+        may stick resolves it, Painleve's paradox), ``"lift-off"`` (a normal
+        force reached zero), ``"slip"`` (static friction could no longer
+        hold), ``"slip-stop"`` (a slip velocity reached zero), ``"stop-impact"``
+        (a block slid back onto its end stop), ``"overturn"``.
+    interface : int
+        Interface (= upper block index) concerned, -1 for none.
+    contact : int
+        0 left, 1 right, -1 for the whole interface.
+    motions : tuple of str
+        Motion of every block relative to the body below after the event
+        (``rest``, ``slide``, ``rock``, ``slide-rock``, ``free-flight``,
+        ``overturned``).
+    velocity_before, velocity_after : numpy.ndarray
+        Shape (B, 3): generalised velocities [m/s, rad/s] across the event
+        (they differ at impacts).
+    status : str
+        Status of the contact solve after the event (``unique``,
+        ``ambiguous``).
+    """
+
+    time: float
+    kind: str
+    interface: int
+    contact: int
+    motions: tuple[str, ...]
+    velocity_before: np.ndarray = field(repr=False)
+    velocity_after: np.ndarray = field(repr=False)
+    status: str = "unique"
+
+
+@dataclass(frozen=True)
+class TimeHistoryDiagnostics:
+    """How a simulation went.
+
+    Attributes
+    ----------
+    time_step : float
+        Integration step [s].
+    steps : int
+        Accepted steps.
+    contact_solves : int
+        Complete contact problems solved (start, events).
+    impact_solves : int
+        Impact problems solved.
+    ambiguous_solves : int
+        Contact or impact solves with several admissible states (the
+        documented rule chose).
+    max_penetration : float
+        Largest penetration [m] found at an accepted step (before the
+        projection back onto the contact).
+    max_projection : float
+        Largest position correction [m, rad] of the projection onto the closed
+        contacts.
+    method : str
+        The path that produced the result: ``"general"`` (event-driven stack
+        path), ``"single-block rocking"``, ``"single-block sliding"`` or
+        ``"single-block rest"`` (the exact single-block equations, see
+        :mod:`freestand.core.dynamics.single_block`).
+    checks : tuple of str
+        The assumptions of a single-block path, as verified, in words.
+    fallback : str
+        Why the single-block path was not used (its failed assumption), if
+        it was tried; empty otherwise.
+    """
+
+    time_step: float
+    steps: int
+    contact_solves: int
+    impact_solves: int
+    ambiguous_solves: int
+    max_penetration: float
+    max_projection: float
+    method: str = "general"
+    checks: tuple[str, ...] = ()
+    fallback: str = ""
+
+
+@dataclass(frozen=True)
+class TimeHistoryResult:
+    """Outcome of :func:`simulate`.
+
+    Attributes
+    ----------
+    configuration : str
+        Stack name.
+    block_names : tuple of str
+        Bottom to top.
+    status : str
+        ``"completed"`` (to the requested duration, or until every block
+        overturned) or ``"failed"`` (see ``message``; the arrays hold the
+        motion up to the failure).
+    message : str
+        What happened, in words.
+    time : numpy.ndarray
+        Shape (K,), non-decreasing [s]; an event appears as two rows at the
+        same time (before and after).
+    position, velocity : numpy.ndarray
+        Shape (K, B, 3): ``(u_x, u_z, phi)`` [m, m, rad] of every block (its
+        centre's displacement from rest relative to the support, its rotation)
+        and their rates; NaN after the block overturned.
+    normal_force : numpy.ndarray
+        Shape (K, B, 2): normal force [N] on each block at its left and right
+        lower contact.
+    tangential_force : numpy.ndarray
+        Shape (K, B): tangential force [N] on each block from the body below,
+        along that body's surface.
+    relative_rotation : numpy.ndarray
+        Shape (K, B): rotation [rad] of each block relative to the body below.
+    slide : numpy.ndarray
+        Shape (K, B): slide [m] of each block along the body below from its
+        starting position.
+    events : tuple of TimeHistoryEvent
+    max_rotation : numpy.ndarray
+        Shape (B,): largest ``|relative rotation|`` [rad], refined between
+        the steps by cubic Hermite interpolation.
+    max_slide : numpy.ndarray
+        Shape (B,): largest ``|slide|`` [m] per interface.
+    uplift : numpy.ndarray
+        Shape (B,), bool: a contact of the interface lifted off by more than
+        :data:`UPLIFT_GAP_FRACTION` of the interface's base width (a
+        momentary lift-off at round-off level does not count).
+    free_flight : numpy.ndarray
+        Shape (B,), bool: the block left the body below, both contacts open
+        by more than that gap.
+    overturned : numpy.ndarray
+        Shape (B,), bool.
+    overturn_time : numpy.ndarray
+        Shape (B,): time of overturning [s], NaN if none.
+    diagnostics : TimeHistoryDiagnostics
+    max_lift : numpy.ndarray
+        Shape (B,): largest gap [m] opened at a contact of each interface
+        (the larger of the two contacts' gaps; 0 for none).
+    """
+
+    configuration: str
+    block_names: tuple[str, ...]
+    status: str
+    message: str
+    time: np.ndarray = field(repr=False)
+    position: np.ndarray = field(repr=False)
+    velocity: np.ndarray = field(repr=False)
+    normal_force: np.ndarray = field(repr=False)
+    tangential_force: np.ndarray = field(repr=False)
+    relative_rotation: np.ndarray = field(repr=False)
+    slide: np.ndarray = field(repr=False)
+    events: tuple[TimeHistoryEvent, ...] = field(repr=False)
+    max_rotation: np.ndarray
+    max_slide: np.ndarray
+    uplift: np.ndarray
+    free_flight: np.ndarray
+    overturned: np.ndarray
+    overturn_time: np.ndarray
+    diagnostics: TimeHistoryDiagnostics = field(repr=False)
+    max_lift: np.ndarray | None = None
+
+    def block_index(self, name: str) -> int:
+        """Index of the block called ``name``."""
+        return self.block_names.index(name)
+
+    def events_of(self, kind: str) -> tuple[TimeHistoryEvent, ...]:
+        """The events of one kind, in time order."""
+        return tuple(event for event in self.events if event.kind == kind)
+
+
+def _peak_magnitude(time: np.ndarray, value: np.ndarray, rate: np.ndarray) -> float:
+    """Largest ``|value|`` of a sampled motion, refined between samples.
+
+    Where the rate changes sign inside a step the cubic Hermite interpolant
+    of (value, rate) at the step ends gives the turning point, so the peak is
+    found to the integration accuracy rather than to the sampling.
+    """
+    finite = np.isfinite(value) & np.isfinite(rate)
+    peak = float(np.max(np.abs(value[finite]), initial=0.0))
+    with np.errstate(invalid="ignore"):
+        turning = finite[:-1] & finite[1:] & (rate[:-1] * rate[1:] < 0.0)
+    k = np.flatnonzero(turning)
+    h = time[k + 1] - time[k]
+    k, h = k[h > 0.0], h[h > 0.0]
+    if k.size == 0:
+        return peak
+    y0, y1, m0, m1 = value[k], value[k + 1], rate[k] * h, rate[k + 1] * h
+    # p(s) = y0 + m0 s + (3 (y1 - y0) - 2 m0 - m1) s^2 + (2 (y0 - y1) + m0 + m1) s^3
+    c2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1
+    c3 = 2.0 * (y0 - y1) + m0 + m1
+    # roots of p'(s) = 3 c3 s^2 + 2 c2 s + m0 in the stable form q = -(b + sgn(b) sqrt(d)) / 2
+    a, b = 3.0 * c3, 2.0 * c2
+    with np.errstate(all="ignore"):
+        root = np.sqrt(b * b - 4.0 * a * m0)
+        q = -0.5 * (b + np.where(b >= 0.0, root, -root))
+        for s in (q / a, m0 / q):
+            inside = np.isfinite(s) & (s > 0.0) & (s < 1.0)
+            if inside.any():
+                x = s[inside]
+                candidate = y0[inside] + (m0[inside] + (c2[inside] + c3[inside] * x) * x) * x
+                peak = max(peak, float(np.max(np.abs(candidate))))
+    return peak
+
+
+#: Solvers of :func:`simulate`.
+METHODS = ("auto", "general", "single-block")

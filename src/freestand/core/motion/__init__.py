@@ -1,0 +1,1 @@
+"""What the support does: ground-motion records, pulses, record and design spectra."""

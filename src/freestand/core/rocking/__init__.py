@@ -1,0 +1,1 @@
+"""When a rocking block falls: rocking properties, its integrator, overturning limits."""

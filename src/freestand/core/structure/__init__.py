@@ -1,0 +1,1 @@
+"""How the support itself vibrates: the bridge beam with its parked cart."""

@@ -1,0 +1,1 @@
+"""How likely, over many cases: mode maps, Monte Carlo and fragility campaigns."""
