@@ -68,7 +68,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from freestand.core.contact.modes import ContactProblem, Interface
+from freestand.core.contact.problem import ContactProblem, Interface
 from freestand.core.contact.screening import GRAVITY
 from freestand.core.dynamics import engine
 from freestand.core.dynamics.results import (
