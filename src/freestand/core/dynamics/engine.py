@@ -9,20 +9,11 @@ history buffers), never per step.
 
 The physics is the one documented in :mod:`freestand.core.dynamics.timehistory` and
 ``docs/timehistory.md``; the instantaneous contact problem (at a state, or
-at velocity level for an impact) is the one of
-:mod:`freestand.core.contact.modes`, solved here by the same mode enumeration, the
-same admissibility tests, static-friction break-away test, relaxation,
-choice rule and deduplication, written on the Delassus matrix
-``W = J M^-1 J^T`` of the generalised coordinates (``M`` is diagonal: each
-block's coordinates are its centre of gravity and its rotation), as
-:mod:`freestand.core.contact.batch` does at rest::
-
-    qdd = M^-1 (f + J^T Lambda),   a = J qdd + b = W Lambda + h,   h = J M^-1 f + b
-
-where ``a`` are the gap and slip accelerations of the mode's rows. In a
-contact mode the unknowns are the normal forces of the closed contacts and
-the tangential forces of the sticking interfaces; a sliding interface has
-``T = -d mu (N_L + N_R)``.
+at velocity level for an impact) is solved by the one compiled contact kernel
+of :mod:`freestand.core.contact.engine` (mode enumeration, admissibility,
+static-friction break-away test, relaxation, choice rule and deduplication, on
+the Delassus matrix ``W = J M^-1 J^T``), the same that ``screen``, ``map`` and
+``sample`` use.
 
 Codes used by the kernels
 -------------------------
