@@ -1,8 +1,8 @@
 """Batch solver: the initial motion of many stacks at once.
 
 The same contact problem as :func:`freestand.core.contact.screening.initial_motion`
-(paper section 3, solved by enumerating contact modes as in
-:mod:`freestand.core.contact.modes`), for thousands to millions of cases that share
+(paper section 3), solved by the same compiled contact kernel
+(:mod:`freestand.core.contact.engine`), for thousands to millions of cases that share
 one stack *structure* (number of blocks and sliding restrictions) but may
 differ in every number: masses, inertias, centres, contact positions,
 friction coefficients and the excitation.
@@ -23,11 +23,11 @@ and the tangential forces of the sticking interfaces (a sliding interface
 has ``T = -d mu (N_L + N_R)``); the mode's equations are the zero gap
 acceleration of each closed contact and the zero slip acceleration of each
 sticking interface, a system of at most 3 unknowns per interface. This is the
-Schur complement of :func:`freestand.core.contact.modes.solve_contact`'s full
-system; the two are singular together.
+Schur complement of the full system ``[M -J^T; J 0]``; the two are singular
+together.
 
-Everything after the linear solve is reproduced exactly from
-:mod:`freestand.core.contact.modes`: the admissibility inequalities with
+Everything after the linear solve is the kernel's
+(:func:`freestand.core.contact.engine.solve_contact_states`): the admissibility inequalities with
 ``RELATIVE_TOLERANCE`` scaled by the force and acceleration scales of
 :func:`freestand.core.contact.screening.contact_problem_at_rest`, the static-friction
 break-away test for interfaces that start sliding, the relaxation when no
@@ -424,7 +424,7 @@ def case_inputs(
 @dataclass(frozen=True)
 class ModeTable:
     """The contact modes of a stack structure, in the enumeration order of
-    :func:`freestand.core.contact.modes.solve_contact`.
+    :func:`freestand.core.contact.engine.solve_contact_states` at rest.
 
     Attributes
     ----------
@@ -1078,7 +1078,7 @@ class BatchResult:
     relaxed : numpy.ndarray
         Shape (N,) bool: no state passed the static-friction break-away test
         and the kinetic-only states were accepted
-        (:class:`freestand.core.contact.modes.ContactDiagnostics`).
+        (:class:`freestand.core.contact.problem.ContactDiagnostics`).
     motion : numpy.ndarray
         Shape (N, B) int8 codes into :data:`MOTIONS` (-1: no state).
     pivot : numpy.ndarray

@@ -1,4 +1,9 @@
-"""The instantaneous contact problem of a planar rigid-block stack.
+"""Numpy reference solver of the instantaneous contact problem of a planar stack.
+
+An independent implementation kept for the tests (the oracle of the compiled
+kernel :mod:`freestand.core.contact.engine`, which every production path uses;
+no production module imports this one). The problem types are those of
+:mod:`freestand.core.contact.problem`, re-exported here.
 
 At an instant the generalised accelerations ``qdd`` of the blocks and the
 contact forces obey (notation in ``docs/nomenclature.md``)::
