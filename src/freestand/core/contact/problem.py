@@ -254,7 +254,7 @@ class ContactDiagnostics:
 
 @dataclass(frozen=True)
 class ContactResult:
-    """Outcome of :func:`solve_contact`.
+    """Outcome of a contact solve (:func:`freestand.core.contact.engine.solve`).
 
     Attributes
     ----------
