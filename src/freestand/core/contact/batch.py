@@ -1,8 +1,8 @@
 """Batch solver: the initial motion of many stacks at once.
 
 The same contact problem as :func:`freestand.core.contact.screening.initial_motion`
-(paper section 3, solved by enumerating contact modes as in
-:mod:`freestand.core.contact.modes`), for thousands to millions of cases that share
+(paper section 3), solved by the same compiled contact kernel
+(:mod:`freestand.core.contact.engine`), for thousands to millions of cases that share
 one stack *structure* (number of blocks and sliding restrictions) but may
 differ in every number: masses, inertias, centres, contact positions,
 friction coefficients and the excitation.
@@ -23,11 +23,11 @@ and the tangential forces of the sticking interfaces (a sliding interface
 has ``T = -d mu (N_L + N_R)``); the mode's equations are the zero gap
 acceleration of each closed contact and the zero slip acceleration of each
 sticking interface, a system of at most 3 unknowns per interface. This is the
-Schur complement of :func:`freestand.core.contact.modes.solve_contact`'s full
-system; the two are singular together.
+Schur complement of the full system ``[M -J^T; J 0]``; the two are singular
+together.
 
-Everything after the linear solve is reproduced exactly from
-:mod:`freestand.core.contact.modes`: the admissibility inequalities with
+Everything after the linear solve is the kernel's
+(:func:`freestand.core.contact.engine.solve_contact_states`): the admissibility inequalities with
 ``RELATIVE_TOLERANCE`` scaled by the force and acceleration scales of
 :func:`freestand.core.contact.screening.contact_problem_at_rest`, the static-friction
 break-away test for interfaces that start sliding, the relaxation when no
@@ -56,7 +56,20 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from numba import njit, prange
 
-from freestand.core.contact.modes import RELATIVE_TOLERANCE, Interface, Tangential
+from freestand.core.contact.engine import (
+    INFO_RELAXED,
+    INFO_SIZE,
+    RELATIVE_TOLERANCE,
+    accelerations,
+    accelerations_admissible,
+    choose,
+    delassus,
+    forces_admissible,
+    slides_with_static,
+    solve_contact_states,
+    solve_mode,
+)
+from freestand.core.contact.problem import Interface, Tangential
 from freestand.core.contact.screening import GRAVITY, Motion
 from freestand.core.model import Sliding, Stack
 
@@ -411,7 +424,7 @@ def case_inputs(
 @dataclass(frozen=True)
 class ModeTable:
     """The contact modes of a stack structure, in the enumeration order of
-    :func:`freestand.core.contact.modes.solve_contact`.
+    :func:`freestand.core.contact.engine.solve_contact_states` at rest.
 
     Attributes
     ----------
@@ -562,98 +575,14 @@ def _jacobian(cx, cz, bl, br, lvl, jac):
 
 
 @njit(cache=True)
-def _delassus(jac, minv, free_acc, w, h):
-    """``W = J M^-1 J^T`` and ``h = J a_free`` with ``a_free = M^-1 f``."""
-    rows = jac.shape[0]
-    n = jac.shape[1]
-    for r in range(rows):
-        total = 0.0
-        for c in range(n):
-            total += jac[r, c] * free_acc[c]
-        h[r] = total
-        for s in range(r, rows):
-            total = 0.0
-            for c in range(n):
-                total += jac[r, c] * jac[s, c] * minv[c]
-            w[r, s] = total
-            w[s, r] = total
-
-
-@njit(cache=True)
-def _solve_mode(w, h, k, index, direction, mu, lam, a, matrix, rhs, coeff):
-    """Solve one contact mode for the forces ``lam`` and contact accelerations ``a``.
-
-    ``index[:k]`` are the rows of the mode's unknowns (closed contacts' gap
-    rows, sticking interfaces' slip rows) and ``direction[:k]`` the slide
-    direction of a normal force's interface (its friction ``-d mu N`` rides
-    on the slip row). Returns False when the system is singular (a zero
-    pivot).
-    """
-    for j in range(k):
-        column = index[j]
-        coeff[j] = -direction[j] * mu[column // 3]
-    for r in range(k):
-        row = index[r]
-        rhs[r] = -h[row]
-        for j in range(k):
-            column = index[j]
-            value = w[row, column]
-            if coeff[j] != 0.0:
-                value += coeff[j] * w[row, column - column % 3 + 2]
-            matrix[r, j] = value
-    # Gaussian elimination with partial pivoting.
-    for p in range(k):
-        pivot = p
-        largest = abs(matrix[p, p])
-        for r in range(p + 1, k):
-            if abs(matrix[r, p]) > largest:
-                largest = abs(matrix[r, p])
-                pivot = r
-        if largest == 0.0:
-            return False
-        if pivot != p:
-            for j in range(k):
-                tmp = matrix[p, j]
-                matrix[p, j] = matrix[pivot, j]
-                matrix[pivot, j] = tmp
-            tmp = rhs[p]
-            rhs[p] = rhs[pivot]
-            rhs[pivot] = tmp
-        for r in range(p + 1, k):
-            factor = matrix[r, p] / matrix[p, p]
-            if factor != 0.0:
-                for j in range(p + 1, k):
-                    matrix[r, j] -= factor * matrix[p, j]
-                rhs[r] -= factor * rhs[p]
-    for p in range(k - 1, -1, -1):
-        total = rhs[p]
-        for j in range(p + 1, k):
-            total -= matrix[p, j] * rhs[j]
-        rhs[p] = total / matrix[p, p]
-    lam[:] = 0.0
-    for j in range(k):
-        column = index[j]
-        lam[column] += rhs[j]
-        if coeff[j] != 0.0:
-            lam[column - column % 3 + 2] += coeff[j] * rhs[j]
-    rows = h.shape[0]
-    for r in range(rows):
-        total = h[r]
-        for s in range(rows):
-            total += w[r, s] * lam[s]
-        a[r] = total
-    return True
-
-
-@njit(cache=True)
-def _accelerations(jac, minv, free_acc, lam, qdd):
-    """``qdd = M^-1 f + M^-1 J^T lam``."""
-    n = jac.shape[1]
-    for c in range(n):
-        total = 0.0
-        for r in range(jac.shape[0]):
-            total += jac[r, c] * lam[r]
-        qdd[c] = free_acc[c] + minv[c] * total
+def _split(jac, jn, jt):
+    """The at-rest rows in the kernel's layout: gap rows ``jn`` and (equal) slip rows ``jt``."""
+    for i in range(jn.shape[0]):
+        for c in range(jac.shape[1]):
+            jn[i, 0, c] = jac[3 * i, c]
+            jn[i, 1, c] = jac[3 * i + 1, c]
+            jt[i, 0, c] = jac[3 * i + 2, c]
+            jt[i, 1, c] = jac[3 * i + 2, c]
 
 
 @njit(cache=True)
@@ -662,106 +591,6 @@ def _finite(values):
         if not np.isfinite(value):
             return False
     return True
-
-
-@njit(cache=True)
-def _admissible(mode, sliding, mu_static, lam, a, force_tol, accel_tol):
-    """The inequalities of :func:`freestand.core.contact.modes._admissible` (kinetic solution)."""
-    for i in range(mode.shape[0]):
-        normal_left = lam[3 * i]
-        normal_right = lam[3 * i + 1]
-        for side in range(2):
-            if mode[i, side] == 1:
-                if lam[3 * i + side] < -force_tol:
-                    return False
-            elif a[3 * i + side] < -accel_tol:
-                return False
-        tangential = mode[i, 2]
-        if tangential == 1:
-            if sliding[i] == 1:
-                continue
-            limit = mu_static[i] * (normal_left + normal_right) + force_tol
-            force = lam[3 * i + 2]
-            if sliding[i] != 2 and -force > limit:
-                return False
-            if sliding[i] != 3 and force > limit:
-                return False
-        elif tangential >= 2:
-            direction = 1.0 if tangential == 2 else -1.0
-            if direction * a[3 * i + 2] < -accel_tol:
-                return False
-    return True
-
-
-@njit(cache=True)
-def _slides_with_static(mode, a_static, accel_tol):
-    """:func:`freestand.core.contact.modes._slides_with_static_friction`."""
-    for i in range(mode.shape[0]):
-        tangential = mode[i, 2]
-        if tangential >= 2:
-            direction = 1.0 if tangential == 2 else -1.0
-            if direction * a_static[3 * i + 2] < -accel_tol:
-                return False
-    return True
-
-
-@njit(cache=True)
-def _choose(
-    priority,
-    candidate,
-    physical,
-    lam_all,
-    qdd_all,
-    force_tol,
-    accel_tol,
-    alternatives,
-):
-    """Choice rule and deduplication of :func:`freestand.core.contact.modes.solve_contact`.
-
-    Fills ``alternatives`` (mode indices, -1 padded) and returns
-    ``(distinct count, relaxed)``.
-    """
-    count_physical = 0
-    count_candidate = 0
-    for k in range(candidate.shape[0]):
-        if candidate[k]:
-            count_candidate += 1
-            if physical[k]:
-                count_physical += 1
-    relaxed = count_physical == 0 and count_candidate > 0
-    alternatives[:] = -1
-    kept = np.empty(priority.shape[0], dtype=np.int64)
-    distinct = 0
-    lam_tol = 10.0 * force_tol
-    qdd_tol = 10.0 * accel_tol
-    for position in range(priority.shape[0]):
-        k = priority[position]
-        if not candidate[k]:
-            continue
-        if not (physical[k] or relaxed):
-            continue
-        new = True
-        for q in range(distinct):
-            other = kept[q]
-            differs = False
-            for r in range(lam_all.shape[1]):
-                if abs(lam_all[k, r] - lam_all[other, r]) > lam_tol:
-                    differs = True
-                    break
-            if not differs:
-                for r in range(qdd_all.shape[1]):
-                    if abs(qdd_all[k, r] - qdd_all[other, r]) > qdd_tol:
-                        differs = True
-                        break
-            if not differs:
-                new = False
-                break
-        if new:
-            kept[distinct] = k
-            if distinct < alternatives.shape[0]:
-                alternatives[distinct] = k
-            distinct += 1
-    return distinct, relaxed
 
 
 @njit(cache=True)
@@ -814,25 +643,27 @@ def _solve_range(
     acceleration,
     forces,
 ):
+    """Solve cases ``start:stop``, each with the contact kernel
+    :func:`freestand.core.contact.engine.solve_contact_states` (at rest: every contact
+    touching, no slip, so its enumeration index is the :class:`ModeTable` index)."""
     blocks = mass.shape[1]
     n = 3 * blocks
-    modes_count = modes.shape[0]
     jac = np.zeros((n, n))
+    jn = np.zeros((blocks, 2, n))
+    jt = np.zeros((blocks, 2, n))
+    bn = np.zeros((blocks, 2))
+    bt = np.zeros((blocks, 2))
+    touching = np.ones((blocks, 2), dtype=np.bool_)
+    slip = np.zeros(blocks)
     minv = np.empty(n)
     free_acc = np.empty(n)
-    w = np.empty((n, n))
-    h = np.empty(n)
-    matrix = np.empty((n, n))
-    rhs = np.empty(n)
-    coeff = np.empty(n)
-    lam_all = np.empty((modes_count, n))
-    qdd_all = np.empty((modes_count, n))
-    a = np.empty(n)
-    a_static = np.empty(n)
-    lam_static = np.empty(n)
-    candidate = np.zeros(modes_count, dtype=np.bool_)
-    physical = np.zeros(modes_count, dtype=np.bool_)
-    alt = np.empty(alternatives.shape[1], dtype=np.int64)
+    kept = alternatives.shape[1]
+    out_modes = np.empty((kept, blocks, 3), dtype=np.int64)
+    out_qdd = np.empty((kept, n))
+    out_lam = np.empty((kept, blocks, 3))
+    out_acc = np.empty((kept, blocks, 3))
+    out_index = np.empty(kept, dtype=np.int64)
+    info = np.zeros(INFO_SIZE, dtype=np.int64)
     for case in range(start, stop):
         if vertical[case] >= gravity:
             _write_free_flight(
@@ -851,43 +682,19 @@ def _solve_range(
             free_acc[3 * i + 2] = 0.0
         force_tol, accel_tol = _tolerances(total_mass, inertial[case], effective_gravity)
         _jacobian(cx[case], cz[case], bl[case], br[case], lvl[case], jac)
-        _delassus(jac, minv, free_acc, w, h)
-        for k in range(modes_count):
-            candidate[k] = False
-            physical[k] = False
-            mode = modes[k]
-            size = unknown_count[k]
-            index = unknown_index[k]
-            direction = unknown_direction[k]
-            if not _solve_mode(
-                w, h, size, index, direction, mu_k[case], lam_all[k], a, matrix, rhs, coeff
-            ):
-                continue
-            if not (_finite(lam_all[k]) and _finite(a)):
-                continue
-            if not _admissible(mode, sliding, mu_s[case], lam_all[k], a, force_tol, accel_tol):
-                continue
-            _accelerations(jac, minv, free_acc, lam_all[k], qdd_all[k])
-            if not _finite(qdd_all[k]):
-                continue
-            candidate[k] = True
-            if not has_slide[k]:
-                physical[k] = True
-                continue
-            if _solve_mode(
-                w, h, size, index, direction, mu_s[case], lam_static, a_static, matrix, rhs, coeff
-            ):
-                physical[k] = _slides_with_static(mode, a_static, accel_tol)
-        distinct, was_relaxed = _choose(
-            priority, candidate, physical, lam_all, qdd_all, force_tol, accel_tol, alt
-        )
+        _split(jac, jn, jt)
+        distinct = solve_contact_states(
+            blocks, minv, free_acc, jn, bn, jt, bt, touching, slip, sliding, mu_s[case],
+            mu_k[case], force_tol, accel_tol, out_modes, out_qdd, out_lam, out_acc, out_index,
+            info,
+        )  # fmt: skip
         _write_case(
             case,
             distinct,
-            was_relaxed,
-            alt,
-            lam_all,
-            qdd_all,
+            info[INFO_RELAXED] == 1,
+            out_index,
+            out_lam,
+            out_qdd,
             status,
             chosen,
             alternatives,
@@ -903,9 +710,9 @@ def _write_case(
     case,
     distinct,
     was_relaxed,
-    alt,
-    lam_all,
-    qdd_all,
+    kept,
+    lam,
+    qdd,
     status,
     chosen,
     alternatives,
@@ -914,22 +721,23 @@ def _write_case(
     acceleration,
     forces,
 ):
+    """Record one case: ``kept`` the mode indices of the distinct states in the order of
+    the choice rule, ``lam`` (., B, 3) and ``qdd`` (., 3 B) the chosen state's first."""
     count[case] = distinct
     relaxed[case] = was_relaxed
-    for j in range(alt.shape[0]):
-        alternatives[case, j] = alt[j]
+    for j in range(alternatives.shape[1]):
+        alternatives[case, j] = kept[j] if j < distinct else -1
     if distinct == 0:
         status[case] = 2
         chosen[case] = -1
         return
     status[case] = 0 if distinct == 1 else 1
-    k = alt[0]
-    chosen[case] = k
+    chosen[case] = kept[0]
     blocks = acceleration.shape[1]
     for i in range(blocks):
         for c in range(3):
-            acceleration[case, i, c] = qdd_all[k, 3 * i + c]
-            forces[case, i, c] = lam_all[k, 3 * i + c]
+            acceleration[case, i, c] = qdd[0, 3 * i + c]
+            forces[case, i, c] = lam[0, i, c]
 
 
 @njit(cache=True, parallel=True)
@@ -1013,63 +821,74 @@ def _plane_basis(
 ):
     """Unit-load solutions of every mode of one stack (excitation plane).
 
-    Returns arrays of shape (K, 2, 3B): forces, contact accelerations and
-    accelerations for the loads ``s a_hor = 1`` (index 0) and ``g_eff = 1``
-    (index 1), with kinetic friction; the contact accelerations with static
-    friction; and flags (solvable kinetic, solvable static).
+    Each mode is solved by the contact kernel's mode solve
+    (:func:`freestand.core.contact.engine.solve_mode`). Returns arrays of shape
+    (K, 2, 3B): forces, contact accelerations and accelerations for the loads
+    ``s a_hor = 1`` (index 0) and ``g_eff = 1`` (index 1), with kinetic friction;
+    the contact accelerations with static friction; and flags (solvable kinetic,
+    solvable static).
     """
     blocks = mass.shape[0]
     n = 3 * blocks
     modes_count = modes.shape[0]
     jac = np.zeros((n, n))
+    jn = np.zeros((blocks, 2, n))
+    jt = np.zeros((blocks, 2, n))
+    bn = np.zeros((blocks, 2))
+    bt = np.zeros((blocks, 2))
     minv = np.empty(n)
     free_acc = np.empty(n)
-    w = np.empty((n, n))
-    h = np.empty(n)
+    w = np.empty((4 * blocks, 4 * blocks))
+    h = np.empty(4 * blocks)
     matrix = np.empty((n, n))
     rhs = np.empty(n)
+    index = np.empty(n, dtype=np.int64)
     coeff = np.empty(n)
+    full = np.empty(4 * blocks)
+    kinetic = np.zeros((blocks, 2))
+    static = np.zeros((blocks, 2))
+    for i in range(blocks):
+        kinetic[i, 0] = mu_k[i]
+        static[i, 0] = mu_s[i]
     lam = np.zeros((modes_count, 2, n))
     acc = np.zeros((modes_count, 2, n))
     qdd = np.zeros((modes_count, 2, n))
     acc_static = np.zeros((modes_count, 2, n))
     solvable = np.zeros((modes_count, 2), dtype=np.bool_)
+    lam_mode = np.zeros((blocks, 3))
+    acc_mode = np.zeros((blocks, 3))
     for i in range(blocks):
         minv[3 * i] = 1.0 / mass[i]
         minv[3 * i + 1] = 1.0 / mass[i]
         minv[3 * i + 2] = 1.0 / inertia[i]
     _jacobian(cx, cz, bl, br, lvl, jac)
-    lam_static = np.empty(n)
+    _split(jac, jn, jt)
     for load in range(2):
         for i in range(blocks):
             free_acc[3 * i] = 1.0 if load == 0 else 0.0
             free_acc[3 * i + 1] = 0.0 if load == 0 else -1.0
             free_acc[3 * i + 2] = 0.0
-        _delassus(jac, minv, free_acc, w, h)
+        delassus(blocks, minv, free_acc, jn, bn, jt, bt, w, h)
         for k in range(modes_count):
-            size = unknown_count[k]
-            index = unknown_index[k]
-            direction = unknown_direction[k]
-            ok = _solve_mode(
-                w, h, size, index, direction, mu_k, lam[k, load], acc[k, load], matrix, rhs, coeff
+            mode = modes[k]
+            ok = solve_mode(
+                blocks, w, h, mode, kinetic, lam_mode, acc_mode, matrix, rhs, index, coeff, full
             )
             solvable[k, 0] = ok
             if ok:
-                _accelerations(jac, minv, free_acc, lam[k, load], qdd[k, load])
-            ok_static = _solve_mode(
-                w,
-                h,
-                size,
-                index,
-                direction,
-                mu_s,
-                lam_static,
-                acc_static[k, load],
-                matrix,
-                rhs,
-                coeff,
+                for i in range(blocks):
+                    for c in range(3):
+                        lam[k, load, 3 * i + c] = lam_mode[i, c]
+                        acc[k, load, 3 * i + c] = acc_mode[i, c]
+                accelerations(blocks, minv, free_acc, jn, jt, mode, lam_mode, qdd[k, load])
+            ok_static = solve_mode(
+                blocks, w, h, mode, static, lam_mode, acc_mode, matrix, rhs, index, coeff, full
             )
             solvable[k, 1] = ok_static
+            if ok_static:
+                for i in range(blocks):
+                    for c in range(3):
+                        acc_static[k, load, 3 * i + c] = acc_mode[i, c]
     return lam, acc, qdd, acc_static, solvable
 
 
@@ -1099,16 +918,22 @@ def _plane_range(
     acceleration,
     forces,
 ):
+    """Solve points ``start:stop`` of the excitation plane: each mode's solution is the
+    combination of its unit-load solutions, then the contact kernel's admissibility,
+    break-away test and choice rule (:mod:`freestand.core.contact.engine`) decide."""
     modes_count = modes.shape[0]
     n = lam_basis.shape[2]
     blocks = n // 3
-    lam_all = np.empty((modes_count, n))
+    lam_all = np.empty((modes_count, blocks, 3))
     qdd_all = np.empty((modes_count, n))
-    a = np.empty(n)
-    a_static = np.empty(n)
+    a = np.empty((blocks, 3))
+    a_static = np.empty((blocks, 3))
+    touching = np.ones((blocks, 2), dtype=np.bool_)
     candidate = np.zeros(modes_count, dtype=np.bool_)
     physical = np.zeros(modes_count, dtype=np.bool_)
-    alt = np.empty(alternatives.shape[1], dtype=np.int64)
+    kept = np.empty(modes_count, dtype=np.int64)
+    chosen_lam = np.empty((1, blocks, 3))
+    chosen_qdd = np.empty((1, n))
     for case in range(start, stop):
         if vertical[case] >= gravity:
             _write_free_flight(
@@ -1123,33 +948,44 @@ def _plane_range(
             physical[k] = False
             if not solvable[k, 0]:
                 continue
-            for r in range(n):
-                lam_all[k, r] = x * lam_basis[k, 0, r] + y * lam_basis[k, 1, r]
-                qdd_all[k, r] = x * qdd_basis[k, 0, r] + y * qdd_basis[k, 1, r]
-                a[r] = x * acc_basis[k, 0, r] + y * acc_basis[k, 1, r]
+            for i in range(blocks):
+                for c in range(3):
+                    r = 3 * i + c
+                    lam_all[k, i, c] = x * lam_basis[k, 0, r] + y * lam_basis[k, 1, r]
+                    qdd_all[k, r] = x * qdd_basis[k, 0, r] + y * qdd_basis[k, 1, r]
+                    a[i, c] = x * acc_basis[k, 0, r] + y * acc_basis[k, 1, r]
             mode = modes[k]
-            if not (_finite(lam_all[k]) and _finite(qdd_all[k])):
+            if not _finite(qdd_all[k]):
                 continue
-            if not _admissible(mode, sliding, mu_s, lam_all[k], a, force_tol, accel_tol):
+            if not forces_admissible(blocks, mode, sliding, mu_s, lam_all[k], force_tol):
+                continue
+            if not accelerations_admissible(blocks, mode, touching, a, accel_tol):
                 continue
             candidate[k] = True
             if not has_slide[k]:
                 physical[k] = True
                 continue
             if solvable[k, 1]:
-                for r in range(n):
-                    a_static[r] = x * acc_static_basis[k, 0, r] + y * acc_static_basis[k, 1, r]
-                physical[k] = _slides_with_static(mode, a_static, accel_tol)
-        distinct, was_relaxed = _choose(
-            priority, candidate, physical, lam_all, qdd_all, force_tol, accel_tol, alt
+                for i in range(blocks):
+                    for c in range(3):
+                        r = 3 * i + c
+                        a_static[i, c] = (
+                            x * acc_static_basis[k, 0, r] + y * acc_static_basis[k, 1, r]
+                        )
+                physical[k] = slides_with_static(blocks, mode, a_static, accel_tol)
+        distinct, was_relaxed = choose(
+            priority, candidate, physical, lam_all, qdd_all, force_tol, accel_tol, kept
         )
+        if distinct:
+            chosen_lam[0] = lam_all[kept[0]]
+            chosen_qdd[0] = qdd_all[kept[0]]
         _write_case(
             case,
             distinct,
             was_relaxed,
-            alt,
-            lam_all,
-            qdd_all,
+            kept,
+            chosen_lam,
+            chosen_qdd,
             status,
             chosen,
             alternatives,
@@ -1242,7 +1078,7 @@ class BatchResult:
     relaxed : numpy.ndarray
         Shape (N,) bool: no state passed the static-friction break-away test
         and the kinetic-only states were accepted
-        (:class:`freestand.core.contact.modes.ContactDiagnostics`).
+        (:class:`freestand.core.contact.problem.ContactDiagnostics`).
     motion : numpy.ndarray
         Shape (N, B) int8 codes into :data:`MOTIONS` (-1: no state).
     pivot : numpy.ndarray

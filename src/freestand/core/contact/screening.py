@@ -32,16 +32,16 @@ from enum import StrEnum
 
 import numpy as np
 
-from freestand.core.contact.modes import (
+from freestand.core.contact.engine import solve
+from freestand.core.contact.paper_cases import paper_case
+from freestand.core.contact.problem import (
     ContactDiagnostics,
     ContactProblem,
     ContactResult,
     ContactSolution,
     Interface,
     Tangential,
-    solve_contact,
 )
-from freestand.core.contact.paper_cases import paper_case
 from freestand.core.model import Excitation, Stack
 
 #: Standard value of the gravitational acceleration used by the paper [m/s^2].
@@ -343,7 +343,8 @@ def initial_motion(
 ) -> InitialMotion:
     """Initial type of motion, accelerations and contact forces of a stack.
 
-    Solves the complementarity problem of :mod:`freestand.core.contact.modes` for
+    Solves the complementarity problem with the compiled kernel of
+    :mod:`freestand.core.contact.engine` for
     the stack at rest under the inertial forces ``s m a_hor`` (horizontal)
     and the reduced weights ``m (g - a_ver)`` (paper section 3, eqs. of
     3.1.1-3.1.2.3 for two blocks, generalised to any stack).
@@ -390,9 +391,8 @@ def initial_motion(
             alternatives=(states,),
             paper_case=None,
         )
-    result: ContactResult = solve_contact(
-        contact_problem_at_rest(stack, inertial, vertical, gravity)
-    )
+    # a batch of one for the compiled contact kernel
+    result: ContactResult = solve(contact_problem_at_rest(stack, inertial, vertical, gravity))
     alternatives = tuple(_block_states(stack, solution) for solution in result.admissible)
     blocks = alternatives[0] if alternatives else ()
     return InitialMotion(

@@ -12,13 +12,14 @@ positive. The support acceleration ``a_h(t)`` [m/s^2] (+x) acts as the
 inertial force ``-m a_h`` and the downward support acceleration ``a_v(t)``
 reduces the weight to ``m (g - a_v)``.
 
-The instantaneous contact problem is the one of :mod:`freestand.core.contact.modes`
-(the screening engine's), built at a general configuration with the velocity
-terms (:func:`contact_problem_in_motion`). The integration is event-driven and
+The instantaneous contact problem is the one of :mod:`freestand.core.contact.problem`
+(the screening engine's, solved by the compiled kernel of
+:mod:`freestand.core.contact.engine`), built at a general configuration with the
+velocity terms (:func:`contact_problem_in_motion`). The integration is event-driven and
 runs compiled, the whole loop in :mod:`freestand.core.dynamics.engine`:
 
-* the contact mode chosen as :func:`~freestand.core.contact.modes.solve_contact`
-  chooses (same enumeration, tests and rule, compiled) is held while the
+* the contact mode chosen by the kernel
+  (:func:`~freestand.core.contact.engine.solve_contact_states`) is held while the
   smooth dynamics of that mode are integrated with Runge-Kutta (RK4) steps
   of at most :func:`default_step` under a sampled record (ending where its
   slope changes, :func:`record_breaks`) or ``max_step`` under a function;
@@ -68,7 +69,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from freestand.core.contact.modes import ContactProblem, Interface
+from freestand.core.contact.problem import ContactProblem, Interface
 from freestand.core.contact.screening import GRAVITY
 from freestand.core.dynamics import engine
 from freestand.core.dynamics.results import (
@@ -352,7 +353,7 @@ def impact_problem(
     Returns
     -------
     ContactProblem
-        Solve with :func:`~freestand.core.contact.modes.solve_contact`; the chosen
+        Solve with :func:`~freestand.core.contact.engine.solve`; the chosen
         solution's ``acceleration`` is the velocity jump, its forces the
         impulses.
     """
