@@ -139,6 +139,22 @@ def _message(end_time: float, overturned: bool) -> str:
     return f"simulated to t = {end_time:.6g} s"
 
 
+def _rest_outcome(result: TimeHistoryResult, resting: bool, excitation_end: float):
+    """Status and message of a run asked to go on until rest (see ``simulate``'s ``until_rest``).
+
+    ``"completed"`` when the block overturned or rests after the excitation's
+    end, ``"capped"`` when it still moves at the end of the simulated time.
+    """
+    end_time = float(result.time[-1])
+    if result.overturned.all():
+        return result
+    if resting and end_time >= excitation_end:
+        return replace(result, message=f"at rest at t = {end_time:.6g} s")
+    return replace(
+        result, status="capped", message=f"still moving at the cap, t = {end_time:.6g} s"
+    )
+
+
 def _rocking(
     stack: Stack,
     excitation: SupportMotion,
@@ -146,6 +162,7 @@ def _rocking(
     excitation_end: float,
     max_step: float,
     gravity: float,
+    until_rest: bool = False,
 ) -> tuple[TimeHistoryResult | None, list[str], str]:
     """Rest or rocking without slip; (result or None, checks, failure)."""
     block = stack.blocks[0]
@@ -169,6 +186,7 @@ def _rocking(
             max_step=step,
             max_history=capacity,
             rest_angular_velocity=rest_speed,
+            stop_at_rest_after=excitation_end if until_rest else math.inf,
         )
         if motion.time.size < capacity:
             break
@@ -360,11 +378,18 @@ def _rocking(
         ),
         max_lift=np.array([max_lift if motion.rocked else 0.0]),
     )
+    if until_rest:
+        result = _rest_outcome(result, bool(resting[-1]), excitation_end)
     return result, checks, ""
 
 
 def _sliding(
-    stack: Stack, excitation: SupportMotion, end: float, gravity: float
+    stack: Stack,
+    excitation: SupportMotion,
+    end: float,
+    gravity: float,
+    excitation_end: float = math.inf,
+    until_rest: bool = False,
 ) -> tuple[TimeHistoryResult | None, list[str], str]:
     """Sliding without rotation; (result or None, checks, failure)."""
     block = stack.blocks[0]
@@ -405,6 +430,12 @@ def _sliding(
         v_end = v[-2] + x * (v[-1] - v[-2])
         t, s, v = t.copy(), s.copy(), v.copy()
         t[-1], s[-1], v[-1] = end, s_end, v_end
+    if until_rest:
+        # once the excitation is over a block that has stopped stays at rest
+        stopped = np.flatnonzero((t >= excitation_end) & (v == 0.0))
+        if stopped.size:
+            last = int(stopped[0])
+            t, s, v = t[: last + 1], s[: last + 1], v[: last + 1]
     a_h, a_v = _support(excitation, t)
     normal = geo.mass * (gravity - a_v)
     direction = np.sign(v)
@@ -480,6 +511,8 @@ def _sliding(
         ),
         max_lift=np.zeros(1),
     )
+    if until_rest:
+        result = _rest_outcome(result, bool(v[-1] == 0.0), excitation_end)
     return result, checks, ""
 
 
@@ -491,6 +524,7 @@ def simulate_single_block(
     max_step: float | None = None,
     gravity: float = GRAVITY,
     excitation_end: float | None = None,
+    until_rest: bool = False,
 ) -> SingleBlockAttempt:
     """Time history of one block on the support from the exact rocking or sliding equations.
 
@@ -515,6 +549,14 @@ def simulate_single_block(
         Time [s] after which the overturning judgement of the general path
         applies (a block past its overturning angle that cannot come back has
         overturned); by default the end of the record.
+    until_rest : bool, optional
+        Stop at the first instant after ``excitation_end`` at which the block
+        rests on the support (both contacts closed, no motion: a rocking
+        block settles when its angular velocity after an impact is below
+        :class:`~freestand.core.dynamics.results.ContactTolerances` ``velocity
+        / base width``, a sliding block when its slip velocity is zero);
+        ``duration`` is then the cap. Status ``"completed"`` (at rest, or
+        overturned) or ``"capped"`` (still moving at the cap).
 
     Returns
     -------
@@ -547,10 +589,14 @@ def simulate_single_block(
         return SingleBlockAttempt(
             None, (), "the centre of gravity is not above the base (no rest position)"
         )
-    result, checks, failure = _rocking(stack, excitation, end, excitation_end, max_step, gravity)
+    result, checks, failure = _rocking(
+        stack, excitation, end, excitation_end, max_step, gravity, until_rest
+    )
     if result is not None:
         return SingleBlockAttempt(result, tuple(checks), "")
-    result, sliding_checks, sliding_failure = _sliding(stack, excitation, end, gravity)
+    result, sliding_checks, sliding_failure = _sliding(
+        stack, excitation, end, gravity, excitation_end, until_rest
+    )
     checks = [*checks, f"failed: {failure}", *sliding_checks]
     if result is not None:
         result = replace(result, diagnostics=replace(result.diagnostics, checks=tuple(checks)))
