@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
@@ -74,8 +76,9 @@ def test_block_at_rest_throughout_stops_at_the_end_of_the_record():
 
 def test_overturning_after_the_pulse_completes():
     motion = half_sine(3.0 * 0.3 * 9.81, length=1.0)
+    stack = Stack("free", (replace(BLOCK, sliding=Sliding.FREE),))
     for method in ("single-block", "general"):
-        result = simulate(STACK, motion, method=method, until_rest=True)
+        result = simulate(stack, motion, method=method, until_rest=True)
         assert result.status == "completed"
         assert result.overturned.all()
 
@@ -99,3 +102,28 @@ def test_two_block_stack_stops_at_rest_with_the_full_run_s_peaks():
 def test_free_time_must_be_a_time():
     with pytest.raises(ValueError, match="free_time"):
         simulate(STACK, half_sine(1.0), method="general", until_rest=True, free_time=-1.0)
+
+
+def test_block_settling_at_an_impact_beyond_the_uplift_threshold_stays_on_the_fast_path():
+    # a block that settles at an impact (slower than the contact velocity tolerance) while
+    # the record is beyond its uplift threshold starts to rock again at that instant: the
+    # fast path takes it (it used to give up with "a contact unloads at rest")
+    from freestand.core.dynamics.single_block import simulate_single_block
+    from freestand.core.motion.ground_motion import synthetic_ground_motion
+
+    record = synthetic_ground_motion(seed=1020, duration=10.0)
+    horizontal = np.asarray(record.horizontal)
+    level = 0.5 + 16 * (1.0 / 19.0)  # PGA / (g tan alpha)
+    horizontal = horizontal * level * 9.81 * 0.3 / np.max(np.abs(horizontal))
+    motion = SupportMotion(record.dt, horizontal)
+    attempt = simulate_single_block(STACK, motion, until_rest=True)
+    assert attempt.result is not None, attempt.failure
+    result = attempt.result
+    assert result.diagnostics.method == "single-block rocking"
+    assert len(result.events_of("lift-off")) >= 2
+    general = simulate(STACK, motion, method="general", until_rest=True)
+    assert general.status == "completed"
+    # peaks of the same motion by two solvers: the two settle a Zeno sequence of impacts at
+    # the same velocity tolerance but not at the same instant, and the rocking that follows
+    # amplifies that (measured: 0.0182 against 0.0170 rad); same order, both rocked
+    assert result.max_rotation[0] == pytest.approx(general.max_rotation[0], rel=0.15)

@@ -216,6 +216,16 @@ def _rocking(
     g_eff = gravity - a_v
     side = np.sign(theta)
     side = np.where(side == 0.0, np.sign(omega), side)
+    lifts = motion.uplift_log
+    if lifts.size:
+        # at the located instant a resting block starts to rock (the excitation crossing
+        # its uplift threshold between samples, or a block settling at an impact while
+        # the excitation is beyond the threshold) it already rocks on that side with
+        # omega = 0: its forces are those of the pivot, not the rest moment balance
+        starting = (side == 0.0) & np.isin(t, lifts[:, 0])
+        if starting.any():
+            order = np.searchsorted(lifts[:, 0], t[starting])
+            side[starting] = np.sign(lifts[np.minimum(order, len(lifts) - 1), 1])
     resting = side == 0.0
     left = side > 0.0  # rocking about the left contact (theta > 0)
     # vector r from the pivot to the centre of gravity at rest, then rotated
