@@ -47,6 +47,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
+import numba as nb
 import numpy as np
 
 from freestand.core.contact.screening import GRAVITY
@@ -155,6 +156,62 @@ def _rest_outcome(result: TimeHistoryResult, resting: bool, excitation_end: floa
     )
 
 
+@nb.njit(cache=True)
+def _rocking_state(theta, omega, side, a_h, g_eff, mass, inertia, half_left, half_right, height,
+                   out):  # fmt: skip
+    """Displacement, velocity and contact forces of the rocking (or resting) block per sample.
+
+    ``out[k]``: centre displacement (x, z) [m] and velocity (x, z) [m/s], tangential and
+    normal force on the block [N], normal force at the left and right contact [N]. About
+    the pivot of side s (r the vector from the pivot to the centre, rotated by theta):
+    ``I_O theta'' = m R (-s g' sin(alpha - s theta) + a_h cos(alpha - s theta))`` (Zhang
+    and Makris 2001, with g' = g - a_v), ``a_G = theta'' perp(r) - omega^2 r``,
+    ``T = m (a_Gx + a_h)``, ``N = m (a_Gz + g')``, all on the pivot; at rest
+    (s = 0) the moment balance about the centre shares N between the contacts.
+    """
+    width = half_left + half_right
+    for k in range(theta.shape[0]):
+        s = side[k]
+        if s == 0.0:
+            tangential = mass * a_h[k]
+            normal = mass * g_eff[k]
+            right = (half_left * normal - height * tangential) / width
+            out[k, 0] = 0.0
+            out[k, 1] = 0.0
+            out[k, 2] = 0.0
+            out[k, 3] = 0.0
+            out[k, 4] = tangential
+            out[k, 5] = normal
+            out[k, 6] = normal - right
+            out[k, 7] = right
+            continue
+        r0x = half_left if s > 0.0 else -half_right
+        c = math.cos(theta[k])
+        sn = math.sin(theta[k])
+        rx = c * r0x - sn * height
+        rz = sn * r0x + c * height
+        radius = math.hypot(r0x, height)
+        alpha = math.atan2(abs(r0x), height)
+        phase = alpha - s * theta[k]
+        w = omega[k]
+        acc = (
+            mass
+            * radius
+            / (inertia + mass * radius * radius)
+            * (-s * g_eff[k] * math.sin(phase) + a_h[k] * math.cos(phase))
+        )
+        tangential = mass * (-acc * rz - w * w * rx + a_h[k])
+        normal = mass * (acc * rx - w * w * rz + g_eff[k])
+        out[k, 0] = rx - r0x
+        out[k, 1] = rz - height
+        out[k, 2] = -w * rz
+        out[k, 3] = w * rx
+        out[k, 4] = tangential
+        out[k, 5] = normal
+        out[k, 6] = normal if s > 0.0 else 0.0
+        out[k, 7] = 0.0 if s > 0.0 else normal
+
+
 def _rocking(
     stack: Stack,
     excitation: SupportMotion,
@@ -227,31 +284,17 @@ def _rocking(
             order = np.searchsorted(lifts[:, 0], t[starting])
             side[starting] = np.sign(lifts[np.minimum(order, len(lifts) - 1), 1])
     resting = side == 0.0
-    left = side > 0.0  # rocking about the left contact (theta > 0)
-    # vector r from the pivot to the centre of gravity at rest, then rotated
-    r0x = np.where(left, geo.half_left, -geo.half_right)
-    r0z = geo.height
-    c, s = np.cos(theta), np.sin(theta)
-    rx = c * r0x - s * r0z
-    rz = s * r0x + c * r0z
-    radius = np.hypot(r0x, r0z)
-    alpha = np.arctan2(np.abs(r0x), r0z)
-    inertia_pivot = geo.inertia + geo.mass * radius**2
-    phase = alpha - side * theta
-    # Zhang and Makris (2001) with g' = g - a_v(t): I_O theta'' = m R (-s g' sin + a_h cos)
-    angular_acceleration = np.where(
-        resting,
-        0.0,
-        geo.mass * radius / inertia_pivot * (-side * g_eff * np.sin(phase) + a_h * np.cos(phase)),
+    state = np.empty((t.size, 8))
+    _rocking_state(
+        theta, omega, side, a_h, g_eff, geo.mass, geo.inertia, geo.half_left, geo.half_right,
+        geo.height, state,
+    )  # fmt: skip
+    tangential, normal, normal_left, normal_right = (
+        state[:, 4],
+        state[:, 5],
+        state[:, 6],
+        state[:, 7],
     )
-    accel_x = np.where(resting, 0.0, -angular_acceleration * rz - omega**2 * rx)
-    accel_z = np.where(resting, 0.0, angular_acceleration * rx - omega**2 * rz)
-    tangential = geo.mass * (accel_x + a_h)
-    normal = geo.mass * (accel_z + g_eff)
-    # contact forces: all on the pivot while rocking; the moment balance at rest
-    right_at_rest = (geo.half_left * normal - geo.height * tangential) / geo.width
-    normal_left = np.where(resting, normal - right_at_rest, np.where(left, normal, 0.0))
-    normal_right = np.where(resting, right_at_rest, np.where(left, 0.0, normal))
 
     force_tol = EVENT_TOLERANCE * geo.mass * gravity
     checks = []
@@ -313,12 +356,8 @@ def _rocking(
     # results in the general path's form
     width = geo.width
     phi = theta
-    position = np.stack(
-        [np.where(resting, 0.0, rx - r0x), np.where(resting, 0.0, rz - r0z), phi], axis=1
-    )
-    velocity = np.stack(
-        [np.where(resting, 0.0, -omega * rz), np.where(resting, 0.0, omega * rx), omega], axis=1
-    )
+    position = np.stack([state[:, 0], state[:, 1], phi], axis=1)
+    velocity = np.stack([state[:, 2], state[:, 3], omega], axis=1)
     peak = float(np.max(np.abs(theta), initial=0.0))
     max_lift = width * math.sin(min(peak, 0.5 * math.pi))
     rocked = motion.rocked and max_lift > UPLIFT_GAP_FRACTION * width
