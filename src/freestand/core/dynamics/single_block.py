@@ -253,19 +253,18 @@ def _rocking(
     # overturning angle and unable to come back (module notes of timehistory)
     overturned = motion.overturned
     overturn_time = motion.time_overturned if overturned else math.nan
-    after = t >= excitation_end
-    if after.any() and not overturned:
-        lever = np.where(theta > 0.0, geo.half_left, geo.half_right)
-        away = np.where(theta > 0.0, omega >= 0.0, omega <= 0.0)
+    first = int(np.searchsorted(t, excitation_end))
+    if first < t.size and not overturned:
+        th, om = theta[first:], omega[first:]
+        lever = np.where(th > 0.0, geo.half_left, geo.half_right)
+        away = np.where(th > 0.0, om >= 0.0, om <= 0.0)
         critical = np.arctan2(lever, geo.height)
         radius = np.hypot(lever, geo.height)
         inertia_pivot = geo.inertia + geo.mass * radius**2
-        barrier = geo.mass * gravity * radius * (1.0 - np.cos(np.abs(theta) - critical))
-        gone = (
-            after & (np.abs(theta) > critical) & (away | (0.5 * inertia_pivot * omega**2 < barrier))
-        )
+        barrier = geo.mass * gravity * radius * (1.0 - np.cos(np.abs(th) - critical))
+        gone = (np.abs(th) > critical) & (away | (0.5 * inertia_pivot * om**2 < barrier))
         if gone.any():
-            last = int(np.argmax(gone))
+            last = first + int(np.argmax(gone))
             t, theta, omega = t[: last + 1], theta[: last + 1], omega[: last + 1]
             overturned, overturn_time = True, float(t[-1])
 
@@ -375,16 +374,20 @@ def _rocking(
                 np.zeros((1, 3)),
             )
         )
-    for time_impact, w_before, w_after in impacts:
+    jumps = np.zeros((2, len(impacts), 1, 3))
+    if len(impacts):
+        jumps[0, :, 0, 2] = impacts[:, 1]
+        jumps[1, :, 0, 2] = impacts[:, 2]
+    for j, (time_impact, w_before, w_after) in enumerate(impacts.tolist()):
         events.append(
             TimeHistoryEvent(
-                float(time_impact),
+                time_impact,
                 "impact",
                 0,
                 1 if w_before < 0.0 else 0,
                 ("rock",) if w_after != 0.0 else ("rest",),
-                np.array([[0.0, 0.0, w_before]]),
-                np.array([[0.0, 0.0, w_after]]),
+                jumps[0, j],
+                jumps[1, j],
             )
         )
     if overturned:
