@@ -127,3 +127,13 @@ def test_block_settling_at_an_impact_beyond_the_uplift_threshold_stays_on_the_fa
     # the same velocity tolerance but not at the same instant, and the rocking that follows
     # amplifies that (measured: 0.0182 against 0.0170 rad); same order, both rocked
     assert result.max_rotation[0] == pytest.approx(general.max_rotation[0], rel=0.15)
+
+
+def test_rocking_block_that_may_not_slide_reports_why_it_has_no_solution():
+    # sliding = 'none' is unbounded friction: where the pivot unloads while the rocking
+    # still needs a tangential force no contact mode is consistent (a finite mu slips
+    # just before, and the same block with sliding = 'free' overturns)
+    motion = half_sine(3.0 * 0.3 * 9.81, length=1.0)
+    result = simulate(STACK, motion, method="general", until_rest=True)
+    assert result.status == "failed"
+    assert "sliding = 'none'" in result.message and "unloads" in result.message

@@ -880,7 +880,19 @@ def _painleve_reason(stack: Stack, position: np.ndarray, velocity: np.ndarray) -
     for i, block in enumerate(sub.blocks):
         touching = kin.gap[i] <= tol.gap
         slip = kin.slip_velocity[i, _lower_contact(kin, i)]
-        if touching.sum() == 1 and abs(slip) > tol.velocity:
+        if touching.sum() == 1 and block.sliding is Sliding.NONE:
+            # unbounded friction: the pivot unloads (N -> 0) while the rocking still
+            # needs a tangential force there; free flight would press the corner into the
+            # base, and sliding (the limit of a finite mu, which slips just before) is
+            # excluded: no contact mode is consistent
+            found.append(
+                f"{block.name} rocks on one contact with sliding = 'none' (unbounded "
+                f"friction), rotated {kin.rotation[i]:.3g} rad on the body below: its pivot "
+                "unloads while carrying a tangential force, and it may neither slide nor "
+                "fly; give the interface a finite friction (sliding = 'free') to let it "
+                "slip there"
+            )
+        elif touching.sum() == 1 and abs(slip) > tol.velocity:
             found.append(
                 f"{block.name} slides on one contact at {slip:.3g} m/s, rotated "
                 f"{kin.rotation[i]:.3g} rad on the body below, mu_0 = "
