@@ -87,12 +87,16 @@ FAILURES = (
 # --- parameter vector layout (float64) ---------------------------------------------------------
 P_GRAVITY, P_TOL_GAP, P_TOL_VEL, P_TOL_SLIDE, P_TIME_TOL = range(5)
 P_FORCE_EVENT, P_GAP_EVENT, P_EXC_END, P_END, P_STEP, P_EXC_DT = range(5, 11)
-P_SIZE = 11
+#: 1: stop at the first instant after the excitation's end at which the stack rests
+P_UNTIL_REST = 11
+P_SIZE = 12
 
 # --- integer state vector layout (int64) -------------------------------------------------------
 S_ACTIVE, S_STATUS, S_FAILURE, S_STEPS, S_CONTACT_SOLVES, S_IMPACT_SOLVES = range(6)
 S_AMBIGUOUS, S_ROWS, S_EVENTS, S_STALLED, S_BREAK, S_STARTED = range(6, 12)
-S_SIZE = 12
+#: 1 when the run stopped because the stack was at rest after the excitation (P_UNTIL_REST)
+S_AT_REST = 12
+S_SIZE = 13
 
 # --- float state vector layout -----------------------------------------------------------------
 F_TIME, F_MAX_PENETRATION, F_MAX_PROJECTION = range(3)
@@ -1103,7 +1107,13 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
             return FAILED
     _slide_rate(active, mode, work[6], rates_s)
     outcome = RUNNING
+    until_rest = params[P_UNTIL_REST] > 0.0
     while active > 0 and t < end - 1e-12 * max(end, 1.0):
+        if until_rest and t >= exc_end and _at_rest(active, mode, qd):
+            # the excitation is over and every interface sticks closed with nothing
+            # moving: the stack stays at rest from here on
+            istate[S_AT_REST] = 1
+            break
         if t >= chunk_end:
             outcome = CHUNK_DONE
             break

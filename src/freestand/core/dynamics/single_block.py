@@ -47,6 +47,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
+import numba as nb
 import numpy as np
 
 from freestand.core.contact.screening import GRAVITY
@@ -139,6 +140,78 @@ def _message(end_time: float, overturned: bool) -> str:
     return f"simulated to t = {end_time:.6g} s"
 
 
+def _rest_outcome(result: TimeHistoryResult, resting: bool, excitation_end: float):
+    """Status and message of a run asked to go on until rest (see ``simulate``'s ``until_rest``).
+
+    ``"completed"`` when the block overturned or rests after the excitation's
+    end, ``"capped"`` when it still moves at the end of the simulated time.
+    """
+    end_time = float(result.time[-1])
+    if result.overturned.all():
+        return result
+    if resting and end_time >= excitation_end:
+        return replace(result, message=f"at rest at t = {end_time:.6g} s")
+    return replace(
+        result, status="capped", message=f"still moving at the cap, t = {end_time:.6g} s"
+    )
+
+
+@nb.njit(cache=True)
+def _rocking_state(theta, omega, side, a_h, g_eff, mass, inertia, half_left, half_right, height,
+                   out):  # fmt: skip
+    """Displacement, velocity and contact forces of the rocking (or resting) block per sample.
+
+    ``out[k]``: centre displacement (x, z) [m] and velocity (x, z) [m/s], tangential and
+    normal force on the block [N], normal force at the left and right contact [N]. About
+    the pivot of side s (r the vector from the pivot to the centre, rotated by theta):
+    ``I_O theta'' = m R (-s g' sin(alpha - s theta) + a_h cos(alpha - s theta))`` (Zhang
+    and Makris 2001, with g' = g - a_v), ``a_G = theta'' perp(r) - omega^2 r``,
+    ``T = m (a_Gx + a_h)``, ``N = m (a_Gz + g')``, all on the pivot; at rest
+    (s = 0) the moment balance about the centre shares N between the contacts.
+    """
+    width = half_left + half_right
+    for k in range(theta.shape[0]):
+        s = side[k]
+        if s == 0.0:
+            tangential = mass * a_h[k]
+            normal = mass * g_eff[k]
+            right = (half_left * normal - height * tangential) / width
+            out[k, 0] = 0.0
+            out[k, 1] = 0.0
+            out[k, 2] = 0.0
+            out[k, 3] = 0.0
+            out[k, 4] = tangential
+            out[k, 5] = normal
+            out[k, 6] = normal - right
+            out[k, 7] = right
+            continue
+        r0x = half_left if s > 0.0 else -half_right
+        c = math.cos(theta[k])
+        sn = math.sin(theta[k])
+        rx = c * r0x - sn * height
+        rz = sn * r0x + c * height
+        radius = math.hypot(r0x, height)
+        alpha = math.atan2(abs(r0x), height)
+        phase = alpha - s * theta[k]
+        w = omega[k]
+        acc = (
+            mass
+            * radius
+            / (inertia + mass * radius * radius)
+            * (-s * g_eff[k] * math.sin(phase) + a_h[k] * math.cos(phase))
+        )
+        tangential = mass * (-acc * rz - w * w * rx + a_h[k])
+        normal = mass * (acc * rx - w * w * rz + g_eff[k])
+        out[k, 0] = rx - r0x
+        out[k, 1] = rz - height
+        out[k, 2] = -w * rz
+        out[k, 3] = w * rx
+        out[k, 4] = tangential
+        out[k, 5] = normal
+        out[k, 6] = normal if s > 0.0 else 0.0
+        out[k, 7] = 0.0 if s > 0.0 else normal
+
+
 def _rocking(
     stack: Stack,
     excitation: SupportMotion,
@@ -146,6 +219,7 @@ def _rocking(
     excitation_end: float,
     max_step: float,
     gravity: float,
+    until_rest: bool = False,
 ) -> tuple[TimeHistoryResult | None, list[str], str]:
     """Rest or rocking without slip; (result or None, checks, failure)."""
     block = stack.blocks[0]
@@ -169,6 +243,7 @@ def _rocking(
             max_step=step,
             max_history=capacity,
             rest_angular_velocity=rest_speed,
+            stop_at_rest_after=excitation_end if until_rest else math.inf,
         )
         if motion.time.size < capacity:
             break
@@ -178,19 +253,18 @@ def _rocking(
     # overturning angle and unable to come back (module notes of timehistory)
     overturned = motion.overturned
     overturn_time = motion.time_overturned if overturned else math.nan
-    after = t >= excitation_end
-    if after.any() and not overturned:
-        lever = np.where(theta > 0.0, geo.half_left, geo.half_right)
-        away = np.where(theta > 0.0, omega >= 0.0, omega <= 0.0)
+    first = int(np.searchsorted(t, excitation_end))
+    if first < t.size and not overturned:
+        th, om = theta[first:], omega[first:]
+        lever = np.where(th > 0.0, geo.half_left, geo.half_right)
+        away = np.where(th > 0.0, om >= 0.0, om <= 0.0)
         critical = np.arctan2(lever, geo.height)
         radius = np.hypot(lever, geo.height)
         inertia_pivot = geo.inertia + geo.mass * radius**2
-        barrier = geo.mass * gravity * radius * (1.0 - np.cos(np.abs(theta) - critical))
-        gone = (
-            after & (np.abs(theta) > critical) & (away | (0.5 * inertia_pivot * omega**2 < barrier))
-        )
+        barrier = geo.mass * gravity * radius * (1.0 - np.cos(np.abs(th) - critical))
+        gone = (np.abs(th) > critical) & (away | (0.5 * inertia_pivot * om**2 < barrier))
         if gone.any():
-            last = int(np.argmax(gone))
+            last = first + int(np.argmax(gone))
             t, theta, omega = t[: last + 1], theta[: last + 1], omega[: last + 1]
             overturned, overturn_time = True, float(t[-1])
 
@@ -198,32 +272,28 @@ def _rocking(
     g_eff = gravity - a_v
     side = np.sign(theta)
     side = np.where(side == 0.0, np.sign(omega), side)
+    lifts = motion.uplift_log
+    if lifts.size:
+        # at the located instant a resting block starts to rock (the excitation crossing
+        # its uplift threshold between samples, or a block settling at an impact while
+        # the excitation is beyond the threshold) it already rocks on that side with
+        # omega = 0: its forces are those of the pivot, not the rest moment balance
+        starting = (side == 0.0) & np.isin(t, lifts[:, 0])
+        if starting.any():
+            order = np.searchsorted(lifts[:, 0], t[starting])
+            side[starting] = np.sign(lifts[np.minimum(order, len(lifts) - 1), 1])
     resting = side == 0.0
-    left = side > 0.0  # rocking about the left contact (theta > 0)
-    # vector r from the pivot to the centre of gravity at rest, then rotated
-    r0x = np.where(left, geo.half_left, -geo.half_right)
-    r0z = geo.height
-    c, s = np.cos(theta), np.sin(theta)
-    rx = c * r0x - s * r0z
-    rz = s * r0x + c * r0z
-    radius = np.hypot(r0x, r0z)
-    alpha = np.arctan2(np.abs(r0x), r0z)
-    inertia_pivot = geo.inertia + geo.mass * radius**2
-    phase = alpha - side * theta
-    # Zhang and Makris (2001) with g' = g - a_v(t): I_O theta'' = m R (-s g' sin + a_h cos)
-    angular_acceleration = np.where(
-        resting,
-        0.0,
-        geo.mass * radius / inertia_pivot * (-side * g_eff * np.sin(phase) + a_h * np.cos(phase)),
+    state = np.empty((t.size, 8))
+    _rocking_state(
+        theta, omega, side, a_h, g_eff, geo.mass, geo.inertia, geo.half_left, geo.half_right,
+        geo.height, state,
+    )  # fmt: skip
+    tangential, normal, normal_left, normal_right = (
+        state[:, 4],
+        state[:, 5],
+        state[:, 6],
+        state[:, 7],
     )
-    accel_x = np.where(resting, 0.0, -angular_acceleration * rz - omega**2 * rx)
-    accel_z = np.where(resting, 0.0, angular_acceleration * rx - omega**2 * rz)
-    tangential = geo.mass * (accel_x + a_h)
-    normal = geo.mass * (accel_z + g_eff)
-    # contact forces: all on the pivot while rocking; the moment balance at rest
-    right_at_rest = (geo.half_left * normal - geo.height * tangential) / geo.width
-    normal_left = np.where(resting, normal - right_at_rest, np.where(left, normal, 0.0))
-    normal_right = np.where(resting, right_at_rest, np.where(left, 0.0, normal))
 
     force_tol = EVENT_TOLERANCE * geo.mass * gravity
     checks = []
@@ -285,12 +355,8 @@ def _rocking(
     # results in the general path's form
     width = geo.width
     phi = theta
-    position = np.stack(
-        [np.where(resting, 0.0, rx - r0x), np.where(resting, 0.0, rz - r0z), phi], axis=1
-    )
-    velocity = np.stack(
-        [np.where(resting, 0.0, -omega * rz), np.where(resting, 0.0, omega * rx), omega], axis=1
-    )
+    position = np.stack([state[:, 0], state[:, 1], phi], axis=1)
+    velocity = np.stack([state[:, 2], state[:, 3], omega], axis=1)
     peak = float(np.max(np.abs(theta), initial=0.0))
     max_lift = width * math.sin(min(peak, 0.5 * math.pi))
     rocked = motion.rocked and max_lift > UPLIFT_GAP_FRACTION * width
@@ -308,16 +374,20 @@ def _rocking(
                 np.zeros((1, 3)),
             )
         )
-    for time_impact, w_before, w_after in impacts:
+    jumps = np.zeros((2, len(impacts), 1, 3))
+    if len(impacts):
+        jumps[0, :, 0, 2] = impacts[:, 1]
+        jumps[1, :, 0, 2] = impacts[:, 2]
+    for j, (time_impact, w_before, w_after) in enumerate(impacts.tolist()):
         events.append(
             TimeHistoryEvent(
-                float(time_impact),
+                time_impact,
                 "impact",
                 0,
                 1 if w_before < 0.0 else 0,
                 ("rock",) if w_after != 0.0 else ("rest",),
-                np.array([[0.0, 0.0, w_before]]),
-                np.array([[0.0, 0.0, w_after]]),
+                jumps[0, j],
+                jumps[1, j],
             )
         )
     if overturned:
@@ -360,11 +430,18 @@ def _rocking(
         ),
         max_lift=np.array([max_lift if motion.rocked else 0.0]),
     )
+    if until_rest:
+        result = _rest_outcome(result, bool(resting[-1]), excitation_end)
     return result, checks, ""
 
 
 def _sliding(
-    stack: Stack, excitation: SupportMotion, end: float, gravity: float
+    stack: Stack,
+    excitation: SupportMotion,
+    end: float,
+    gravity: float,
+    excitation_end: float = math.inf,
+    until_rest: bool = False,
 ) -> tuple[TimeHistoryResult | None, list[str], str]:
     """Sliding without rotation; (result or None, checks, failure)."""
     block = stack.blocks[0]
@@ -405,6 +482,12 @@ def _sliding(
         v_end = v[-2] + x * (v[-1] - v[-2])
         t, s, v = t.copy(), s.copy(), v.copy()
         t[-1], s[-1], v[-1] = end, s_end, v_end
+    if until_rest:
+        # once the excitation is over a block that has stopped stays at rest
+        stopped = np.flatnonzero((t >= excitation_end) & (v == 0.0))
+        if stopped.size:
+            last = int(stopped[0])
+            t, s, v = t[: last + 1], s[: last + 1], v[: last + 1]
     a_h, a_v = _support(excitation, t)
     normal = geo.mass * (gravity - a_v)
     direction = np.sign(v)
@@ -480,6 +563,8 @@ def _sliding(
         ),
         max_lift=np.zeros(1),
     )
+    if until_rest:
+        result = _rest_outcome(result, bool(v[-1] == 0.0), excitation_end)
     return result, checks, ""
 
 
@@ -491,6 +576,7 @@ def simulate_single_block(
     max_step: float | None = None,
     gravity: float = GRAVITY,
     excitation_end: float | None = None,
+    until_rest: bool = False,
 ) -> SingleBlockAttempt:
     """Time history of one block on the support from the exact rocking or sliding equations.
 
@@ -515,6 +601,14 @@ def simulate_single_block(
         Time [s] after which the overturning judgement of the general path
         applies (a block past its overturning angle that cannot come back has
         overturned); by default the end of the record.
+    until_rest : bool, optional
+        Stop at the first instant after ``excitation_end`` at which the block
+        rests on the support (both contacts closed, no motion: a rocking
+        block settles when its angular velocity after an impact is below
+        :class:`~freestand.core.dynamics.results.ContactTolerances` ``velocity
+        / base width``, a sliding block when its slip velocity is zero);
+        ``duration`` is then the cap. Status ``"completed"`` (at rest, or
+        overturned) or ``"capped"`` (still moving at the cap).
 
     Returns
     -------
@@ -547,10 +641,14 @@ def simulate_single_block(
         return SingleBlockAttempt(
             None, (), "the centre of gravity is not above the base (no rest position)"
         )
-    result, checks, failure = _rocking(stack, excitation, end, excitation_end, max_step, gravity)
+    result, checks, failure = _rocking(
+        stack, excitation, end, excitation_end, max_step, gravity, until_rest
+    )
     if result is not None:
         return SingleBlockAttempt(result, tuple(checks), "")
-    result, sliding_checks, sliding_failure = _sliding(stack, excitation, end, gravity)
+    result, sliding_checks, sliding_failure = _sliding(
+        stack, excitation, end, gravity, excitation_end, until_rest
+    )
     checks = [*checks, f"failed: {failure}", *sliding_checks]
     if result is not None:
         result = replace(result, diagnostics=replace(result.diagnostics, checks=tuple(checks)))

@@ -87,6 +87,9 @@ from freestand.core.model import Sliding, Stack
 
 # --- excitation ---------------------------------------------------------------------------------
 
+#: Default cap [s] on the time simulated after the excitation's end with ``until_rest``.
+FREE_TIME = 10.0
+
 
 Excitation = Callable[[float], tuple[float, float]]
 
@@ -435,6 +438,8 @@ def simulate(
     max_events: int = 100_000,
     restitution: float | Sequence[float] | None = None,
     progress: Callable[[float], None] | None = None,
+    until_rest: bool = False,
+    free_time: float = FREE_TIME,
 ) -> TimeHistoryResult:
     """Simulate the planar motion of a stack under support accelerations (front end).
 
@@ -465,6 +470,12 @@ def simulate(
         an end stop) the general path runs instead and
         ``diagnostics.fallback`` says why. ``"auto"`` (default): the
         single-block path wherever it applies, else the general path.
+    until_rest : bool, optional
+        Go on after the excitation until the stack is back at rest, every
+        block has overturned, or the cap (see :func:`simulate_general`).
+    free_time : float, optional
+        With ``until_rest``, the cap [s] after the excitation's end when no
+        ``duration`` is given (default :data:`FREE_TIME`).
 
     Returns
     -------
@@ -484,6 +495,8 @@ def simulate(
         max_events=max_events,
         restitution=restitution,
         progress=progress,
+        until_rest=until_rest,
+        free_time=free_time,
     )
     plastic = restitution is None or bool(np.all(np.asarray(restitution, dtype=float) == 1.0))
     if method == "general" or (method == "auto" and not plastic):
@@ -502,13 +515,19 @@ def simulate(
         return simulate_general(stack, excitation, duration, **general)
     from freestand.core.dynamics.single_block import simulate_single_block
 
+    if until_rest:
+        exc_end = excitation.duration if excitation_end is None else float(excitation_end)
+        cap = _rest_cap(exc_end, duration, free_time)
+    else:
+        cap = duration
     attempt = simulate_single_block(
         stack,
         excitation,
-        duration,
+        cap,
         max_step=max_step,
         gravity=gravity,
         excitation_end=excitation_end,
+        until_rest=until_rest,
     )
     if attempt.result is not None:
         return attempt.result
@@ -534,6 +553,8 @@ def simulate_general(
     max_events: int = 100_000,
     restitution: float | Sequence[float] | None = None,
     progress: Callable[[float], None] | None = None,
+    until_rest: bool = False,
+    free_time: float = FREE_TIME,
 ) -> TimeHistoryResult:
     """Simulate the planar motion of a stack under support accelerations (general path).
 
@@ -575,6 +596,20 @@ def simulate_general(
     progress : callable, optional
         ``progress(fraction)`` is called with the fraction [-] of the
         duration simulated, about every 1 % of it, and with 1 at the end.
+    until_rest : bool, optional
+        Go on after the excitation's end (``excitation_end``; the excitation
+        is zero after it) until the stack is back at rest, or every block has
+        overturned, or the cap: ``duration`` when given, else
+        ``excitation_end + free_time``. At rest means the rest state: every
+        interface sticks with both contacts closed (the held contact mode)
+        and no coordinate moves faster than 1e-9 [m/s, rad/s] (impacts and
+        slips slower than ``tolerances.velocity`` end in this state); it is
+        checked at every step after the excitation's end. Status
+        ``"completed"`` (at rest, message ``"at rest at t = ..."``, or
+        every block overturned) or ``"capped"`` (still moving at the cap).
+    free_time : float, optional
+        The cap [s] after the excitation's end when no ``duration`` is given
+        (default :data:`FREE_TIME`, 10 s).
 
     Returns
     -------
@@ -594,6 +629,15 @@ def simulate_general(
         end = float(duration)
         if excitation_end is None:
             excitation_end = end
+        if until_rest:
+            function = excitation
+            stop = float(excitation_end)
+
+            def excitation(time: float) -> tuple[float, float]:
+                return function(time) if time <= stop else (0.0, 0.0)
+
+    if until_rest:
+        end = _rest_cap(float(excitation_end), duration, free_time)
     if not end > 0.0:
         raise ValueError(f"duration must be positive, not {end!r}")
     if max_step is not None and not max_step > 0.0:
@@ -649,6 +693,7 @@ def simulate_general(
     params[engine.P_END] = end
     params[engine.P_STEP] = step
     params[engine.P_EXC_DT] = dt
+    params[engine.P_UNTIL_REST] = 1.0 if until_rest else 0.0
     istate = np.zeros(engine.S_SIZE, dtype=np.int64)
     istate[engine.S_ACTIVE] = count
     fstate = np.zeros(engine.F_SIZE)
@@ -681,7 +726,29 @@ def simulate_general(
         break
     if progress is not None:
         progress(1.0)
-    return _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev, outcome)
+    result = _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev, outcome)
+    if until_rest and result.status == "completed" and not result.overturned.all():
+        if istate[engine.S_AT_REST]:
+            message = f"at rest at t = {fstate[engine.F_TIME]:.6g} s"
+            if result.overturned.any():
+                message += result.message[result.message.find(";") :]
+            result = replace(result, message=message)
+        else:
+            result = replace(
+                result,
+                status="capped",
+                message=f"still moving at the cap, t = {fstate[engine.F_TIME]:.6g} s",
+            )
+    return result
+
+
+def _rest_cap(excitation_end: float, duration: float | None, free_time: float) -> float:
+    """End [s] of a run that goes on until rest: ``duration``, else the excitation's end + cap."""
+    if duration is not None:
+        return float(duration)
+    if not (free_time >= 0.0 and math.isfinite(free_time)):
+        raise ValueError(f"free_time must be a finite time >= 0 [s], not {free_time!r}")
+    return excitation_end + free_time
 
 
 def default_step(stack: Stack, gravity: float = GRAVITY) -> float:
@@ -814,7 +881,19 @@ def _painleve_reason(stack: Stack, position: np.ndarray, velocity: np.ndarray) -
     for i, block in enumerate(sub.blocks):
         touching = kin.gap[i] <= tol.gap
         slip = kin.slip_velocity[i, _lower_contact(kin, i)]
-        if touching.sum() == 1 and abs(slip) > tol.velocity:
+        if touching.sum() == 1 and block.sliding is Sliding.NONE:
+            # unbounded friction: the pivot unloads (N -> 0) while the rocking still
+            # needs a tangential force there; free flight would press the corner into the
+            # base, and sliding (the limit of a finite mu, which slips just before) is
+            # excluded: no contact mode is consistent
+            found.append(
+                f"{block.name} rocks on one contact with sliding = 'none' (unbounded "
+                f"friction), rotated {kin.rotation[i]:.3g} rad on the body below: its pivot "
+                "unloads while carrying a tangential force, and it may neither slide nor "
+                "fly; give the interface a finite friction (sliding = 'free') to let it "
+                "slip there"
+            )
+        elif touching.sum() == 1 and abs(slip) > tol.velocity:
             found.append(
                 f"{block.name} slides on one contact at {slip:.3g} m/s, rotated "
                 f"{kin.rotation[i]:.3g} rad on the body below, mu_0 = "

@@ -229,6 +229,7 @@ def _simulate(
     imp_log,
     lift_log,
     rest_speed,
+    rest_after,
     out,
 ):
     """Integrate the rocking motion; see :func:`simulate` for the meaning.
@@ -239,7 +240,9 @@ def _simulate(
     downward support acceleration a_v [m/s^2] at the record's samples (empty
     for none); lift_log: (time, side) of every start of rocking from rest;
     rest_speed: angular velocity [rad/s] after an impact below which the block
-    settles (0 for the default, 1e-6 of the speed that overturns it).
+    settles (0 for the default, 1e-6 of the speed that overturns it);
+    rest_after: time [s] from which the integration stops as soon as the
+    block rests once the excitation has ended (inf: never).
     """
     g = par[0]
     tan_p = math.tan(par[2])
@@ -297,6 +300,9 @@ def _simulate(
             break
         if t >= t_stop * (1.0 - 1e-13):
             status = 0 if resting else 1
+            break
+        if resting and not in_pulse and t >= rest_after:
+            status = 0
             break
         t_target = t_stop
         if in_pulse and dur < t_target:
@@ -486,7 +492,7 @@ def _outcome(par, kind, exc, rec, h_max):
     out = np.empty(13)
     _simulate(
         par, kind, exc, rec, np.empty(0), 0.0, 0.0, exc[2], h_max, True, ht, hth, hom, imp, lift,
-        0.0, out,
+        0.0, math.inf, out,
     )  # fmt: skip
     return out[0] > 0.5, out[4]
 
@@ -873,6 +879,7 @@ def simulate(
     max_impact_log: int = 100_000,
     max_uplift_log: int = 100_000,
     rest_angular_velocity: float = 0.0,
+    stop_at_rest_after: float = math.inf,
 ) -> RockingResult:
     """Rocking response of ``block`` to a support acceleration.
 
@@ -901,6 +908,10 @@ def simulate(
         The block settles on its base when its angular velocity after an
         impact is at most this [rad/s]; 0 (default) for 1e-6 of the angular
         velocity that carries it over its energy barrier.
+    stop_at_rest_after : float, optional
+        Stop at the first instant at or after this time [s], once the
+        excitation has ended, at which the block rests on its base (status
+        ``"rest"``); by default never (inf).
 
     Returns
     -------
@@ -923,7 +934,7 @@ def simulate(
     out = np.empty(13)
     _simulate(
         par, kind, exc, rec, vrec, float(theta0), float(omega0), float(t_end), h, decide,
-        ht, hth, hom, imp, lift, float(rest_angular_velocity), out,
+        ht, hth, hom, imp, lift, float(rest_angular_velocity), float(stop_at_rest_after), out,
     )  # fmt: skip
     n = int(out[9])
     n_imp = int(out[3])

@@ -14,12 +14,12 @@ tasks are spread over workers or machines.
 
 After the record: a block can overturn in free rocking after the shaking has
 stopped, so every simulation goes on until the stack is back at rest or
-every block has overturned. The record is simulated first; when the stack is
-then still moving and not every block has overturned, the simulation is run
-again to ``record end + free_time`` (the cap, 10 s by default) and judged at
-its end (status ``"capped"`` when still moving there). At rest means every
-remaining block's velocities below :data:`REST_VELOCITY` and its rotation
-relative to the body below under :data:`REST_ROTATION`.
+every block has overturned, in one run
+(:func:`~freestand.core.dynamics.timehistory.simulate` with
+``until_rest=True``): the rest state is checked at every step after the
+record (every interface sticking with both contacts closed, nothing moving),
+and the run stops there. It is capped at ``record end + free_time`` (10 s by
+default); status ``"capped"`` when still moving there.
 
 Statuses: ``"completed"``, ``"capped"`` (moving at the cap; its peaks are
 those reached by then), ``"failed"`` (the solver failed; the message says
@@ -43,12 +43,6 @@ from freestand.core.sweeps.fragility.intensity import IntensityMeasure, intensit
 from freestand.core.sweeps.fragility.outcomes import Outcome, block_values
 from freestand.core.sweeps.sampling import Variation, draw_samples
 
-#: A block is at rest when its centre's speed and ``|omega| * base width`` are
-#: below this [m/s] (1 mm/s) ...
-REST_VELOCITY = 1e-3
-#: ... and its rotation relative to the body below is below this [rad] (a residual
-#: rocking of 1 mrad cannot lead to any outcome).
-REST_ROTATION = 1e-3
 #: Default time simulated after the end of a record, at most [s].
 FREE_TIME = 10.0
 
@@ -225,66 +219,46 @@ def sample_stacks(stack: Stack, variations, values) -> list[Stack | None]:
     return stacks
 
 
-def at_rest(result, stack: Stack) -> bool:
-    """Whether every block not overturned is at rest at the end of a result."""
-    velocity = result.velocity[-1]
-    rotation = result.relative_rotation[-1]
-    for b, block in enumerate(stack.blocks):
-        if result.overturned[b]:
-            continue
-        width = block.base_right - block.base_left
-        vx, vz, omega = (float(v) for v in velocity[b])
-        if not all(math.isfinite(v) for v in (vx, vz, omega)):
-            return False
-        if max(abs(vx), abs(vz), abs(omega) * width) > REST_VELOCITY:
-            return False
-        if abs(float(rotation[b])) > REST_ROTATION:
-            return False
-    return True
-
-
 def simulate_task(
     stack: Stack, motion: GroundMotion, factor: float, polarity: int, campaign: Campaign
 ):
     """Simulate one task; (result or None, status, message, simulated time [s]).
 
     The record (times ``factor``, its horizontal component times
-    ``polarity``) is simulated; if the stack is still moving at its end,
-    again to ``free_time`` after it (see the module notes).
+    ``polarity``) is simulated in one run that goes on after the record until
+    the stack is at rest, every block has overturned, or ``free_time`` after
+    the record (``simulate(..., until_rest=True)``; see the module notes).
     """
     from freestand.core.dynamics.timehistory import SupportMotion, simulate
 
     horizontal = np.asarray(motion.horizontal) * (factor * polarity)
     vertical = None if motion.vertical is None else np.asarray(motion.vertical) * factor
     support = SupportMotion(motion.dt, horizontal, vertical)
-    end = support.duration
     try:
-        result = simulate(stack, support, None, method=campaign.method, gravity=campaign.gravity)
-        if result.status != "completed":
-            return result, "failed", result.message, float(result.time[-1])
-        if result.overturned.all() or at_rest(result, stack):
-            return result, "completed", "", float(result.time[-1])
-        if campaign.free_time <= 0:
-            return result, "capped", "moving at the end of the record", end
         result = simulate(
             stack,
             support,
-            end + campaign.free_time,
+            None,
             method=campaign.method,
             gravity=campaign.gravity,
+            until_rest=True,
+            free_time=campaign.free_time,
         )
     except Exception as error:  # noqa: BLE001 - any solver error is one failed simulation
         return None, "failed", f"{type(error).__name__}: {error}", math.nan
-    if result.status != "completed":
-        return result, "failed", result.message, float(result.time[-1])
-    if result.overturned.all() or at_rest(result, stack):
-        return result, "completed", "", float(result.time[-1])
-    return (
-        result,
-        "capped",
-        f"still moving {campaign.free_time:g} s after the record",
-        float(result.time[-1]),
-    )
+    simulated = float(result.time[-1])
+    if result.status == "completed":
+        return result, "completed", "", simulated
+    if result.status == "capped":
+        if campaign.free_time <= 0:
+            return result, "capped", "moving at the end of the record", simulated
+        return (
+            result,
+            "capped",
+            f"still moving {campaign.free_time:g} s after the record",
+            simulated,
+        )
+    return result, "failed", result.message, simulated
 
 
 def columns(campaign: Campaign) -> list[str]:
