@@ -57,7 +57,7 @@ def screen(
     if vertical_senses is not None and vertical_senses not in VERTICAL_SENSES:
         raise FreestandError(
             f"{vertical_senses!r} is not a choice; use "
-            + " or ".join(VERTICAL_SENSES)
+            + " or ".join(repr(sense) for sense in VERTICAL_SENSES)
             + ", e.g. --vertical-senses both",
             source="--vertical-senses",
         )
