@@ -362,7 +362,36 @@ CASES = [
         words=("--amplitudes", "2 m", "acceleration"),
         id="amplitudes-in-m",
     ),
-]
+    # 3. unwritable outputs (/proc takes no new file, even for root): refused before computing
+    _case(
+        "records", "spectrum", "{record}", "--plot", "/proc/spectra.png",
+        words=("--plot", "cannot write", "/proc"), id="records-spectrum-plot-unwritable",
+    ),
+    _case(
+        "records", "spectrum", "{record}", "--csv", "/proc/spectra.csv",
+        words=("--csv", "cannot write", "/proc"), id="records-spectrum-csv-unwritable",
+    ),
+    _case(
+        "records", "floor", "{record}", "--frequency", "2.5Hz", "--output", "/proc/floor.csv",
+        words=("--output", "cannot write", "/proc"), id="records-floor-output-unwritable",
+    ),
+    _case(
+        "records", "generate", "--target", "rg1.60:pga=0.3g", "--count", "1", "--duration", "2",
+        "--output", "/proc/suite", words=("--output", "cannot write", "/proc"),
+        id="records-generate-output-unwritable",
+    ),
+    _case(
+        "records", "generate", "--target", "rg1.60:pga=0.3g", "--count", "1", "--duration", "2",
+        "--output", "suite", "--plot", "/proc/suite.png", words=("--plot", "cannot write"),
+        id="records-generate-plot-unwritable",
+    ),
+    # 4. a typo that would run for hours
+    _case(
+        "records", "generate", "--target", "rg1.60:pga=0.3g", "--count", "1", "--duration", "2",
+        "--output", "suite", "--dt", "1e-9", words=("--dt", "1e-09", "samples"),
+        id="records-generate-dt-tiny",
+    ),
+]  # fmt: skip
 
 
 def _expand(args: tuple[str, ...], inputs: Path) -> list[str]:
