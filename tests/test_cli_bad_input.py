@@ -391,6 +391,11 @@ CASES = [
         "--output", "suite", "--dt", "1e-9", words=("--dt", "1e-09", "samples"),
         id="records-generate-dt-tiny",
     ),
+    # 5. messages print as written: rich would turn ":B:" of "A:B:N" into an emoji
+    _case(
+        "fragility", "{crane}", "--suite", "suite.toml", "--levels", "1:2",
+        words=("--levels", "'1:2'", "A:B:N"), id="fragility-levels-two-fields",
+    ),
 ]  # fmt: skip
 
 

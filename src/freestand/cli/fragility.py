@@ -38,7 +38,7 @@ class _Rate(ProgressColumn):
 def _progress(quiet: bool):
     from rich.console import Console
 
-    err = Console(stderr=True)
+    err = Console(emoji=False, stderr=True)
     return Progress(
         TextColumn("{task.description}"),
         BarColumn(),
@@ -174,7 +174,7 @@ def fragility(
     if result.simulations and result.failed == result.simulations:
         from rich.console import Console
 
-        Console(stderr=True).print(
+        Console(emoji=False, stderr=True).print(
             "[bold red]error:[/] every simulation failed or was invalid; nothing to fit"
         )
         raise typer.Exit(1)

@@ -120,7 +120,7 @@ def _progress(total: int, description: str, quiet: bool):
         BarColumn(),
         MofNCompleteColumn(),
         TimeElapsedColumn(),
-        console=Console(stderr=True),
+        console=Console(emoji=False, stderr=True),
         transient=True,
     )
 

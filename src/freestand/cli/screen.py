@@ -77,9 +77,9 @@ def screen(
         document["force_envelope"] = [envelope_document(item) for item in envelope]
         typer.echo(json.dumps(document, indent=2))
         return
-    console = Console()
+    console = Console(emoji=False)
     if not console.is_terminal:
-        console = Console(width=120)
+        console = Console(emoji=False, width=120)
     console.print(
         f"[bold]{escape(model.name)}[/]  ({escape(model.source)}, g = {model.gravity} m/s^2)",
         highlight=False,

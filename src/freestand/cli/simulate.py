@@ -310,7 +310,7 @@ def _exit_if_failed(results) -> None:
 @contextlib.contextmanager
 def _progress_bar(quiet: bool):
     """A rich progress bar of the simulated time on stderr (a terminal only, not with --json)."""
-    console = Console(stderr=True)
+    console = Console(emoji=False, stderr=True)
     if quiet or not console.is_terminal:
         yield None
         return
