@@ -64,6 +64,7 @@ def inputs(tmp_path_factory) -> Path:
     (folder / "a_folder.csv").mkdir()
     (folder / "a_folder.gif").mkdir()
     (folder / "a_folder.html").mkdir()
+    (folder / "a_folder.png").mkdir()
     return folder
 
 
@@ -384,6 +385,16 @@ CASES = [
         "records", "generate", "--target", "rg1.60:pga=0.3g", "--count", "1", "--duration", "2",
         "--output", "suite", "--plot", "/proc/suite.png", words=("--plot", "cannot write"),
         id="records-generate-plot-unwritable",
+    ),
+    _case(
+        "fragility", "{crane}", "--suite", "suite.toml", "--levels", "1:2:2",
+        "--plot", "/proc/fragility.png", words=("--plot", "cannot write"),
+        id="fragility-plot-unwritable",
+    ),
+    _case(
+        "fragility", "{crane}", "--suite", "suite.toml", "--levels", "1:2:2",
+        "--plot", "{inputs}/a_folder.png", words=("--plot", "is a folder"),
+        id="fragility-plot-is-a-folder",
     ),
     # 4. a typo that would run for hours
     _case(

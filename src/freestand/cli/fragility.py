@@ -20,7 +20,7 @@ from rich.progress import (
 from rich.table import Table
 from rich.text import Text
 
-from freestand.cli.common import console
+from freestand.cli.common import _check_parent, console
 from freestand.errors import FreestandError
 from freestand.io.fragility_results import im_label
 
@@ -65,6 +65,12 @@ def _check_outputs(plot: Path | None) -> None:
         raise FreestandError(
             f"the folder of {str(plot)!r} does not exist; create it first", source="--plot"
         )
+    if plot.is_dir():
+        raise FreestandError(
+            f"{str(plot)!r} is a folder; give a file name, e.g. --plot {plot / 'fragility.png'}",
+            source="--plot",
+        )
+    _check_parent(plot, "--plot")
 
 
 def fragility(
