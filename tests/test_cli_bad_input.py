@@ -396,6 +396,14 @@ CASES = [
         "--plot", "{inputs}/a_folder.png", words=("--plot", "is a folder"),
         id="fragility-plot-is-a-folder",
     ),
+    _case(
+        "fragility", "{crane}", "--suite", "suite.toml", "--levels", "1:2:2", "--seed", "-1",
+        words=("--seed", "-1"), id="fragility-negative-seed",
+    ),
+    _case(
+        "fragility", "--from-store", "{inputs}", words=("--from-store", "not a campaign store"),
+        id="fragility-from-store-not-a-store",
+    ),
     # 4. a typo that would run for hours
     _case(
         "records", "generate", "--target", "rg1.60:pga=0.3g", "--count", "1", "--duration", "2",
@@ -469,3 +477,42 @@ def test_read_only_folder_is_refused_before_computing(tmp_path):
         assert "--csv" in result.stderr and "cannot write" in result.stderr
     finally:
         folder.chmod(stat.S_IRWXU)
+
+
+def test_scheduler_that_is_not_dask_is_refused_in_one_line(tmp_path):
+    """A server at the --scheduler address that answers something else than Dask (here a
+    few bytes of HTTP): a message naming the option, exit 2, no traceback and no hang."""
+    import socket
+    import threading
+
+    server = socket.socket()
+    server.bind(("127.0.0.1", 0))
+    server.listen()
+    server.settimeout(30)
+    port = server.getsockname()[1]
+
+    def answer():
+        try:
+            for _ in range(5):
+                connection, _ = server.accept()
+                with connection:
+                    connection.sendall(b"HTTP/1.1 400 Bad Request\r\n\r\n" + b"\xff" * 64)
+        except OSError:
+            pass
+
+    (tmp_path / "suite.toml").write_text(
+        f'name = "one"\n[[record]]\nname = "r"\nhorizontal = "{RECORD.as_posix()}"\n'
+    )
+    thread = threading.Thread(target=answer, daemon=True)
+    thread.start()
+    try:
+        result = run_freestand(
+            "fragility", str(CRANE), "--suite", str(tmp_path / "suite.toml"), "--levels",
+            "1:2:2", "--scheduler", f"tcp://127.0.0.1:{port}", cwd=tmp_path,
+        )  # fmt: skip
+    finally:
+        server.close()
+    output = result.stdout + result.stderr
+    assert "Traceback" not in output and "internal error" not in output, output
+    assert result.returncode == 2, output
+    assert "--scheduler" in result.stderr

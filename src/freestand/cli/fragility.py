@@ -134,9 +134,16 @@ def fragility(
         raise FreestandError(f"{confidence} is not in (0, 1); e.g. 0.95", source="--confidence")
     if bootstrap < 0:
         raise FreestandError(f"{bootstrap} replicates: give 0 or more", source="--bootstrap")
+    if seed < 0:
+        raise FreestandError(f"{seed} is negative; give a seed >= 0", source="--seed")
     if from_store is not None:
         stored = CampaignStore(from_store)
-        definition = stored.definition()
+        try:
+            definition = stored.definition()
+        except FreestandError as error:
+            if error.source != "--store":
+                raise
+            raise FreestandError(error.detail, source="--from-store") from None
         rows = stored.read()
         if not rows:
             raise FreestandError(
