@@ -404,6 +404,12 @@ CASES = [
         "fragility", "--from-store", "{inputs}", words=("--from-store", "not a campaign store"),
         id="fragility-from-store-not-a-store",
     ),
+    _case(
+        "records", "generate", "--target", "rg1.60:pga=0.3g", "--output", "{inputs}/a_file/suite",
+        words=("--output", "a_file", "is a file"), id="records-generate-output-under-a-file",
+    ),
+    _case(*SIMULATE, "--method", "rk4", words=("--method", "'rk4'", "not a solver"),
+          id="simulate-unknown-method"),
     # 4. a typo that would run for hours
     _case(
         "records", "generate", "--target", "rg1.60:pga=0.3g", "--count", "1", "--duration", "2",

@@ -326,6 +326,11 @@ def _prepare_output_folder(output: Path) -> None:
             source="--output",
         )
     parent = output.resolve().parent
+    if parent.exists() and not parent.is_dir():
+        raise FreestandError(
+            f"{str(parent)!r} is a file, not a folder; give a new folder elsewhere",
+            source="--output",
+        )
     if not parent.is_dir():
         raise FreestandError(
             f"folder {str(parent)!r} does not exist; create it first", source="--output"

@@ -146,8 +146,12 @@ def simulate(
         raise FreestandError(
             f"{dt} is not a positive time step [s]; e.g. --dt 0.005", source="--dt"
         )
+    if method not in METHODS:
+        raise FreestandError(
+            f"{method!r} is not a solver; use " + ", ".join(METHODS), source="--method"
+        )
     for stack in stacks:
-        if method not in METHODS or (method == "single-block" and len(stack.blocks) != 1):
+        if method == "single-block" and len(stack.blocks) != 1:
             raise FreestandError(
                 f"--method {method} does not apply to {stack.name!r} ({len(stack.blocks)} "
                 "blocks); use auto, general, or single-block for a one-block configuration",
