@@ -410,6 +410,10 @@ CASES = [
     ),
     _case(*SIMULATE, "--method", "rk4", words=("--method", "'rk4'", "not a solver"),
           id="simulate-unknown-method"),
+    _case(
+        "records", "floor", "{inputs}", "--frequency", "2.5Hz",
+        words=("is a directory", "not a record"), id="records-floor-folder-as-record",
+    ),
     # 4. a typo that would run for hours
     _case(
         "records", "generate", "--target", "rg1.60:pga=0.3g", "--count", "1", "--duration", "2",
