@@ -414,11 +414,20 @@ CASES = [
         "records", "floor", "{inputs}", "--frequency", "2.5Hz",
         words=("is a directory", "not a record"), id="records-floor-folder-as-record",
     ),
+    _case(
+        "fragility", "{crane}", "--suite", "suite.toml", "--levels", "1:2:2", "--samples", "2",
+        words=("--samples", "without --vary", "identical"), id="fragility-samples-without-vary",
+    ),
     # 4. a typo that would run for hours
     _case(
         "records", "generate", "--target", "rg1.60:pga=0.3g", "--count", "1", "--duration", "2",
         "--output", "suite", "--dt", "1e-9", words=("--dt", "1e-09", "samples"),
         id="records-generate-dt-tiny",
+    ),
+    _case(
+        "fragility", "{crane}", "--suite", "suite.toml", "--levels", "1:2:2",
+        "--samples", "100000000", words=("--samples", "100000000", "1 to"),
+        id="fragility-samples-huge",
     ),
     # 5. messages print as written: rich would turn ":B:" of "A:B:N" into an emoji
     _case(
