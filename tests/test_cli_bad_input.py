@@ -64,6 +64,7 @@ def inputs(tmp_path_factory) -> Path:
     (folder / "a_folder.csv").mkdir()
     (folder / "a_folder.gif").mkdir()
     (folder / "a_folder.html").mkdir()
+    (folder / "a_folder.png").mkdir()
     return folder
 
 
@@ -362,7 +363,78 @@ CASES = [
         words=("--amplitudes", "2 m", "acceleration"),
         id="amplitudes-in-m",
     ),
-]
+    # 3. unwritable outputs (/proc takes no new file, even for root): refused before computing
+    _case(
+        "records", "spectrum", "{record}", "--plot", "/proc/spectra.png",
+        words=("--plot", "cannot write", "/proc"), id="records-spectrum-plot-unwritable",
+    ),
+    _case(
+        "records", "spectrum", "{record}", "--csv", "/proc/spectra.csv",
+        words=("--csv", "cannot write", "/proc"), id="records-spectrum-csv-unwritable",
+    ),
+    _case(
+        "records", "floor", "{record}", "--frequency", "2.5Hz", "--output", "/proc/floor.csv",
+        words=("--output", "cannot write", "/proc"), id="records-floor-output-unwritable",
+    ),
+    _case(
+        "records", "generate", "--target", "rg1.60:pga=0.3g", "--count", "1", "--duration", "2",
+        "--output", "/proc/suite", words=("--output", "cannot write", "/proc"),
+        id="records-generate-output-unwritable",
+    ),
+    _case(
+        "records", "generate", "--target", "rg1.60:pga=0.3g", "--count", "1", "--duration", "2",
+        "--output", "suite", "--plot", "/proc/suite.png", words=("--plot", "cannot write"),
+        id="records-generate-plot-unwritable",
+    ),
+    _case(
+        "fragility", "{crane}", "--suite", "suite.toml", "--levels", "1:2:2",
+        "--plot", "/proc/fragility.png", words=("--plot", "cannot write"),
+        id="fragility-plot-unwritable",
+    ),
+    _case(
+        "fragility", "{crane}", "--suite", "suite.toml", "--levels", "1:2:2",
+        "--plot", "{inputs}/a_folder.png", words=("--plot", "is a folder"),
+        id="fragility-plot-is-a-folder",
+    ),
+    _case(
+        "fragility", "{crane}", "--suite", "suite.toml", "--levels", "1:2:2", "--seed", "-1",
+        words=("--seed", "-1"), id="fragility-negative-seed",
+    ),
+    _case(
+        "fragility", "--from-store", "{inputs}", words=("--from-store", "not a campaign store"),
+        id="fragility-from-store-not-a-store",
+    ),
+    _case(
+        "records", "generate", "--target", "rg1.60:pga=0.3g", "--output", "{inputs}/a_file/suite",
+        words=("--output", "a_file", "is a file"), id="records-generate-output-under-a-file",
+    ),
+    _case(*SIMULATE, "--method", "rk4", words=("--method", "'rk4'", "not a solver"),
+          id="simulate-unknown-method"),
+    _case(
+        "records", "floor", "{inputs}", "--frequency", "2.5Hz",
+        words=("is a directory", "not a record"), id="records-floor-folder-as-record",
+    ),
+    _case(
+        "fragility", "{crane}", "--suite", "suite.toml", "--levels", "1:2:2", "--samples", "2",
+        words=("--samples", "without --vary", "identical"), id="fragility-samples-without-vary",
+    ),
+    # 4. a typo that would run for hours
+    _case(
+        "records", "generate", "--target", "rg1.60:pga=0.3g", "--count", "1", "--duration", "2",
+        "--output", "suite", "--dt", "1e-9", words=("--dt", "1e-09", "samples"),
+        id="records-generate-dt-tiny",
+    ),
+    _case(
+        "fragility", "{crane}", "--suite", "suite.toml", "--levels", "1:2:2",
+        "--samples", "100000000", words=("--samples", "100000000", "1 to"),
+        id="fragility-samples-huge",
+    ),
+    # 5. messages print as written: rich would turn ":B:" of "A:B:N" into an emoji
+    _case(
+        "fragility", "{crane}", "--suite", "suite.toml", "--levels", "1:2",
+        words=("--levels", "'1:2'", "A:B:N"), id="fragility-levels-two-fields",
+    ),
+]  # fmt: skip
 
 
 def _expand(args: tuple[str, ...], inputs: Path) -> list[str]:
@@ -424,3 +496,42 @@ def test_read_only_folder_is_refused_before_computing(tmp_path):
         assert "--csv" in result.stderr and "cannot write" in result.stderr
     finally:
         folder.chmod(stat.S_IRWXU)
+
+
+def test_scheduler_that_is_not_dask_is_refused_in_one_line(tmp_path):
+    """A server at the --scheduler address that answers something else than Dask (here a
+    few bytes of HTTP): a message naming the option, exit 2, no traceback and no hang."""
+    import socket
+    import threading
+
+    server = socket.socket()
+    server.bind(("127.0.0.1", 0))
+    server.listen()
+    server.settimeout(30)
+    port = server.getsockname()[1]
+
+    def answer():
+        try:
+            for _ in range(5):
+                connection, _ = server.accept()
+                with connection:
+                    connection.sendall(b"HTTP/1.1 400 Bad Request\r\n\r\n" + b"\xff" * 64)
+        except OSError:
+            pass
+
+    (tmp_path / "suite.toml").write_text(
+        f'name = "one"\n[[record]]\nname = "r"\nhorizontal = "{RECORD.as_posix()}"\n'
+    )
+    thread = threading.Thread(target=answer, daemon=True)
+    thread.start()
+    try:
+        result = run_freestand(
+            "fragility", str(CRANE), "--suite", str(tmp_path / "suite.toml"), "--levels",
+            "1:2:2", "--scheduler", f"tcp://127.0.0.1:{port}", cwd=tmp_path,
+        )  # fmt: skip
+    finally:
+        server.close()
+    output = result.stdout + result.stderr
+    assert "Traceback" not in output and "internal error" not in output, output
+    assert result.returncode == 2, output
+    assert "--scheduler" in result.stderr

@@ -80,7 +80,7 @@ def _print_error(message: str) -> None:
     from rich.console import Console
     from rich.markup import escape
 
-    Console(stderr=True, highlight=False, soft_wrap=True).print(
+    Console(emoji=False, stderr=True, highlight=False, soft_wrap=True).print(
         f"[bold red]error:[/] {escape(message)}", markup=True
     )
 

@@ -37,13 +37,13 @@ from freestand.io.units import to_si
 
 def console() -> Console:
     """A console that is wide enough for the tables when writing to a pipe or file."""
-    terminal = Console()
-    return terminal if terminal.is_terminal else Console(width=120)
+    terminal = Console(emoji=False)
+    return terminal if terminal.is_terminal else Console(emoji=False, width=120)
 
 
 def error_console() -> Console:
     """The console on stderr, for warnings and progress."""
-    return Console(stderr=True, highlight=False, soft_wrap=True)
+    return Console(emoji=False, stderr=True, highlight=False, soft_wrap=True)
 
 
 def warn(message: str) -> None:

@@ -20,7 +20,7 @@ from rich.progress import (
 from rich.table import Table
 from rich.text import Text
 
-from freestand.cli.common import console
+from freestand.cli.common import _check_parent, console
 from freestand.errors import FreestandError
 from freestand.io.fragility_results import im_label
 
@@ -38,7 +38,7 @@ class _Rate(ProgressColumn):
 def _progress(quiet: bool):
     from rich.console import Console
 
-    err = Console(stderr=True)
+    err = Console(emoji=False, stderr=True)
     return Progress(
         TextColumn("{task.description}"),
         BarColumn(),
@@ -65,6 +65,12 @@ def _check_outputs(plot: Path | None) -> None:
         raise FreestandError(
             f"the folder of {str(plot)!r} does not exist; create it first", source="--plot"
         )
+    if plot.is_dir():
+        raise FreestandError(
+            f"{str(plot)!r} is a folder; give a file name, e.g. --plot {plot / 'fragility.png'}",
+            source="--plot",
+        )
+    _check_parent(plot, "--plot")
 
 
 def fragility(
@@ -128,9 +134,16 @@ def fragility(
         raise FreestandError(f"{confidence} is not in (0, 1); e.g. 0.95", source="--confidence")
     if bootstrap < 0:
         raise FreestandError(f"{bootstrap} replicates: give 0 or more", source="--bootstrap")
+    if seed < 0:
+        raise FreestandError(f"{seed} is negative; give a seed >= 0", source="--seed")
     if from_store is not None:
         stored = CampaignStore(from_store)
-        definition = stored.definition()
+        try:
+            definition = stored.definition()
+        except FreestandError as error:
+            if error.source != "--store":
+                raise
+            raise FreestandError(error.detail, source="--from-store") from None
         rows = stored.read()
         if not rows:
             raise FreestandError(
@@ -174,7 +187,7 @@ def fragility(
     if result.simulations and result.failed == result.simulations:
         from rich.console import Console
 
-        Console(stderr=True).print(
+        Console(emoji=False, stderr=True).print(
             "[bold red]error:[/] every simulation failed or was invalid; nothing to fit"
         )
         raise typer.Exit(1)

@@ -45,7 +45,7 @@ def _progress(total: int, description: str, quiet: bool):
     if quiet:
         yield None
         return
-    console = Console(stderr=True)
+    console = Console(emoji=False, stderr=True)
     if not console.is_terminal and total >= 1_000_000:
         console.print(f"{description}: {total:,} cases ...", highlight=False)
     with Progress(
@@ -246,7 +246,7 @@ def map_command(
         }
         typer.echo(json.dumps(document, indent=2))
         return
-    console = Console()
+    console = Console(emoji=False)
     console.print(
         f"[bold]{escape(model.name)}[/] / "
         + escape(
@@ -405,9 +405,9 @@ def sample_command(
     if as_json:
         typer.echo(json.dumps(_sweep_document(model.name, sweep), indent=2))
         return
-    console = Console()
+    console = Console(emoji=False)
     if not console.is_terminal:
-        console = Console(width=120)
+        console = Console(emoji=False, width=120)
     console.print(
         f"[bold]{escape(model.name)}[/]: {n} samples per case, seed {seed}, "
         f"{100 * confidence:g} % {interval} intervals",

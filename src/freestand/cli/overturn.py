@@ -132,7 +132,12 @@ def _finite(value: float) -> float | None:
 
 def overturn(
     model_file: Path = typer.Argument(..., help="Model file (TOML)."),
-    configuration: str = typer.Option(..., "--configuration", "-c", help="Configuration name."),
+    configuration: list[str] = typer.Option(
+        ...,
+        "--configuration",
+        "-c",
+        help="Configuration name (repeatable: one check per configuration, the same block).",
+    ),
     block: str = typer.Option(..., "--block", "-b", help="The rocking block (top of its stack)."),
     pivot: str = typer.Option(
         None, "--pivot", help="left | right (default: the pivot it rocks about in screening)."
@@ -172,12 +177,19 @@ def overturn(
     ),
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
-    """Rocking properties, overturning limits of pulses, and the response-spectrum check."""
+    """Rocking properties, overturning limits of pulses, and the response-spectrum check.
+
+    With several ``-c``, every configuration is checked in turn (a set of tables
+    each; with ``--json`` a list of documents, one per configuration; with
+    ``--plot`` the figures of each go into a sub-folder named after it).
+    """
     model = load(model_file)
     check_folder(plot, "--plot")
-    _, _, pivot, rocking = _rocking_block(
-        model, configuration, block, pivot, include_vertical, restitution
-    )
+    names = list(dict.fromkeys(configuration))
+    blocks = {
+        name: _rocking_block(model, name, block, pivot, include_vertical, restitution)
+        for name in names
+    }
     amplitude_values = parse_numbers(
         amplitudes, "--amplitudes", "m/s^2", "acceleration", model.gravity
     ) or sorted({e.horizontal for e in model.excitations})
@@ -197,6 +209,58 @@ def overturn(
                 f"{MIN_FREQUENCY:g} and {MAX_FREQUENCY:g} Hz, e.g. --frequencies 0.5,1,2",
                 source="--frequencies",
             )
+    horizontal = resolve_spectrum(spectrum, model, "horizontal")
+    documents = []
+    with staging() as stage:
+        for name in names:
+            folder = None
+            if plot is not None:
+                folder = stage.folder(plot if len(names) == 1 else plot / _folder_name(name))
+            documents.append(
+                _check_one(
+                    model,
+                    name,
+                    block,
+                    blocks[name],
+                    amplitude_values,
+                    frequency_values,
+                    horizontal,
+                    include_vertical,
+                    folder,
+                    as_json,
+                )  # fmt: skip
+            )
+        written = stage.commit()
+    if as_json:
+        for document in documents:
+            document["figures"] = [
+                str(path) for path in written
+                if len(names) == 1 or path.parent.name == _folder_name(document["configuration"])
+            ]  # fmt: skip
+        typer.echo(json.dumps(documents[0] if len(names) == 1 else documents, indent=2))
+        return
+    out = console()
+    for path in written:
+        out.print(escape(f"wrote {path}"), highlight=False)
+
+
+def _folder_name(configuration: str) -> str:
+    """A folder for the figures of one configuration: ``x-z cart right`` -> ``x-z_cart_right``."""
+    return (
+        "".join(c if c.isalnum() or c in "-_." else "_" for c in configuration) or "configuration"
+    )
+
+
+def _check_one(
+    model, configuration, block, rocking_block, amplitude_values, frequency_values,
+    horizontal, include_vertical, plot, as_json,
+) -> dict | None:  # fmt: skip
+    """Compute (and print, unless ``as_json``) the check of one configuration.
+
+    ``plot`` is the (staged) folder to write the figures into, or None. Returns
+    the JSON document (without its ``figures``) when ``as_json``.
+    """
+    _, _, pivot, rocking = rocking_block
     weight = (
         f"weight m (g - a_v) with a_v = {vertical_for_overturning(model):.2f} m/s^2 downward"
         if include_vertical
@@ -213,10 +277,8 @@ def overturn(
     )
     one_sine = overturning_limits(rocking, requested, kind="one-sine")
     one_cosine = overturning_limits(rocking, requested, kind="one-cosine")
-    horizontal = resolve_spectrum(spectrum, model, "horizontal")
     checks = check_spectrum(curves, horizontal) if horizontal is not None else {}
 
-    written: list[Path] = []
     if plot is not None:
         from freestand.plot.overturning import (
             plot_pulse_limits,
@@ -225,16 +287,13 @@ def overturn(
             save_figure,
         )
 
-        with staging() as stage:
-            folder = stage.folder(plot)
-            amplitude_grid = rectangular_amplitude_grid(rocking, operating)
-            curve = rectangular_pulse_limits(rocking, amplitude_grid, operating_amplitude=operating)
-            save_figure(plot_rectangular_pulse(curve), folder / "fig6_rectangular_pulse")
-            save_figure(plot_pulse_limits(curves), folder / "fig7_half_sine_pulse")
-            if horizontal is not None:
-                figure = plot_spectrum_check(curves, horizontal, checks)
-                save_figure(figure, folder / "fig8_spectrum_check")
-            written = stage.commit()
+        amplitude_grid = rectangular_amplitude_grid(rocking, operating)
+        curve = rectangular_pulse_limits(rocking, amplitude_grid, operating_amplitude=operating)
+        save_figure(plot_rectangular_pulse(curve), plot / "fig6_rectangular_pulse")
+        save_figure(plot_pulse_limits(curves), plot / "fig7_half_sine_pulse")
+        if horizontal is not None:
+            figure = plot_spectrum_check(curves, horizontal, checks)
+            save_figure(figure, plot / "fig8_spectrum_check")
 
     properties = {side: rocking.about(side) for side in ("pivot", "other")}
     if as_json:
@@ -294,10 +353,8 @@ def overturn(
             "weight": "m (g - a_v)" if include_vertical else "m g",
             "vertical_acceleration": vertical_for_overturning(model) if include_vertical else 0.0,
             "conclusion": CONCLUSION,
-            "figures": [str(path) for path in written],
         }
-        typer.echo(json.dumps(document, indent=2))
-        return
+        return document
 
     out = console()
     out.print(
@@ -383,8 +440,7 @@ def overturn(
                 name, check.verdict, f"{check.min_ratio:.2f}", f"{check.frequency_at_min:.2f}"
             )
         out.print(table)
-    for path in written:
-        out.print(escape(f"wrote {path}"), highlight=False)
+    return None
 
 
 def register(app: typer.Typer) -> None:

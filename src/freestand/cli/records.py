@@ -15,7 +15,7 @@ from rich.markup import escape
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from freestand.cli.common import console
+from freestand.cli.common import _check_parent, console
 from freestand.core.motion.spectra import Spectrum
 from freestand.errors import FreestandError
 
@@ -60,6 +60,11 @@ def _target(text: str, option: str) -> Spectrum:
         raise FreestandError(str(error).replace("--spectrum", option)) from None
 
 
+#: Most samples per generated record (duration / dt): 600 s at 0.0006 s; beyond, a typo such
+#: as --dt 1e-9 would run for hours.
+MAX_SAMPLES = 1_000_000
+
+
 def _check_output_file(path: Path | None, option: str, suffixes: tuple[str, ...]) -> None:
     """Refuse, before computing, an output file of the wrong type or in a non-folder."""
     if path is None:
@@ -72,9 +77,7 @@ def _check_output_file(path: Path | None, option: str, suffixes: tuple[str, ...]
         )
     if path.is_dir():
         raise FreestandError(f"{str(path)!r} is a folder; give a file name", source=option)
-    parent = path.parent
-    if parent.exists() and not parent.is_dir():
-        raise FreestandError(f"{str(parent)!r} is not a folder", source=option)
+    _check_parent(path, option)
 
 
 def _write_atomic(path: Path, writer) -> None:
@@ -117,7 +120,7 @@ def _progress(total: int, description: str, quiet: bool):
         BarColumn(),
         MofNCompleteColumn(),
         TimeElapsedColumn(),
-        console=Console(stderr=True),
+        console=Console(emoji=False, stderr=True),
         transient=True,
     )
 
@@ -323,10 +326,16 @@ def _prepare_output_folder(output: Path) -> None:
             source="--output",
         )
     parent = output.resolve().parent
+    if parent.exists() and not parent.is_dir():
+        raise FreestandError(
+            f"{str(parent)!r} is a file, not a folder; give a new folder elsewhere",
+            source="--output",
+        )
     if not parent.is_dir():
         raise FreestandError(
             f"folder {str(parent)!r} does not exist; create it first", source="--output"
         )
+    _check_parent(output, "--output")
 
 
 def _suite_document(result, output: Path, suite_file: Path | None) -> dict:
@@ -418,6 +427,12 @@ def generate(
         raise FreestandError(
             f"{dt} s: the step must be positive and at most 0.01 s (50 Hz is checked), "
             "e.g. --dt 0.005",
+            source="--dt",
+        )
+    if duration / dt > MAX_SAMPLES:
+        raise FreestandError(
+            f"{duration:g} s at dt = {dt:g} s is {duration / dt:.3g} samples per record, beyond "
+            f"the {MAX_SAMPLES:.0e} freestand generates; give a larger --dt, e.g. --dt 0.005",
             source="--dt",
         )
     if seed < 0:

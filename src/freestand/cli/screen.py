@@ -57,7 +57,7 @@ def screen(
     if vertical_senses is not None and vertical_senses not in VERTICAL_SENSES:
         raise FreestandError(
             f"{vertical_senses!r} is not a choice; use "
-            + " or ".join(VERTICAL_SENSES)
+            + " or ".join(repr(sense) for sense in VERTICAL_SENSES)
             + ", e.g. --vertical-senses both",
             source="--vertical-senses",
         )
@@ -77,9 +77,9 @@ def screen(
         document["force_envelope"] = [envelope_document(item) for item in envelope]
         typer.echo(json.dumps(document, indent=2))
         return
-    console = Console()
+    console = Console(emoji=False)
     if not console.is_terminal:
-        console = Console(width=120)
+        console = Console(emoji=False, width=120)
     console.print(
         f"[bold]{escape(model.name)}[/]  ({escape(model.source)}, g = {model.gravity} m/s^2)",
         highlight=False,

@@ -41,7 +41,12 @@ def _number(value: float) -> float | None:
 
 def simulate(
     model_file: Path = typer.Argument(..., help="Model file (TOML)."),
-    configuration: str = typer.Option(..., "--configuration", "-c", help="Configuration name."),
+    configuration: list[str] = typer.Option(
+        ...,
+        "--configuration",
+        "-c",
+        help="Configuration name (repeatable: one simulation each; not with --plot/--animate).",
+    ),
     record: Path = typer.Option(
         ..., "--record", help="Horizontal record (.AT2, CSV with units, or one column)."
     ),
@@ -93,9 +98,22 @@ def simulate(
     ),
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
-    """Sliding, rocking, impacts and overturning of every block under a record."""
+    """Sliding, rocking, impacts and overturning of every block under a record.
+
+    With several ``-c``, each configuration is simulated under the same record
+    in turn (a table each; with ``--json`` a list of documents, one per
+    configuration); the command exits with 1 if any simulation failed.
+    """
     model = load(model_file)
-    stack = model.configuration(configuration)
+    names = list(dict.fromkeys(configuration))
+    stacks = [model.configuration(name) for name in names]
+    for option, value in (("--plot", plot), ("--animate", animate)):
+        if value is not None and len(stacks) > 1:
+            raise FreestandError(
+                f"{option} draws one simulation, and {len(stacks)} configurations are given "
+                f"({', '.join(repr(name) for name in names)}); give one -c with {option}",
+                source=option,
+            )
     if sum(option is not None for option in (scale, peak, spectral)) > 1:
         raise FreestandError(
             "give one of --scale, --peak and --spectral, not several", source="--scale"
@@ -128,12 +146,17 @@ def simulate(
         raise FreestandError(
             f"{dt} is not a positive time step [s]; e.g. --dt 0.005", source="--dt"
         )
-    if method not in METHODS or (method == "single-block" and len(stack.blocks) != 1):
+    if method not in METHODS:
         raise FreestandError(
-            f"--method {method} does not apply to {configuration!r} ({len(stack.blocks)} blocks);"
-            " use auto, general, or single-block for a one-block configuration",
-            source="--method",
+            f"{method!r} is not a solver; use " + ", ".join(METHODS), source="--method"
         )
+    for stack in stacks:
+        if method == "single-block" and len(stack.blocks) != 1:
+            raise FreestandError(
+                f"--method {method} does not apply to {stack.name!r} ({len(stack.blocks)} "
+                "blocks); use auto, general, or single-block for a one-block configuration",
+                source="--method",
+            )
     check_drawing_options(plot, animate, exaggerate)
     motion = load_record(record, dt=dt, unit=unit, gravity=model.gravity, vertical=vertical)
     try:
@@ -163,6 +186,28 @@ def simulate(
         np.asarray(motion.horizontal),
         None if motion.vertical is None else np.asarray(motion.vertical),
     )
+    documents = []
+    results = []
+    for stack in stacks:
+        result, document, written = _simulate_one(
+            model, stack, motion, support, duration, method, step, plot, animate, exaggerate,
+            as_json,
+        )  # fmt: skip
+        results.append(result)
+        documents.append(document)
+    if as_json:
+        typer.echo(json.dumps(documents[0] if len(documents) == 1 else documents, indent=2))
+    _exit_if_failed(results)
+
+
+def _simulate_one(
+    model, stack, motion, support, duration, method, step, plot, animate, exaggerate, as_json
+):
+    """Simulate one configuration; print its tables unless ``as_json``.
+
+    Returns (result, JSON document, paths written).
+    """
+    configuration = stack.name
     with _progress_bar(as_json) as progress:
         result = simulate_stack(
             stack, support, duration, method=method, max_step=step, gravity=model.gravity,
@@ -209,9 +254,7 @@ def simulate(
                 for event in result.events[:50]
             ],
         }
-        typer.echo(json.dumps(document, indent=2))
-        _exit_if_failed(result)
-        return
+        return result, document, written
     out = console()
     out.print(
         f"[bold]{escape(model.name)}[/] / "
@@ -252,24 +295,26 @@ def simulate(
     )
     for path in written:
         out.print(escape(f"wrote {path}"), highlight=False)
-    _exit_if_failed(result)
+    return result, None, written
 
 
-def _exit_if_failed(result) -> None:
+def _exit_if_failed(results) -> None:
     """A simulation that failed ends the command with exit status 1 (and says why)."""
-    if result.status == "failed":
+    failed = [result for result in results if result.status == "failed"]
+    for result in failed:
         warn(
-            "the simulation failed"
+            f"the simulation of {result.configuration!r} failed"
             + (f": {result.message}" if result.message else "")
             + "; the results above stop where it failed (try a smaller --step)"
         )
+    if failed:
         raise typer.Exit(1)
 
 
 @contextlib.contextmanager
 def _progress_bar(quiet: bool):
     """A rich progress bar of the simulated time on stderr (a terminal only, not with --json)."""
-    console = Console(stderr=True)
+    console = Console(emoji=False, stderr=True)
     if quiet or not console.is_terminal:
         yield None
         return

@@ -86,6 +86,14 @@ def _dask_client(scheduler):
             "`dask scheduler` and workers with `dask worker ADDRESS`",
             source="--scheduler",
         ) from None
+    except Exception as error:  # a server that is not Dask
+        # whatever answers at the address is not a Dask scheduler: its bytes read as a
+        # Dask message give absurd frame lengths (MemoryError) or undecodable data
+        raise FreestandError(
+            f"{scheduler!r} answers, but not as a Dask scheduler ({type(error).__name__}); "
+            "give the address that `dask scheduler` prints, e.g. tcp://HOST:8786",
+            source="--scheduler",
+        ) from None
 
 
 def run_campaign(

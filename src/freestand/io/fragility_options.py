@@ -28,6 +28,11 @@ from freestand.io.units import to_si
 _QUANTITY = {"m/s^2": "acceleration", "-": "dimensionless"}
 
 
+#: Most samples per record and level: with 1000 levels and a suite of 30 records, 3e8
+#: simulations already; beyond, a typo (--samples 100000000) would not finish.
+MAX_SAMPLES = 10_000
+
+
 def parse_intensity(text: str, stack: Stack, option: str = "--im") -> IntensityMeasure:
     """Read ``pga``, ``pgv``, ``sa:F[,DAMPING]`` or ``pga-alpha[:BLOCK]``."""
     kind, _, rest = text.strip().partition(":")
@@ -249,8 +254,18 @@ def build_campaign(
                 source=source + "--vary",
             )
     count = samples if samples is not None else (10 if variations else 1)
-    if count < 1:
-        raise FreestandError(f"{count} samples: give 1 or more", source=source + "--samples")
+    if not 1 <= count <= MAX_SAMPLES:
+        raise FreestandError(
+            f"{count} samples: give 1 to {MAX_SAMPLES} per record and level, e.g. --samples 10",
+            source=source + "--samples",
+        )
+    if count > 1 and not variations:
+        raise FreestandError(
+            f"{count} samples without --vary would be {count} identical simulations; vary an "
+            f"input (e.g. --vary {stack.blocks[-1].name}.friction.static=uniform(0.4,0.6)) or "
+            "leave --samples out",
+            source=source + "--samples",
+        )
     names = [b.name for b in stack.blocks]
     outcomes = (
         tuple(parse_outcome(text, names, source + "--outcome") for text in outcome)

@@ -667,6 +667,8 @@ def read_single_column_component(
     """Read a file of one acceleration per line (see :func:`read_single_column`)."""
     path = Path(path)
     source = str(path)
+    if not path.is_file():
+        _read_lines(path)  # a missing file or a folder: says so (before asking for dt, unit)
     if dt is None or unit is None:
         raise FreestandError(
             "a single-column record holds no time step or unit; give both, e.g. "
