@@ -81,6 +81,46 @@ _SLIDING_CODES = {Sliding.FREE: 0, Sliding.NONE: 1, Sliding.NO_RIGHT: 2, Sliding
 
 
 @nb.njit(cache=True, inline="always")
+def solve_in_place(matrix, rhs, k):
+    """Solve the leading k x k system ``matrix x = rhs`` in place (x in ``rhs``).
+
+    Gaussian elimination with partial pivoting on the small systems of one
+    contact mode (at most three unknowns per interface); ``matrix`` is
+    overwritten. Returns False for an exactly singular system (the mode is
+    then not a solution).
+    """
+    for p in range(k):
+        pivot = p
+        largest = abs(matrix[p, p])
+        for r in range(p + 1, k):
+            if abs(matrix[r, p]) > largest:
+                largest = abs(matrix[r, p])
+                pivot = r
+        if largest == 0.0:
+            return False
+        if pivot != p:
+            for j in range(k):
+                tmp = matrix[p, j]
+                matrix[p, j] = matrix[pivot, j]
+                matrix[pivot, j] = tmp
+            tmp = rhs[p]
+            rhs[p] = rhs[pivot]
+            rhs[pivot] = tmp
+        for r in range(p + 1, k):
+            factor = matrix[r, p] / matrix[p, p]
+            if factor != 0.0:
+                for j in range(p + 1, k):
+                    matrix[r, j] -= factor * matrix[p, j]
+                rhs[r] -= factor * rhs[p]
+    for p in range(k - 1, -1, -1):
+        total = rhs[p]
+        for j in range(p + 1, k):
+            total -= matrix[p, j] * rhs[j]
+        rhs[p] = total / matrix[p, p]
+    return True
+
+
+@nb.njit(cache=True, inline="always")
 def _row(i, kind, reference):
     """Row of the 4-per-interface Delassus matrix: gap left, gap right, slip left, slip right."""
     if kind < 2:
@@ -166,34 +206,8 @@ def solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full,
                 reference = 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
                 value += coeff[j] * w[row, 4 * i + 2 + reference]
             matrix[r, j] = value
-    for p in range(k):
-        pivot = p
-        largest = abs(matrix[p, p])
-        for r in range(p + 1, k):
-            if abs(matrix[r, p]) > largest:
-                largest = abs(matrix[r, p])
-                pivot = r
-        if largest == 0.0:
-            return False
-        if pivot != p:
-            for j in range(k):
-                tmp = matrix[p, j]
-                matrix[p, j] = matrix[pivot, j]
-                matrix[pivot, j] = tmp
-            tmp = rhs[p]
-            rhs[p] = rhs[pivot]
-            rhs[pivot] = tmp
-        for r in range(p + 1, k):
-            factor = matrix[r, p] / matrix[p, p]
-            if factor != 0.0:
-                for j in range(p + 1, k):
-                    matrix[r, j] -= factor * matrix[p, j]
-                rhs[r] -= factor * rhs[p]
-    for p in range(k - 1, -1, -1):
-        total = rhs[p]
-        for j in range(p + 1, k):
-            total -= matrix[p, j] * rhs[j]
-        rhs[p] = total / matrix[p, p]
+    if not solve_in_place(matrix, rhs, k):
+        return False
     # forces: 4 slots per interface (N_L, N_R, T at slip L, T at slip R)
     for r in range(4 * active):
         full[r] = 0.0

@@ -40,6 +40,7 @@ from freestand.core.contact.engine import (  # noqa: F401  (re-exported for the 
     RELATIVE_TOLERANCE,
     accelerations,
     solve_contact_problem,
+    solve_in_place,
 )
 
 #: Event kinds, indexed by the kernel's event codes.
@@ -1509,34 +1510,8 @@ def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, for
             for col in range(c0, n):
                 total += row_j[r, col] * force_g[j, col]
             matrix[r, j] = total
-    for p in range(k):
-        pivot = p
-        largest = abs(matrix[p, p])
-        for r in range(p + 1, k):
-            if abs(matrix[r, p]) > largest:
-                largest = abs(matrix[r, p])
-                pivot = r
-        if largest == 0.0:
-            return False
-        if pivot != p:
-            for j in range(k):
-                tmp = matrix[p, j]
-                matrix[p, j] = matrix[pivot, j]
-                matrix[pivot, j] = tmp
-            tmp = rhs[p]
-            rhs[p] = rhs[pivot]
-            rhs[pivot] = tmp
-        for r in range(p + 1, k):
-            factor = matrix[r, p] / matrix[p, p]
-            if factor != 0.0:
-                for j in range(p + 1, k):
-                    matrix[r, j] -= factor * matrix[p, j]
-                rhs[r] -= factor * rhs[p]
-    for p in range(k - 1, -1, -1):
-        total = rhs[p]
-        for j in range(p + 1, k):
-            total -= matrix[p, j] * rhs[j]
-        rhs[p] = total / matrix[p, p]
+    if not solve_in_place(matrix, rhs, k):
+        return False
     for c in range(n):
         qdd[c] = free[c] if c >= c0 else 0.0
     for j in range(k):
