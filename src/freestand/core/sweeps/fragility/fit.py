@@ -60,10 +60,6 @@ BETA_MAX = 20.0
 #: z of the 5 % quantile of the standard normal distribution [-].
 Z05 = float(ndtri(0.05))
 
-#: A bootstrap bound of the median beyond this factor above the highest level (or below
-#: the lowest) is not bounded by the data: it is reported as infinite (or zero) [-].
-UNBOUNDED_FACTOR = 100.0
-
 
 @dataclass(frozen=True)
 class Fragility:
@@ -88,9 +84,6 @@ class Fragility:
         theta [IM unit] and beta [-]; NaN when not fitted.
     median_interval, beta_interval : tuple of float
         Bootstrap percentile intervals at ``confidence``; NaN when not fitted.
-        A median bound more than :data:`UNBOUNDED_FACTOR` times beyond the
-        levels is not bounded by the data: ``inf`` above (``null`` in JSON),
-        0 below.
     quantile05 : float
         ``theta exp(-1.645 beta)`` [IM unit]: the intensity of 5 % probability.
     hclpf : float
@@ -395,12 +388,7 @@ def fit_fragility(
         a_star, b_star, _ = probit_mle(xc, z_star, n_star)
         theta_star, beta_star = _to_median_beta(a_star, b_star, centre)
         replicates = np.column_stack([theta_star, beta_star])
-        low, high = _percentile_interval(theta_star, confidence)
-        if high > UNBOUNDED_FACTOR * float(np.max(x_levels)):
-            high = math.inf  # the data (highest level) do not bound the median from above
-        if low < float(np.min(x_levels)) / UNBOUNDED_FACTOR:
-            low = 0.0  # nor from below
-        median_interval = (low, high)
+        median_interval = _percentile_interval(theta_star, confidence)
         beta_interval = _percentile_interval(beta_star, confidence)
         q05 = theta_star * np.exp(Z05 * beta_star)
         q05 = q05[np.isfinite(q05)]
