@@ -73,6 +73,9 @@ __all__ = ["MAX_DISTINCT", "RELATIVE_TOLERANCE", "solve", "solve_contact_problem
 #: Largest number of distinct admissible states kept per solve.
 MAX_DISTINCT = 16
 
+#: Most local modes of one interface (four contact states, up to three tangential ones).
+MAX_LOCAL = 10
+
 #: Entries of the ``info`` vector of :func:`solve_contact_states`.
 INFO_MODES, INFO_SINGULAR, INFO_KINETIC_ONLY, INFO_RELAXED = range(4)
 INFO_SIZE = 4
@@ -410,6 +413,51 @@ def choose(order, candidate, physical, lam_all, qdd_all, force_tol, accel_tol, k
 
 
 @nb.njit(cache=True)
+def _local_unknowns(active, local, local_count, mu, count, index, slip_row, coeff):
+    """The unknowns of every local mode, as :func:`solve_mode` orders them.
+
+    For interface ``i`` and local mode ``m``: ``count[i, m]`` unknowns, each with its
+    Delassus row (= column) ``index``, the slip row ``slip_row`` along which a
+    sliding interface's friction acts and the coefficient ``coeff = -d mu`` on it
+    (0 for a sticking or free interface).
+    """
+    for i in range(active):
+        for m in range(local_count[i]):
+            left = local[i, m, 0]
+            right = local[i, m, 1]
+            tangential = local[i, m, 2]
+            reference = 1 if (right == 1 and left == 0) else 0
+            direction = 0.0
+            if tangential == 2:
+                direction = 1.0
+            elif tangential == 3:
+                direction = -1.0
+            elif tangential == 4:
+                direction = mu[i, 1]  # sign of the slip velocity
+            k = 0
+            for side in range(2):
+                if local[i, m, side] == 1:
+                    index[i, m, k] = 4 * i + side
+                    slip_row[i, m, k] = 4 * i + 2 + reference
+                    coeff[i, m, k] = -direction * mu[i, 0]
+                    k += 1
+            if tangential == 1:
+                index[i, m, k] = 4 * i + 2 + reference
+                slip_row[i, m, k] = 4 * i + 2 + reference
+                coeff[i, m, k] = 0.0
+                k += 1
+            count[i, m] = k
+
+
+@nb.njit(cache=True)
+def _grown(array, rows):
+    """A copy of ``array`` with ``rows`` rows (the first ones copied)."""
+    bigger = np.empty((rows,) + array.shape[1:], dtype=array.dtype)
+    bigger[: array.shape[0]] = array
+    return bigger
+
+
+@nb.njit(cache=True)
 def solve_contact_states(
     active,
     inverse_mass,
@@ -470,11 +518,11 @@ def solve_contact_states(
         ambiguous); only the first K are written.
     """
     n = 3 * active
-    rows = 4 * active
-    w = np.empty((rows, rows))
-    h = np.empty(rows)
+    size = 4 * active
+    w = np.empty((size, size))
+    h = np.empty(size)
     delassus(active, inverse_mass, free_acc, jn, bn, jt, bt, w, h)
-    local = np.empty((active, 10, 3), dtype=np.int64)
+    local = np.empty((active, MAX_LOCAL, 3), dtype=np.int64)
     local_count = np.empty(active, dtype=np.int64)
     total = 1
     for i in range(active):
@@ -494,46 +542,99 @@ def solve_contact_states(
         mu[i, 1] = sign
         mu_break[i, 0] = mu_kinetic[i] if slip[i] != 0.0 else mu_static[i]
         mu_break[i, 1] = sign
-    lam_all = np.empty((total, active, 3))
-    acc_all = np.empty((total, active, 3))
-    qdd_all = np.empty((total, n))
-    key = np.empty(total, dtype=np.int64)
-    physical = np.zeros(total, dtype=np.bool_)
-    candidate = np.zeros(total, dtype=np.bool_)
+    # the unknowns of every local mode, so that a mode's system is gathered from W
+    # without decoding the mode again (the values and order of solve_mode)
+    local_unknowns = np.empty((active, MAX_LOCAL), dtype=np.int64)
+    local_index = np.empty((active, MAX_LOCAL, 3), dtype=np.int64)
+    local_slip_row = np.empty((active, MAX_LOCAL, 3), dtype=np.int64)
+    local_coeff = np.empty((active, MAX_LOCAL, 3))
+    _local_unknowns(
+        active, local, local_count, mu, local_unknowns, local_index, local_slip_row, local_coeff
+    )
+    # only the admissible modes (candidates) are kept, in enumeration order
+    capacity = min(total, 16)
+    cand_lam = np.empty((capacity, active, 3))
+    cand_acc = np.empty((capacity, active, 3))
+    cand_qdd = np.empty((capacity, n))
+    cand_key = np.empty(capacity, dtype=np.int64)
+    cand_combo = np.empty(capacity, dtype=np.int64)
+    cand_physical = np.empty(capacity, dtype=np.bool_)
+    candidates = 0
     mode = np.empty((active, 3), dtype=np.int64)
+    lam = np.empty((active, 3))
+    a = np.empty((active, 3))
+    qdd = np.empty(n)
     lam_static = np.empty((active, 3))
     a_static = np.empty((active, 3))
-    matrix = np.empty((3 * active, 3 * active))
-    rhs = np.empty(3 * active)
-    index = np.empty(3 * active, dtype=np.int64)
-    coeff = np.empty(3 * active)
-    full = np.empty(4 * active)
+    matrix = np.empty((n, n))
+    rhs = np.empty(n)
+    index = np.empty(n, dtype=np.int64)
+    slip_row = np.empty(n, dtype=np.int64)
+    coeff = np.empty(n)
+    full = np.empty(size)
     digits = np.zeros(active, dtype=np.int64)
     singular = 0
     kinetic_only = 0
     for combo in range(total):
-        # itertools.product order: the last interface varies fastest
-        rest = combo
-        for i in range(active - 1, -1, -1):
-            digits[i] = rest % local_count[i]
-            rest //= local_count[i]
+        if combo:
+            # itertools.product order: the last interface varies fastest
+            i = active - 1
+            digits[i] += 1
+            while digits[i] == local_count[i]:
+                digits[i] = 0
+                i -= 1
+                digits[i] += 1
         sticking = 0
         opened = 0
         has_slide = False
+        k = 0
         for i in range(active):
-            for c in range(3):
-                mode[i, c] = local[i, digits[i], c]
-            if mode[i, 2] == 1:
+            m = digits[i]
+            mode[i, 0] = local[i, m, 0]
+            mode[i, 1] = local[i, m, 1]
+            tangential = local[i, m, 2]
+            mode[i, 2] = tangential
+            if tangential == 1:
                 sticking += 1
-            if mode[i, 2] == 2 or mode[i, 2] == 3:
+            elif tangential == 2 or tangential == 3:
                 has_slide = True
             opened += 2 - mode[i, 0] - mode[i, 1]
-        key[combo] = ((active - sticking) * (2 * active + 1) + opened) * total + combo
-        lam = lam_all[combo]
-        a = acc_all[combo]
-        if not solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full, False):
+            for j in range(local_unknowns[i, m]):
+                index[k] = local_index[i, m, j]
+                slip_row[k] = local_slip_row[i, m, j]
+                coeff[k] = local_coeff[i, m, j]
+                k += 1
+        # the mode's equations: solve_mode's system, gathered
+        for r in range(k):
+            row = index[r]
+            rhs[r] = -h[row]
+            for j in range(k):
+                value = w[row, index[j]]
+                if coeff[j] != 0.0:
+                    value += coeff[j] * w[row, slip_row[j]]
+                matrix[r, j] = value
+        if not solve_in_place(matrix, rhs, k):
             singular += 1
             continue
+        # a closed contact's normal force is its own unknown: most modes fail on its
+        # sign, seen before the forces are gathered (forces_admissible repeats it)
+        pulls = False
+        for j in range(k):
+            if (index[j] & 3) < 2 and rhs[j] < -force_tol:
+                pulls = True
+                break
+        if pulls:
+            continue
+        for r in range(size):
+            full[r] = 0.0
+        for j in range(k):
+            full[index[j]] += rhs[j]
+            if coeff[j] != 0.0:
+                full[slip_row[j]] += coeff[j] * rhs[j]
+        for i in range(active):
+            lam[i, 0] = full[4 * i]
+            lam[i, 1] = full[4 * i + 1]
+            lam[i, 2] = full[4 * i + 2] + full[4 * i + 3]
         # the inequalities on the forces first (most modes fail there), then the
         # contact accelerations
         if not forces_admissible(active, mode, sliding, mu_static, lam, force_tol):
@@ -541,7 +642,6 @@ def solve_contact_states(
         contact_accelerations(active, w, h, mode, full, a)
         if not accelerations_admissible(active, mode, contact_active, a, accel_tol):
             continue
-        qdd = qdd_all[combo]
         accelerations(active, inverse_mass, free_acc, jn, jt, mode, lam, qdd)
         ok = True
         for c in range(n):
@@ -549,23 +649,48 @@ def solve_contact_states(
                 ok = False
         if not ok:
             continue
-        candidate[combo] = True
-        if not has_slide:
-            physical[combo] = True
-            continue
-        if solve_mode(
-            active, w, h, mode, mu_break, lam_static, a_static, matrix, rhs, index, coeff, full
-        ):
-            physical[combo] = slides_with_static(active, mode, a_static, accel_tol)
-        if not physical[combo]:
-            kinetic_only += 1
-    order = np.argsort(key)
-    kept = np.empty(total, dtype=np.int64)
+        physical = True
+        if has_slide:
+            physical = False
+            if solve_mode(
+                active, w, h, mode, mu_break, lam_static, a_static, matrix, rhs, index, coeff,
+                full,
+            ):  # fmt: skip
+                physical = slides_with_static(active, mode, a_static, accel_tol)
+            if not physical:
+                kinetic_only += 1
+        if candidates == capacity:
+            capacity *= 2
+            cand_lam = _grown(cand_lam, capacity)
+            cand_acc = _grown(cand_acc, capacity)
+            cand_qdd = _grown(cand_qdd, capacity)
+            cand_key = _grown(cand_key, capacity)
+            cand_combo = _grown(cand_combo, capacity)
+            cand_physical = _grown(cand_physical, capacity)
+        cand_lam[candidates] = lam
+        cand_acc[candidates] = a
+        cand_qdd[candidates] = qdd
+        cand_key[candidates] = ((active - sticking) * (2 * active + 1) + opened) * total + combo
+        cand_combo[candidates] = combo
+        cand_physical[candidates] = physical
+        candidates += 1
+    # the choice rule's order among the candidates (keys: fewest non-sticking
+    # interfaces, then fewest open contacts, then enumeration order)
+    order = np.argsort(cand_key[:candidates])
+    kept = np.empty(candidates, dtype=np.int64)
     distinct, relaxed = choose(
-        order, candidate, physical, lam_all, qdd_all, force_tol, accel_tol, kept
+        order,
+        np.ones(candidates, dtype=np.bool_),
+        cand_physical[:candidates],
+        cand_lam[:candidates],
+        cand_qdd[:candidates],
+        force_tol,
+        accel_tol,
+        kept,
     )
     for position in range(min(distinct, out_modes.shape[0])):
-        combo = kept[position]
+        slot = kept[position]
+        combo = cand_combo[slot]
         out_index[position] = combo
         rest = combo
         for i in range(active - 1, -1, -1):
@@ -574,10 +699,10 @@ def solve_contact_states(
         for i in range(active):
             for c in range(3):
                 out_modes[position, i, c] = local[i, digits[i], c]
-                out_lam[position, i, c] = lam_all[combo, i, c]
-                out_acc[position, i, c] = acc_all[combo, i, c]
+                out_lam[position, i, c] = cand_lam[slot, i, c]
+                out_acc[position, i, c] = cand_acc[slot, i, c]
         for c in range(n):
-            out_qdd[position, c] = qdd_all[combo, c]
+            out_qdd[position, c] = cand_qdd[slot, c]
     info[INFO_MODES] = total
     info[INFO_SINGULAR] = singular
     info[INFO_KINETIC_ONLY] = kinetic_only

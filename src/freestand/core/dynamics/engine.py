@@ -1279,17 +1279,46 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                 ga = g_low
                 gb = g_high
                 last = 0
-                for _ in range(40):
+                # the margins of impacts, slip stops, stop impacts and overturning are
+                # kinematic: the held mode's forces are not needed to evaluate them,
+                # and an impact's gap has its rate at hand (Newton's step)
+                kinematic = found[0] != LIFT_OFF and found[0] != SLIP
+                impact = found[0] == IMPACT
+                newton = math.nan
+                # an open contact that still rises at the step's start comes down within
+                # it: bisection while the left end rises (regula falsi creeps there)
+                rising = impact and work[5][found[1], found[2]] >= 0.0
+                for _ in range(60):
                     if b - a <= 0.1 * time_tol:
                         break
-                    x = a + ga * (b - a) / (ga - gb)
+                    x = newton
+                    if not (x > a and x < b):
+                        if rising:
+                            x = 0.5 * (a + b)
+                        else:
+                            x = a + ga * (b - a) / (ga - gb)
                     x = min(max(x, a + 0.01 * time_tol), b - 0.01 * time_tol)
                     _hermite(active, q, qd, qdd, slide, rates_s, q_end, qd_end, a_end,
                              slide_end, rate_end, h, x / h, qm, qdm, slide_m)  # fmt: skip
-                    _evaluate(model, exc, params, active, t + x, qm, qdm, mode, work, qdd1,
-                              lam1)  # fmt: skip
+                    if kinematic:
+                        _kin(model, active, qm, qdm, work)
+                    else:
+                        _evaluate(model, exc, params, active, t + x, qm, qdm, mode, work,
+                                  qdd1, lam1)  # fmt: skip
                     gx = _margin(model, params, mode, directions, lam1, slide_m, work,
                                  found[0], found[1], found[2])  # fmt: skip
+                    newton = math.nan
+                    if impact:
+                        rate = work[5][found[1], found[2]]
+                        if gx >= 0.0:
+                            rising = rate >= 0.0
+                        if rate < 0.0:
+                            newton = x - gx / rate
+                            if abs(newton - x) <= 0.01 * time_tol:
+                                # converged: the root within a hundredth of the tolerance
+                                a = max(a, newton - 0.05 * time_tol)
+                                b = min(b, newton + 0.05 * time_tol)
+                                break
                     if gx < 0.0:
                         b = x
                         gb = gx

@@ -915,17 +915,27 @@ def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev,
     rotation = rec[5][:rows].copy()
     slides = rec[6][:rows].copy()
     events = []
-    for e in range(int(istate[engine.S_EVENTS])):
-        kind, interface, contact, status, before, after = (int(v) for v in ev[1][e])
+    count_events = int(istate[engine.S_EVENTS])
+    velocity_before = ev[3][:count_events].copy()
+    velocity_after = ev[4][:count_events].copy()
+    for e, (event_time, codes, motions) in enumerate(
+        zip(
+            ev[0][:count_events].tolist(),
+            ev[1][:count_events].tolist(),
+            ev[2][:count_events].tolist(),
+            strict=True,
+        )
+    ):
+        kind, interface, contact, status, before, after = codes
         events.append(
             TimeHistoryEvent(
-                float(ev[0][e]),
+                event_time,
                 engine.EVENT_KINDS[kind],
                 interface,
                 contact,
-                tuple(engine.MOTION_NAMES[int(m)] for m in ev[2][e]),
-                ev[3][e, :before].copy(),
-                ev[4][e, :after].copy(),
+                tuple([engine.MOTION_NAMES[m] for m in motions]),
+                velocity_before[e, :before],
+                velocity_after[e, :after],
                 "ambiguous" if status else "unique",
             )
         )
