@@ -385,7 +385,7 @@ def _engaged(sliding, slide, tolerance):
 def _fired(model, params, active, mode, directions, lam, slide, work, found):
     """The earliest-priority event that fired at a state (kind, interface, contact) or kind -1.
 
-    ``found`` (3,) int receives it. Same conditions as the former Python loop.
+    ``found`` (4,) int receives it, and the number of event conditions that hold.
     """
     mu_s = model[3]
     sliding_codes = model[5]
@@ -398,16 +398,19 @@ def _fired(model, params, active, mode, directions, lam, slide, work, found):
     tol_slide = params[P_TOL_SLIDE]
     tol_vel = params[P_TOL_VEL]
     best = 100
+    fired = 0
     found[0] = -1
     found[1] = -1
     found[2] = -1
     for i in range(active):
         for c in range(2):
             if mode[i, c] == 1 and lam[i, c] < -force_event:
+                fired += 1
                 if _PRIORITY[LIFT_OFF] < best:
                     best = _PRIORITY[LIFT_OFF]
                     found[0], found[1], found[2] = LIFT_OFF, i, c
             if mode[i, c] == 0 and gap[i, c] < -gap_event and gap_velocity[i, c] < 0.0:
+                fired += 1
                 if _PRIORITY[IMPACT] < best:
                     best = _PRIORITY[IMPACT]
                     found[0], found[1], found[2] = IMPACT, i, c
@@ -418,12 +421,14 @@ def _fired(model, params, active, mode, directions, lam, slide, work, found):
             limit = mu_s[i] * (lam[i, 0] + lam[i, 1]) + force_event
             tangential = lam[i, 2]
             if (sliding != 2 and -tangential > limit) or (sliding != 3 and tangential > limit):
+                fired += 1
                 if _PRIORITY[SLIP] < best:
                     best = _PRIORITY[SLIP]
                     found[0], found[1], found[2] = SLIP, i, -1
         reference = _reference(mode, i)
         slip = slip_velocity[i, reference]
         if directions[i] != 0 and directions[i] * slip < -1e-3 * tol_vel:
+            fired += 1
             if _PRIORITY[SLIP_STOP] < best:
                 best = _PRIORITY[SLIP_STOP]
                 found[0], found[1], found[2] = SLIP_STOP, i, -1
@@ -431,13 +436,16 @@ def _fired(model, params, active, mode, directions, lam, slide, work, found):
         if (code == 2 and slide[i] > tol_slide and slip > tol_vel) or (
             code == 3 and slide[i] < -tol_slide and slip < -tol_vel
         ):
+            fired += 1
             if _PRIORITY[STOP_IMPACT] < best:
                 best = _PRIORITY[STOP_IMPACT]
                 found[0], found[1], found[2] = STOP_IMPACT, i, -1
         if abs(rotation[i]) >= 0.5 * math.pi:
+            fired += 1
             if _PRIORITY[OVERTURN] < best:
                 best = _PRIORITY[OVERTURN]
                 found[0], found[1], found[2] = OVERTURN, i, -1
+    found[3] = fired
     return found[0] >= 0
 
 
@@ -1058,8 +1066,8 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
     a_end = np.zeros(n_full)
     slide_end = np.zeros(count)
     rate_end = np.zeros(count)
-    found = np.zeros(3, dtype=np.int64)
-    found_m = np.zeros(3, dtype=np.int64)
+    found = np.zeros(4, dtype=np.int64)
+    found_m = np.zeros(4, dtype=np.int64)
     settle = np.zeros(3, dtype=np.int64)
     velocity_before = np.zeros(n_full)
     uplift = np.zeros(count, dtype=np.bool_)
@@ -1350,10 +1358,20 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                         found[:] = found_m
                         g_high = _margin(model, params, mode, directions, lam1, slide_m, work,
                                          found[0], found[1], found[2])  # fmt: skip
-                        ok = _rk4(model, exc, params, active, t, q, qd, slide, lower, mode,
-                                  qdd, rates_s, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
-                        ok = ok and _evaluate(model, exc, params, active, t + lower, qm, qdm,
-                                              mode, work, qdd1, lam1)  # fmt: skip
+                        rate = work[5][found[1], found[2]] if found[0] == IMPACT else 0.0
+                        if found[3] == 1 and rate < 0.0 and (
+                            upper - g_high / rate >= lower + 0.05 * time_tol
+                        ):
+                            # the impact alone fired, and its gap, closing at this rate, was
+                            # still open at ``lower`` (linear over the tolerance)
+                            low = lower
+                            g_low = g_high - rate * (upper - lower)
+                            ok = False
+                        else:
+                            ok = _rk4(model, exc, params, active, t, q, qd, slide, lower, mode,
+                                      qdd, rates_s, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
+                            ok = ok and _evaluate(model, exc, params, active, t + lower, qm, qdm,
+                                                  mode, work, qdd1, lam1)  # fmt: skip
                         if ok and not _fired(model, params, active, mode, directions, lam1,
                                              slide_m, work, found_m):  # fmt: skip
                             low = lower
