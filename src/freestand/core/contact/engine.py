@@ -166,6 +166,26 @@ def delassus(active, inverse_mass, free_acc, jn, bn, jt, bt, w, h):
             w[s, r] = total
 
 
+@nb.njit(cache=True, inline="always")
+def _slide_coefficient(left, right, tangential, mu):
+    """Reference contact and friction coefficient ``-d mu`` of an interface's local mode.
+
+    The reference contact (0 left, 1 right: right only when the left one is open)
+    carries the tangential row; ``d`` is the sliding direction (+1, -1; for an
+    already sliding interface the sign of its slip velocity ``mu[1]``; 0 when
+    sticking or free) and ``mu[0]`` the coefficient of the sliding interface.
+    """
+    reference = 1 if (right == 1 and left == 0) else 0
+    direction = 0.0
+    if tangential == 2:
+        direction = 1.0
+    elif tangential == 3:
+        direction = -1.0
+    elif tangential == 4:
+        direction = mu[1]  # sign of the slip velocity
+    return reference, -direction * mu[0]
+
+
 @nb.njit(cache=True)
 def solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full,
                with_accelerations=True):  # fmt: skip
@@ -178,21 +198,12 @@ def solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full,
     """
     k = 0
     for i in range(active):
-        left = mode[i, 0]
-        right = mode[i, 1]
         tangential = mode[i, 2]
-        reference = 1 if (right == 1 and left == 0) else 0
-        direction = 0.0
-        if tangential == 2:
-            direction = 1.0
-        elif tangential == 3:
-            direction = -1.0
-        elif tangential == 4:
-            direction = mu[i, 1]  # sign of the slip velocity
+        reference, friction = _slide_coefficient(mode[i, 0], mode[i, 1], tangential, mu[i])
         for side in range(2):
             if mode[i, side] == 1:
                 index[k] = 4 * i + side
-                coeff[k] = -direction * mu[i, 0]
+                coeff[k] = friction
                 k += 1
         if tangential == 1:
             index[k] = 4 * i + 2 + reference
@@ -423,23 +434,16 @@ def _local_unknowns(active, local, local_count, mu, count, index, slip_row, coef
     """
     for i in range(active):
         for m in range(local_count[i]):
-            left = local[i, m, 0]
-            right = local[i, m, 1]
             tangential = local[i, m, 2]
-            reference = 1 if (right == 1 and left == 0) else 0
-            direction = 0.0
-            if tangential == 2:
-                direction = 1.0
-            elif tangential == 3:
-                direction = -1.0
-            elif tangential == 4:
-                direction = mu[i, 1]  # sign of the slip velocity
+            reference, friction = _slide_coefficient(
+                local[i, m, 0], local[i, m, 1], tangential, mu[i]
+            )
             k = 0
             for side in range(2):
                 if local[i, m, side] == 1:
                     index[i, m, k] = 4 * i + side
                     slip_row[i, m, k] = 4 * i + 2 + reference
-                    coeff[i, m, k] = -direction * mu[i, 0]
+                    coeff[i, m, k] = friction
                     k += 1
             if tangential == 1:
                 index[i, m, k] = 4 * i + 2 + reference

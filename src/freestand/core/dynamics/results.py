@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import numba as nb
 import numpy as np
 
 #: Events on forces fire below ``-EVENT_TOLERANCE * force scale`` (larger than
@@ -288,30 +289,51 @@ def _peak_magnitude(time: np.ndarray, value: np.ndarray, rate: np.ndarray) -> fl
     of (value, rate) at the step ends gives the turning point, so the peak is
     found to the integration accuracy rather than to the sampling.
     """
-    finite = np.isfinite(value) & np.isfinite(rate)
-    peak = float(np.max(np.abs(value[finite]), initial=0.0))
-    with np.errstate(invalid="ignore"):
-        turning = finite[:-1] & finite[1:] & (rate[:-1] * rate[1:] < 0.0)
-    k = np.flatnonzero(turning)
-    h = time[k + 1] - time[k]
-    k, h = k[h > 0.0], h[h > 0.0]
-    if k.size == 0:
-        return peak
-    y0, y1, m0, m1 = value[k], value[k + 1], rate[k] * h, rate[k + 1] * h
-    # p(s) = y0 + m0 s + (3 (y1 - y0) - 2 m0 - m1) s^2 + (2 (y0 - y1) + m0 + m1) s^3
-    c2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1
-    c3 = 2.0 * (y0 - y1) + m0 + m1
-    # roots of p'(s) = 3 c3 s^2 + 2 c2 s + m0 in the stable form q = -(b + sgn(b) sqrt(d)) / 2
-    a, b = 3.0 * c3, 2.0 * c2
-    with np.errstate(all="ignore"):
-        root = np.sqrt(b * b - 4.0 * a * m0)
-        q = -0.5 * (b + np.where(b >= 0.0, root, -root))
+    return float(
+        _peak_kernel(
+            np.ascontiguousarray(time, dtype=float),
+            np.ascontiguousarray(value, dtype=float),
+            np.ascontiguousarray(rate, dtype=float),
+        )
+    )
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _peak_kernel(time, value, rate):
+    """:func:`_peak_magnitude` on contiguous float arrays (non-finite samples skipped)."""
+    peak = 0.0
+    count = value.shape[0]
+    for k in range(count):
+        if math.isfinite(value[k]) and math.isfinite(rate[k]):
+            peak = max(peak, abs(value[k]))
+    for k in range(count - 1):
+        y0 = value[k]
+        y1 = value[k + 1]
+        r0 = rate[k]
+        r1 = rate[k + 1]
+        if not (math.isfinite(y0) and math.isfinite(y1) and math.isfinite(r0)
+                and math.isfinite(r1)):  # fmt: skip
+            continue
+        if not r0 * r1 < 0.0:
+            continue
+        h = time[k + 1] - time[k]
+        if not h > 0.0:
+            continue
+        m0 = r0 * h
+        m1 = r1 * h
+        # p(s) = y0 + m0 s + (3 (y1 - y0) - 2 m0 - m1) s^2 + (2 (y0 - y1) + m0 + m1) s^3
+        c2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1
+        c3 = 2.0 * (y0 - y1) + m0 + m1
+        # roots of p'(s) = 3 c3 s^2 + 2 c2 s + m0 in the stable form q = -(b + sgn(b) sqrt(d)) / 2
+        a = 3.0 * c3
+        b = 2.0 * c2
+        discriminant = b * b - 4.0 * a * m0
+        root = math.sqrt(discriminant) if discriminant >= 0.0 else math.nan
+        q = -0.5 * (b + (root if b >= 0.0 else -root))
         for s in (q / a, m0 / q):
-            inside = np.isfinite(s) & (s > 0.0) & (s < 1.0)
-            if inside.any():
-                x = s[inside]
-                candidate = y0[inside] + (m0[inside] + (c2[inside] + c3[inside] * x) * x) * x
-                peak = max(peak, float(np.max(np.abs(candidate))))
+            if math.isfinite(s) and s > 0.0 and s < 1.0:
+                candidate = y0 + (m0 + (c2 + c3 * s) * s) * s
+                peak = max(peak, abs(candidate))
     return peak
 
 

@@ -26,8 +26,9 @@ runs compiled, the whole loop in :mod:`freestand.core.dynamics.engine`:
   phases in which the whole stack rests on the support are not integrated
   (the forces are linear in the support accelerations);
 * events end a step and are located to ``time_tolerance`` (regula falsi,
-  Illinois variant, on the step's Hermite interpolant, then a checked bracket
-  of RK4 states; bisection as fallback): a gap closing (impact), a
+  Illinois variant, on the step's Hermite interpolant, Newton steps for a
+  closing gap, then a checked bracket of RK4 states; bisection as fallback):
+  a gap closing (impact), a
   normal force reaching zero (lift-off), a slip velocity reaching zero
   (possible stick or reversal), a sticking interface's friction reaching the
   static cone (slip), a block sliding back onto its end stop, a block lying on
