@@ -124,7 +124,7 @@ def _support(horizontal, vertical, dt, t):
 # --- kinematics ---------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def kinematics(geometry, active, q, qd, gap, gap_velocity, slip_velocity, rotation, jn, bn, jt, bt,
                slide=None, first=0):  # fmt: skip
     """Gaps, relative velocities, Jacobians and velocity terms of the first ``active`` blocks.
@@ -293,7 +293,7 @@ def _free_acceleration(model, active, a_h, a_v, gravity, out):
         out[3 * i + 2] = 0.0
 
 
-@nb.njit(cache=True, inline="always")
+@nb.njit(cache=True)
 def _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam, first=0):
     """Accelerations and forces of the held mode at a state; kinematics left in ``work``."""
     horizontal, vertical = exc
@@ -1495,7 +1495,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
     return outcome
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, force_g, coeff,
                 matrix, rhs, qdd, lam, first=0):  # fmt: skip
     """Forces and accelerations of a held mode, without the contact accelerations.
