@@ -1359,8 +1359,10 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                         g_high = _margin(model, params, mode, directions, lam1, slide_m, work,
                                          found[0], found[1], found[2])  # fmt: skip
                         rate = work[5][found[1], found[2]] if found[0] == IMPACT else 0.0
-                        if found[3] == 1 and rate < 0.0 and (
-                            upper - g_high / rate >= lower + 0.05 * time_tol
+                        if (
+                            found[3] == 1
+                            and rate < 0.0
+                            and (upper - g_high / rate >= lower + 0.05 * time_tol)
                         ):
                             # the impact alone fired, and its gap, closing at this rate, was
                             # still open at ``lower`` (linear over the tolerance)
@@ -1368,10 +1370,11 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                             g_low = g_high - rate * (upper - lower)
                             ok = False
                         else:
-                            ok = _rk4(model, exc, params, active, t, q, qd, slide, lower, mode,
-                                      qdd, rates_s, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
-                            ok = ok and _evaluate(model, exc, params, active, t + lower, qm, qdm,
-                                                  mode, work, qdd1, lam1)  # fmt: skip
+                            ok = _rk4(model, exc, params, active, t, q, qd, slide, lower,
+                                      mode, qdd, rates_s, work, qm, qdm, slide_m, lam1,
+                                      first)  # fmt: skip
+                            ok = ok and _evaluate(model, exc, params, active, t + lower, qm,
+                                                  qdm, mode, work, qdd1, lam1)  # fmt: skip
                         if ok and not _fired(model, params, active, mode, directions, lam1,
                                              slide_m, work, found_m):  # fmt: skip
                             low = lower
