@@ -77,16 +77,7 @@ CONTACT = 'solref="0.004 1" solimp="0.99 0.999 0.0001"'
 
 def rectangle(name, width, height, mass, level, friction=(0.8, 0.7)) -> Block:
     """A homogeneous rectangle centred on x = 0, standing at ``level`` [m]."""
-    return Block(
-        name,
-        mass,
-        mass * (width**2 + height**2) / 12.0,
-        (0.0, level + 0.5 * height),
-        -0.5 * width,
-        0.5 * width,
-        level,
-        Friction(*friction),
-    )
+    return Block.rectangle(name, width, height, mass, Friction(*friction), level=level)
 
 
 def two_blocks() -> Stack:

@@ -82,20 +82,13 @@ def test_kernel_agrees_with_the_numpy_oracle_at_rest(stack, inertial, vertical):
         assert ours.residual <= 1e-9
 
 
-def _block(name, width, height, mass, level) -> Block:
-    """A homogeneous rectangle centred on x = 0, standing at ``level`` [m]."""
-    inertia = mass * (width**2 + height**2) / 12.0
-    centre = (0.0, level + 0.5 * height)
-    return Block(name, mass, inertia, centre, -0.5 * width, 0.5 * width, level, Friction(0.8, 0.7))
-
-
 def test_kernel_keeps_more_candidates_than_its_first_buffer():
     # in free fall (a_v = g, no horizontal load) every mode of every interface has zero
     # forces and accelerations: all 100 modes of two blocks are admissible (the kernel's
     # candidate buffers, 16 at first, grow) and they are one state, as in the oracle
-    pair = Stack(
-        "pair", (_block("lower", 0.6, 2.0, 1200.0, 0.0), _block("upper", 0.4, 1.2, 400.0, 2.0))
-    )
+    lower = Block.rectangle("lower", 0.6, 2.0, 1200.0, Friction(0.8, 0.7))
+    upper = Block.rectangle("upper", 0.4, 1.2, 400.0, Friction(0.8, 0.7), level=2.0)
+    pair = Stack("pair", (lower, upper))
     problem = contact_problem_at_rest(pair, 0.0, G, G)
     result = engine.solve(problem)
     oracle = solve_contact(problem)

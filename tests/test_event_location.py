@@ -22,23 +22,10 @@ G = 9.81
 TIME_TOLERANCE = 1e-9  # simulate's default [s]
 
 
-def rectangle(name, width, height, mass, level) -> Block:
-    return Block(
-        name,
-        mass,
-        mass * (width**2 + height**2) / 12.0,
-        (0.0, level + 0.5 * height),
-        -0.5 * width,
-        0.5 * width,
-        level,
-        Friction(0.8, 0.7),
-    )
-
-
 def rocking_pair() -> tuple[Stack, SupportMotion]:
     """The two blocks of benchmarks/engine.py (a), 1 Hz half-sine at 1.2 g tan(alpha)."""
-    lower = rectangle("lower", 0.6, 2.0, 1200.0, 0.0)
-    upper = rectangle("upper", 0.4, 1.2, 400.0, 2.0)
+    lower = Block.rectangle("lower", 0.6, 2.0, 1200.0, Friction(0.8, 0.7))
+    upper = Block.rectangle("upper", 0.4, 1.2, 400.0, Friction(0.8, 0.7), level=2.0)
     dt = 0.005
     t = np.arange(int(round(10.0 / dt)) + 1) * dt
     peak = 1.2 * G * 0.3 / 1.0

@@ -112,6 +112,51 @@ class Block:
         dz = self.centre[1] - point[1]
         return self.inertia + self.mass * (dx * dx + dz * dz)
 
+    @classmethod
+    def rectangle(
+        cls,
+        name: str,
+        width: float,
+        height: float,
+        mass: float,
+        friction: Friction,
+        level: float = 0.0,
+        sliding: Sliding = Sliding.FREE,
+    ) -> Block:
+        """A homogeneous rectangular block centred on x = 0, standing at ``level``.
+
+        Parameters
+        ----------
+        name : str
+        width, height : float
+            Base width b and height h [m]; the lower contacts are the base's
+            corners, x = -b/2 and b/2.
+        mass : float
+            m [kg].
+        friction : Friction
+            Friction of the interface below it.
+        level : float, optional
+            z of its base [m] (0: on the support).
+        sliding : Sliding, optional
+
+        Returns
+        -------
+        Block
+            Centre of gravity at (0, level + h/2), ``Theta_S = m (b^2 + h^2) / 12``
+            (a homogeneous rectangle).
+        """
+        return cls(
+            name,
+            mass,
+            mass * (width**2 + height**2) / 12.0,
+            (0.0, level + 0.5 * height),
+            -0.5 * width,
+            0.5 * width,
+            level,
+            friction,
+            sliding,
+        )
+
 
 @dataclass(frozen=True)
 class Stack:
