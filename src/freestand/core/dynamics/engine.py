@@ -1034,6 +1034,52 @@ def _at_rest(active, mode, qd):
 
 
 @nb.njit(cache=True)
+def _rest_prepare(model, active, q, qd, mode, work, rest, qdd):
+    """Forces of the rest mode for unit support loads, for :func:`_rest_forces`.
+
+    At rest nothing moves in the support's frame, so the held mode's forces are
+    affine in the free acceleration ``f = (-a_h, -(g - a_v), 0)`` of every block:
+    ``lam = lam_0 + (-a_h) (lam_x - lam_0) + (-(g - a_v)) (lam_z - lam_0)``, with
+    ``lam_0`` (velocity terms only), ``lam_x``, ``lam_z`` the solutions for
+    ``f = 0``, ``f = (1, 0, 0)`` and ``f = (0, 1, 0)``. ``rest`` (3, B, 3) receives
+    ``lam_0`` and the two differences; the kinematics stay in ``work``. Returns
+    False for a singular mode.
+    """
+    geometry = model[0]
+    kinematics(
+        geometry, active, q, qd, work[4], work[5], work[6], work[7], work[0], work[1], work[2],
+        work[3], None, 0,
+    )  # fmt: skip
+    free = work[15]
+    for load in range(3):
+        for i in range(active):
+            free[3 * i] = 1.0 if load == 1 else 0.0
+            free[3 * i + 1] = 1.0 if load == 2 else 0.0
+            free[3 * i + 2] = 0.0
+        if not _held_solve(
+            active, model[1], free, work[0], work[1], work[2], work[3], mode, work[17],
+            work[21], work[22], work[13], work[10], work[11], qdd, rest[load], 0,
+        ):  # fmt: skip
+            return False
+    for load in (1, 2):
+        for i in range(active):
+            for c in range(3):
+                rest[load, i, c] -= rest[0, i, c]
+    return True
+
+
+@nb.njit(cache=True)
+def _rest_forces(exc, params, active, t, rest, lam):
+    """Forces of the rest mode at ``t`` from :func:`_rest_prepare`'s unit solutions."""
+    a_h, a_v = _support(exc[0], exc[1], params[P_EXC_DT], t)
+    load_x = -a_h
+    load_z = -(params[P_GRAVITY] - a_v)
+    for i in range(active):
+        for c in range(3):
+            lam[i, c] = rest[0, i, c] + load_x * rest[1, i, c] + load_z * rest[2, i, c]
+
+
+@nb.njit(cache=True)
 def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, mode, directions,
         istate, fstate, flags, rec, ev):  # fmt: skip
     """Advance the simulation until the end, a failure, full buffers or ``chunk_end``.
@@ -1066,6 +1112,8 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
     a_end = np.zeros(n_full)
     slide_end = np.zeros(count)
     rate_end = np.zeros(count)
+    rest = np.zeros((3, count, 3))
+    rest_ready = False
     found = np.zeros(4, dtype=np.int64)
     found_m = np.zeros(4, dtype=np.int64)
     settle = np.zeros(3, dtype=np.int64)
@@ -1137,22 +1185,31 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         first = _stuck_below(active, mode, qd)
         if resting:
             # the whole stack moves with the support: nothing moves in its frame and the
-            # forces are linear in the support accelerations, hence in time between two
-            # break points; only the end of the segment is evaluated
+            # forces are affine in the support accelerations (_rest_prepare, once per
+            # rest), hence linear in time between two break points; only the end of
+            # the segment is evaluated
             q1[:n] = q[:n]
             qd1[:n] = qd[:n]
             slide1[:active] = slide[:active]
-        elif not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, qdd, rates_s, work,
-                      q1, qd1, slide1, lam1, first):  # fmt: skip
-            istate[S_FAILURE] = SINGULAR_MODE
-            outcome = FAILED
-            break
-        if not _evaluate(model, exc, params, active, t + h, q1, qd1, mode, work, qdd1, lam1):
-            istate[S_FAILURE] = SINGULAR_MODE
-            outcome = FAILED
-            break
-        if resting:
+            if not rest_ready:
+                if not _rest_prepare(model, active, q, qd, mode, work, rest, qdd1):
+                    istate[S_FAILURE] = SINGULAR_MODE
+                    outcome = FAILED
+                    break
+                rest_ready = True
+            _rest_forces(exc, params, active, t + h, rest, lam1)
             qdd1[:n] = 0.0
+        else:
+            rest_ready = False
+            if not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, qdd, rates_s,
+                        work, q1, qd1, slide1, lam1, first):  # fmt: skip
+                istate[S_FAILURE] = SINGULAR_MODE
+                outcome = FAILED
+                break
+            if not _evaluate(model, exc, params, active, t + h, q1, qd1, mode, work, qdd1, lam1):
+                istate[S_FAILURE] = SINGULAR_MODE
+                outcome = FAILED
+                break
         if not _fired(model, params, active, mode, directions, lam1, slide1, work, found):
             t += h
             qdd[:n] = qdd1[:n]
@@ -1168,6 +1225,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                     if mode[i, c] == 1:
                         drift = max(drift, abs(work[4][i, c]))
             if drift > 1e-3 * params[P_TOL_GAP]:
+                rest_ready = False
                 _project(model, active, q, qd, mode, work, fstate)
                 if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
                     istate[S_FAILURE] = SINGULAR_MODE
@@ -1178,6 +1236,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
             if t >= exc_end:
                 index = _overturned_after(model, params, active, qd, work)
                 if index >= 0:
+                    rest_ready = False
                     velocity_before[:n] = qd[:n]
                     for j in range(index, count):
                         if flags[2, j] < 0.5:
@@ -1219,7 +1278,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
             k_sample = math.floor(t / dt_exc + 1e-9) + 1
             while k_sample * dt_exc < t + h - 1e-6 * time_tol:
                 tm = k_sample * dt_exc - t
-                _evaluate(model, exc, params, active, t + tm, q, qd, mode, work, qdd1, lam2)
+                _rest_forces(exc, params, active, t + tm, rest, lam2)
                 if _fired(model, params, active, mode, directions, lam2, slide, work, found_m):
                     seg_hi = tm
                     lam_hi[:active] = lam2[:active]
@@ -1245,7 +1304,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
             high = min(h, earliest + time_tol)
             located = False
             if low > 0.0:
-                _evaluate(model, exc, params, active, t + low, q, qd, mode, work, qdd1, lam1)
+                _rest_forces(exc, params, active, t + low, rest, lam1)
                 if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
                     # the margins were not linear over the segment: search [0, low]
                     high = low
@@ -1253,7 +1312,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                     found[:] = found_m
                     located = True
             if not located and high < h:
-                _evaluate(model, exc, params, active, t + high, q, qd, mode, work, qdd1, lam1)
+                _rest_forces(exc, params, active, t + high, rest, lam1)
                 if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
                     # located to the tolerance; events crossing within it are taken as
                     # simultaneous (reported by priority, as at a jump of the excitation)
@@ -1391,6 +1450,8 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                         low = upper
                         g_low = _margin(model, params, mode, directions, lam1, slide_m, work,
                                         found[0], found[1], found[2])  # fmt: skip
+        # what follows (RK4 states, the event's settling) leaves other kinematics in work
+        rest_ready = False
         side = 0
         while high - low > time_tol:
             width = high - low

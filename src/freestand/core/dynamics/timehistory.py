@@ -919,22 +919,26 @@ def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev,
     count_events = int(istate[engine.S_EVENTS])
     velocity_before = ev[3][:count_events].copy()
     velocity_after = ev[4][:count_events].copy()
+    motion_names: dict[tuple[int, ...], tuple[str, ...]] = {}
     for e, (event_time, codes, motions) in enumerate(
         zip(
             ev[0][:count_events].tolist(),
             ev[1][:count_events].tolist(),
-            ev[2][:count_events].tolist(),
+            map(tuple, ev[2][:count_events].tolist()),
             strict=True,
         )
     ):
         kind, interface, contact, status, before, after = codes
+        names = motion_names.get(motions)
+        if names is None:
+            names = motion_names[motions] = tuple(engine.MOTION_NAMES[m] for m in motions)
         events.append(
             TimeHistoryEvent(
                 event_time,
                 engine.EVENT_KINDS[kind],
                 interface,
                 contact,
-                tuple([engine.MOTION_NAMES[m] for m in motions]),
+                names,
                 velocity_before[e, :before],
                 velocity_after[e, :after],
                 "ambiguous" if status else "unique",
