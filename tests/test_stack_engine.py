@@ -166,3 +166,30 @@ def test_rest_phases_are_not_integrated_and_keep_the_stack_still():
     a_h = np.array([motion(t)[0] for t in result.time])
     np.testing.assert_allclose(result.tangential_force[:, 0], block.mass * a_h, atol=1e-6)
     assert ContactTolerances().gap > 0.0
+
+
+def test_forces_at_rest_follow_the_support_accelerations_of_every_sample():
+    # two blocks resting throughout under a horizontal and a vertical record: the
+    # forces the time history records (from three unit solutions per rest phase) are
+    # those of the contact problem solved at each recorded instant
+    from freestand.core.contact.engine import solve as solve_kernel
+    from freestand.core.dynamics.timehistory import contact_problem_in_motion
+
+    lower = Block.rectangle("lower", 1.2, 1.0, 800.0, Friction(0.8, 0.7))
+    upper = Block.rectangle("upper", 0.8, 0.6, 200.0, Friction(0.8, 0.7), level=1.0)
+    stack = Stack("pair", (lower, upper))
+    rng = np.random.default_rng(3)
+    horizontal = 0.15 * G * rng.uniform(-1.0, 1.0, 201)
+    vertical = 0.2 * G * rng.uniform(-1.0, 1.0, 201)
+    motion = SupportMotion(0.01, horizontal, vertical)
+    result = simulate(stack, motion, method="general")
+    assert [event.kind for event in result.events] == ["start"]
+    rows = np.linspace(0, len(result.time) - 1, 25).astype(int)
+    for row in rows:
+        a_h, a_v = motion(result.time[row])
+        problem = contact_problem_in_motion(stack, np.zeros(6), np.zeros(6), -a_h, a_v, G)
+        chosen = solve_kernel(problem).chosen
+        # tolerance: round-off of the superposed unit solutions against a direct solve
+        # (forces of about 1e4 N)
+        np.testing.assert_allclose(result.normal_force[row], chosen.normal_force, atol=1e-7)
+        np.testing.assert_allclose(result.tangential_force[row], chosen.tangential_force, atol=1e-7)
