@@ -193,3 +193,26 @@ def test_forces_at_rest_follow_the_support_accelerations_of_every_sample():
         # (forces of about 1e4 N)
         np.testing.assert_allclose(result.normal_force[row], chosen.normal_force, atol=1e-7)
         np.testing.assert_allclose(result.tangential_force[row], chosen.tangential_force, atol=1e-7)
+
+
+@pytest.mark.parametrize(
+    ("width", "height", "mass", "level", "field"),
+    [
+        (0.0, 1.0, 10.0, 0.0, "width"),
+        (0.5, -1.0, 10.0, 0.0, "height"),
+        (0.5, 1.0, float("nan"), 0.0, "mass"),
+        (0.5, 1.0, 10.0, float("inf"), "level"),
+    ],
+)
+def test_rectangle_refuses_impossible_dimensions(width, height, mass, level, field):
+    from freestand.errors import FreestandError
+
+    with pytest.raises(FreestandError, match=field):
+        Block.rectangle("box", width, height, mass, Friction(0.5, 0.4), level=level)
+
+
+def test_rectangle_is_a_homogeneous_block():
+    box = Block.rectangle("box", 0.6, 2.0, 1200.0, Friction(0.8, 0.7), level=0.5)
+    assert box.inertia == 1200.0 * (0.6**2 + 2.0**2) / 12.0
+    assert box.centre == (0.0, 1.5)
+    assert (box.base_left, box.base_right, box.base_level) == (-0.3, 0.3, 0.5)

@@ -12,11 +12,23 @@ friction and its sliding restriction are given with the block.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from enum import StrEnum
 
+from freestand.errors import FreestandError
+
 #: Choices of :attr:`Excitation.vertical_senses`.
 VERTICAL_SENSES = ("given", "both")
+
+
+def _number(value) -> float:
+    """``value`` as a finite float, NaN when it is not one."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return math.nan
+    return number if math.isfinite(number) else math.nan
 
 
 class Sliding(StrEnum):
@@ -144,7 +156,28 @@ class Block:
         Block
             Centre of gravity at (0, level + h/2), ``Theta_S = m (b^2 + h^2) / 12``
             (a homogeneous rectangle).
+
+        Raises
+        ------
+        FreestandError
+            A width, height or mass that is not a positive finite number, or a
+            level that is not finite.
         """
+        checks = (("width", width, "m"), ("height", height, "m"), ("mass", mass, "kg"))
+        for field, value, unit in checks:
+            if not _number(value) > 0.0:
+                raise FreestandError(
+                    f"{value!r} is not a positive finite number; give the {field} in {unit}",
+                    source=f"Block.rectangle({name!r})",
+                    field=field,
+                )
+        if math.isnan(_number(level)):
+            raise FreestandError(
+                f"{level!r} is not a finite number; give the base level in m",
+                source=f"Block.rectangle({name!r})",
+                field="level",
+            )
+        width, height, mass, level = (float(value) for value in (width, height, mass, level))
         return cls(
             name,
             mass,
