@@ -515,19 +515,6 @@ class ModeTable:
             has_slide=np.any(modes[:, :, 2] >= 2, axis=1),
         )
 
-    @property
-    def kernel_arrays(self) -> tuple[np.ndarray, ...]:
-        """The arrays the compiled kernels take, in their order."""
-        return (
-            self.modes,
-            self.priority,
-            self.sliding,
-            self.unknown_count,
-            self.unknown_index,
-            self.unknown_direction,
-            self.has_slide,
-        )
-
     def block_states(self, mode: int) -> tuple[tuple[Motion, str | None, int], ...]:
         """(motion, pivot, slide direction) of each block in mode ``mode``."""
         states = []
@@ -616,13 +603,7 @@ def _write_free_flight(case, blocks, inertial, vertical, gravity, status, accele
 def _solve_range(
     start,
     stop,
-    modes,
-    priority,
     sliding,
-    unknown_count,
-    unknown_index,
-    unknown_direction,
-    has_slide,
     mass,
     inertia,
     cx,
@@ -743,13 +724,7 @@ def _write_case(
 @njit(cache=True, parallel=True)
 def _solve_parallel(
     chunks,
-    modes,
-    priority,
     sliding,
-    unknown_count,
-    unknown_index,
-    unknown_direction,
-    has_slide,
     mass,
     inertia,
     cx,
@@ -774,13 +749,7 @@ def _solve_parallel(
         _solve_range(
             chunks[c],
             chunks[c + 1],
-            modes,
-            priority,
             sliding,
-            unknown_count,
-            unknown_index,
-            unknown_direction,
-            has_slide,
             mass,
             inertia,
             cx,
@@ -1273,7 +1242,7 @@ def solve_batch(
         sub = _empty_outputs(len(part), len(stack.names))
         _solve_parallel(
             _chunks(len(part), 4 * _threads()),
-            *table.kernel_arrays,
+            table.sliding,
             *[np.ascontiguousarray(a[part]) for a in arrays],
             inertial[part],
             vertical[part],
