@@ -1,8 +1,4 @@
-"""The stable public entry points of freestand, for scripts and notebooks.
-
-``import freestand as fs`` gives these names (see the README, "Python API").
-They are thin: each calls the one implementation in :mod:`freestand.core` or
-:mod:`freestand.io`; whatever moves inside the package, these names stay.
+"""Public time history: :func:`simulate` and :func:`support_motion`.
 
 Example
 -------
@@ -19,11 +15,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from freestand.core.contact.screening import GRAVITY, InitialMotion
-from freestand.core.contact.screening import screen as _screen_stack
 from freestand.core.dynamics.timehistory import SupportMotion, TimeHistoryResult
 from freestand.core.dynamics.timehistory import simulate as _simulate_stack
-from freestand.core.model import Excitation, Stack
+from freestand.core.model import Stack
 from freestand.core.motion.ground_motion import GroundMotion
 
 
@@ -52,34 +46,6 @@ def support_motion(motion: GroundMotion | SupportMotion) -> SupportMotion:
     raise TypeError(
         f"expected a GroundMotion (fs.load_record) or a SupportMotion, not {type(motion).__name__}"
     )
-
-
-def screen(
-    stack: Stack,
-    excitations: Excitation | list[Excitation] | tuple[Excitation, ...],
-    gravity: float = GRAVITY,
-) -> list[InitialMotion]:
-    """Initial motion and contact forces of a stack from rest (paper Tables 2-5).
-
-    Parameters
-    ----------
-    stack : Stack
-        The blocks, bottom first (``model.configuration(name)``).
-    excitations : Excitation or sequence of Excitation
-        Support acceleration levels: horizontal magnitude a_h [m/s^2] (both
-        senses analysed) and downward vertical a_v [m/s^2] (weight m (g - a_v)).
-    gravity : float, optional
-        g [m/s^2] (9.81; use ``model.gravity`` for a model file's value).
-
-    Returns
-    -------
-    list of InitialMotion
-        For each excitation, sense ``+`` then ``-``: every block's motion,
-        accelerations and contact forces, with the ambiguity report.
-    """
-    if isinstance(excitations, Excitation):
-        excitations = (excitations,)
-    return _screen_stack(stack, tuple(excitations), gravity)
 
 
 def simulate(
