@@ -32,7 +32,6 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-
 #: Component names of a record, in the order x, y, vertical (the attribute names).
 COMPONENTS = ("horizontal", "horizontal_y", "vertical")
 
