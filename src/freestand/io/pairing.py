@@ -157,12 +157,15 @@ class StationPairing:
         the components found.
     note : str
         One sentence saying which files were paired and how (or why not).
+    reason : str
+        Why a file a station claimed was read on its own ("" otherwise).
     """
 
     station: str
     method: str
     components: dict
     note: str
+    reason: str = ""
 
     @property
     def paired(self) -> bool:
@@ -179,6 +182,7 @@ class StationPairing:
                 for role, c in self.components.items()
             },
             "note": self.note,
+            "reason": self.reason or None,
         }
 
 
@@ -299,7 +303,7 @@ def pair_components(paths, *, gravity: float = 9.81) -> list[StationPairing]:
         One per record, in the order of the first file of each: a paired
         station (``method`` says how, ``note`` which files are x, y and
         vertical and why) or a file on its own (``method`` ``"none"``; its
-        ``note`` says ``not paired (...)`` and why when a station claimed it).
+        ``reason`` says why when a station claimed it).
         ``.V2`` files are paired by their channel headers; other files by
         their names, else by their ``.AT2`` headers.
     """
@@ -343,7 +347,7 @@ def pair_components(paths, *, gravity: float = 9.81) -> list[StationPairing]:
             continue
         assigned = _assign(components)
         if isinstance(assigned, str):
-            reason = f"not paired ({station}: {assigned})"
+            reason = f"{station}: {assigned}"
             pairings.extend(_alone(Path(c.path), c.channel, reason) for c in components)
             continue
         roles, orientation_note = assigned
@@ -361,8 +365,8 @@ _ROLE_WORDS = {"horizontal": "x", "horizontal_y": "y", "vertical": "vertical"}
 
 def _alone(path: Path, channel: int | None, reason: str) -> StationPairing:
     component = ComponentFile(str(path), channel, Orientation(""))
-    note = f"{component.label}: read on its own" + (f", {reason}" if reason else "")
-    return StationPairing(component.label, "none", {"horizontal": component}, note)
+    note = f"{component.label}: read on its own" + (f", not paired ({reason})" if reason else "")
+    return StationPairing(component.label, "none", {"horizontal": component}, note, reason)
 
 
 def load_pairing(
