@@ -153,7 +153,7 @@ def test_suite_keys_horizontal_x_and_files(tmp_path):
     assert horizontal_y.horizontal_y is not None and with_vertical.horizontal_y is None
     np.testing.assert_allclose(paired.horizontal, 2.0 * horizontal_y.horizontal)
     np.testing.assert_allclose(paired.horizontal_y, 2.0 * horizontal_y.horizontal_y)
-    assert suite.pairings[:2] == (None, None) and "paired by file names" in suite.pairings[2]
+    assert suite.pairings[:2] == (None, None) and "paired by file names" in suite.pairings[2].note
     reference = load_record(tmp_path / "S_090.AT2", horizontal_y=tmp_path / "S_000.AT2")
     np.testing.assert_array_equal(reference.horizontal_y, horizontal_y.horizontal_y)
 

@@ -316,7 +316,9 @@ def _load_records(records, *, dt, unit, gravity, pair):
             motions.append(GroundMotion(dt, item))
         elif Path(item).suffix.lower() == ".toml":
             flush()
-            motions.extend(load_suite(item, gravity=gravity).motions)
+            suite = load_suite(item, gravity=gravity)
+            motions.extend(suite.motions)
+            pairings.extend(pairing for pairing in suite.pairings if pairing is not None)
         else:
             if not Path(item).is_file():
                 load_record(item, dt=dt, unit=unit, gravity=gravity)  # says what is wrong
@@ -356,7 +358,9 @@ def response_spectrum(
         (``"rg1.60:pga=0.3g,damping=5%"``, ``"en1998:ag=2.5,ground=B"``, a
         CSV file, ``"record:FILE"``).
     frequencies : array_like, optional
-        Oscillator frequencies [Hz] (default 0.1 to 100 Hz, 100 per decade).
+        Oscillator frequencies [Hz], increasing (default 0.1 to 100 Hz, 100
+        per decade). The ratios to a target are taken over those between
+        0.2 and 50 Hz (the acceptance band), or over all when none is.
     dt, unit : optional
         Time step [s] and acceleration unit of single-column files.
     gravity : float, optional
@@ -406,14 +410,21 @@ def response_spectrum(
         zeta = _fraction(damping, "damping")
     else:
         zeta = target_spectrum.damping if target_spectrum is not None else 0.05
-    frequency = (
-        SPECTRUM_FREQUENCIES.copy() if frequencies is None else np.asarray(frequencies, dtype=float)
-    )
+    frequency = SPECTRUM_FREQUENCIES.copy() if frequencies is None else np.asarray(frequencies)
+    if frequency.ndim != 1 or frequency.size < 2 or not np.all(np.isfinite(frequency) & (
+            frequency > 0)) or np.any(np.diff(frequency) <= 0):  # fmt: skip
+        raise FreestandError(
+            "give at least two positive, increasing frequencies [Hz], e.g. "
+            "numpy.geomspace(0.1, 100, 301)",
+            source="frequencies",
+        )
     motions, pairings = _load_records(records, dt=dt, unit=unit, gravity=gravity, pair=pair)
     check_band = AcceptanceCriteria()
     in_band = (frequency >= check_band.lowest_frequency * (1 - 1e-9)) & (
         frequency <= check_band.highest_frequency * (1 + 1e-9)
     )
+    if not in_band.any():  # ratios over the frequencies given when none is in 0.2-50 Hz
+        in_band[:] = True
     plans: dict[float, SpectrumPlan] = {}
     rows = []
     for motion in motions:

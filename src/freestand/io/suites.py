@@ -63,9 +63,9 @@ class RecordSuite:
     files : tuple of dict
         The files of each record, as resolved: ``{"horizontal": ...,
         "horizontal_y": ..., "vertical": ...}`` (the components it has).
-    pairings : tuple of str or None
-        For a record given by ``files``, how they were paired
-        (:func:`freestand.io.pairing.pair_components`); None otherwise.
+    pairings : tuple of StationPairing or None
+        For a record given by ``files``, how they were paired (its ``note``;
+        :func:`freestand.io.pairing.pair_components`); None otherwise.
     """
 
     name: str
@@ -73,7 +73,7 @@ class RecordSuite:
     source: str
     scales: tuple[float, ...]
     files: tuple[dict, ...]
-    pairings: tuple[str | None, ...] = ()
+    pairings: tuple = ()
 
     def __len__(self) -> int:
         return len(self.motions)
@@ -275,7 +275,7 @@ def _paired_record(entry, folder, dt, unit, gravity, source, field):
         role: c.path if c.channel is None else f"{c.path} (channel {c.channel})"
         for role, c in pairing.components.items()
     }
-    return motion, files, pairing.note
+    return motion, files, pairing
 
 
 def _toml_string(text: str) -> str:

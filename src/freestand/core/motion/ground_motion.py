@@ -220,10 +220,7 @@ class GroundMotion:
         Zero without a y component, before t = 0 and (after a one-step ramp)
         after the record.
         """
-        if self.horizontal_y is None:
-            t_arr = np.zeros_like(np.asarray(t, dtype=float))
-            return float(t_arr) if np.ndim(t) == 0 else t_arr
-        return self._at(self.horizontal_y, t)
+        return self._at_or_zero(self.horizontal_y, t)
 
     def vertical_at(self, t) -> np.ndarray | float:
         """Downward acceleration [m/s^2] at times ``t`` [s] (linear interpolation).
@@ -231,10 +228,13 @@ class GroundMotion:
         Zero without a vertical component, before t = 0 and (after a one-step
         ramp) after the record.
         """
-        if self.vertical is None:
+        return self._at_or_zero(self.vertical, t)
+
+    def _at_or_zero(self, values: np.ndarray | None, t) -> np.ndarray | float:
+        if values is None:
             t_arr = np.zeros_like(np.asarray(t, dtype=float))
             return float(t_arr) if np.ndim(t) == 0 else t_arr
-        return self._at(self.vertical, t)
+        return self._at(values, t)
 
     # ------------------------------------------------------------ new records
     def _replace(self, **changes) -> GroundMotion:
