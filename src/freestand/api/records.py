@@ -775,9 +775,7 @@ def _check_suite_folder(output: Path) -> None:
     if not parent.is_dir():
         raise FreestandError(f"folder {str(parent)!r} does not exist; create it first",
                              source="output")  # fmt: skip
-    if not os.access(parent, os.W_OK):
-        raise FreestandError(f"folder {str(parent)!r} cannot be written; give another folder",
-                             source="output")  # fmt: skip
+    _check_writable_parent(output, "output")
 
 
 def _check_generation(count, duration, dt, seed) -> None:
@@ -1145,9 +1143,16 @@ def _check_writable_parent(path: Path, name: str) -> None:
             "under it; choose another path",
             source=name,
         )
-    if not os.access(existing, os.W_OK):
-        raise FreestandError(f"folder {str(existing)!r} cannot be written; choose another path",
-                             source=name)  # fmt: skip
+    try:  # a scratch file: the only sure test of writing
+        handle, scratch = tempfile.mkstemp(prefix=".freestand-check-", dir=existing)
+    except OSError as error:
+        raise FreestandError(
+            f"cannot write into the folder {str(existing)!r} for {str(path)!r} "
+            f"({error.strerror}); choose a folder you can write to",
+            source=name,
+        ) from None
+    os.close(handle)
+    os.unlink(scratch)
 
 
 def floor_motion(
