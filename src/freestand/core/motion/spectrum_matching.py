@@ -561,7 +561,9 @@ class SuiteResult:
     @property
     def components(self) -> tuple[SuiteComponent, ...]:
         """The suite's components in the order x, y, vertical (those it has)."""
-        return tuple(c for c in (self.horizontal, self.horizontal_y, self.vertical) if c)
+        return tuple(
+            c for c in (self.horizontal, self.horizontal_y, self.vertical) if c is not None
+        )
 
     def component_correlations(self) -> list[dict]:
         """Independence of each record's components (US NRC SRP 3.7.1).
