@@ -4,11 +4,12 @@
 API"); they are loaded on first use, so the command line starts fast:
 
 - models and records: :func:`load_model`, :func:`load_record`,
-  :func:`load_suite`, :class:`GroundMotion`, :class:`SupportMotion`,
+  :func:`load_suite`, :func:`load_station`, :class:`GroundMotion`, :class:`SupportMotion`,
   :class:`Block`, :class:`Stack`, :class:`Friction`, :class:`Sliding`,
   :class:`Excitation`;
 - analyses: :func:`screen` (paper Tables 2-5), :func:`simulate` (time
-  history), :func:`response_spectrum`, :class:`RockingBlock` and
+  history), :func:`response_spectrum`, :func:`generate_suite`,
+  :func:`floor_motion`, :class:`RockingBlock` and
   :func:`overturning_limits` (paper Figs. 6-8);
 - :class:`FreestandError`, the one error class.
 
@@ -47,7 +48,10 @@ _PUBLIC = {
     "screen": "freestand.api",
     "simulate": "freestand.api",
     "support_motion": "freestand.api",
-    "response_spectrum": "freestand.core.motion.response_spectrum",
+    "response_spectrum": "freestand.api",
+    "generate_suite": "freestand.api",
+    "floor_motion": "freestand.api",
+    "load_station": "freestand.io.pairing",
     "RockingBlock": "freestand.core.rocking.properties",
     "overturning_limits": "freestand.core.rocking.overturning",
 }

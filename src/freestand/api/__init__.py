@@ -9,7 +9,15 @@ them.
 
 from __future__ import annotations
 
+from freestand.api.records import floor_motion, generate_suite, response_spectrum
 from freestand.api.screening import screen
 from freestand.api.simulation import simulate, support_motion
 
-__all__ = ["screen", "simulate", "support_motion"]
+__all__ = [
+    "floor_motion",
+    "generate_suite",
+    "response_spectrum",
+    "screen",
+    "simulate",
+    "support_motion",
+]
