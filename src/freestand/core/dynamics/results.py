@@ -181,6 +181,18 @@ class TimeHistoryDiagnostics:
     fallback : str
         Why the single-block path was not used (its failed assumption), if
         it was tried; empty otherwise.
+    stepped_time : float
+        Time [s] integrated by velocity-impulse time stepping, the remedy
+        where no event-driven contact mode is consistent (Painleve) or events
+        accumulate (Zeno); see :mod:`freestand.core.dynamics.time_stepping`.
+    stretches : tuple of (str, int)
+        The stretches of time stepping begun, counted per cause (the
+        situation each replaced: ``"contact problem inconsistent"``,
+        ``"events repeat without progress"``, ...).
+    energy_ratio : float
+        Largest ratio of kinetic energies after and before the contact
+        impulses of a time step, ``T(v+) / T(v_f)`` [-]: at most 1 (the
+        impulses never create energy); 0 when no step was taken.
     """
 
     time_step: float
@@ -193,6 +205,9 @@ class TimeHistoryDiagnostics:
     method: str = "general"
     checks: tuple[str, ...] = ()
     fallback: str = ""
+    stepped_time: float = 0.0
+    stretches: tuple[tuple[str, int], ...] = ()
+    energy_ratio: float = 0.0
 
 
 @dataclass(frozen=True)
