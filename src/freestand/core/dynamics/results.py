@@ -121,7 +121,11 @@ class TimeHistoryEvent:
         may stick resolves it, Painleve's paradox), ``"lift-off"`` (a normal
         force reached zero), ``"slip"`` (static friction could no longer
         hold), ``"slip-stop"`` (a slip velocity reached zero), ``"stop-impact"``
-        (a block slid back onto its end stop), ``"overturn"``.
+        (a block slid back onto its end stop), ``"overturn"``,
+        ``"time-stepping"`` (no consistent event-driven mode, or events
+        accumulating: a stretch of velocity-impulse time stepping begins,
+        see :mod:`freestand.core.dynamics.time_stepping`) and ``"resume"``
+        (events take over again).
     interface : int
         Interface (= upper block index) concerned, -1 for none.
     contact : int
