@@ -42,7 +42,11 @@ from freestand.core.contact.engine import (  # noqa: F401  (re-exported for the 
     solve_contact_problem,
     solve_in_place,
 )
-from freestand.core.dynamics.time_stepping import UNBOUNDED_FRICTION, impulse_step
+from freestand.core.dynamics.time_stepping import (
+    UNBOUNDED_FRICTION,
+    impulse_step,
+    kinetic_energy,
+)
 
 #: Event kinds, indexed by the kernel's event codes.
 EVENT_KINDS = (
@@ -105,8 +109,10 @@ S_AMBIGUOUS, S_ROWS, S_EVENTS, S_STALLED, S_BREAK, S_STARTED = range(6, 12)
 S_AT_REST = 12
 #: 1 while a stretch of time stepping runs; its steps; stretches and their steps in all
 S_STEPPING, S_STRETCH_STEPS, S_STRETCHES, S_STEPPED = range(13, 17)
+#: Impacts whose enumerated state raised the kinetic energy, solved again dissipatively
+S_DISSIPATIVE_IMPACTS = 17
 #: Stretches begun per cause (indexed by the failure code it replaced: FAILURES)
-S_REMEDY = 17
+S_REMEDY = 18
 S_SIZE = S_REMEDY + 7
 
 # --- float state vector layout -----------------------------------------------------------------
@@ -119,6 +125,8 @@ F_SIZE = 5
 STEPPING_STEP = 1e-4
 #: Steps of a stretch before events are tried again.
 STRETCH_STEPS = 20
+#: Relative rise of the kinetic energy [-] an impact's state may show (round-off).
+ENERGY_SLACK = 1e-9
 
 
 # --- excitation ---------------------------------------------------------------------------------
@@ -721,6 +729,26 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
             break
     for c in range(n):
         out_qd[c] = qd[c] + jumps[chosen, c]
+    inverse_mass = model[1]
+    if kinetic_energy(inverse_mass, out_qd, n) > (1.0 + ENERGY_SLACK) * kinetic_energy(
+        inverse_mass, qd, n
+    ):
+        # the enumerated state's kinetic friction (against the slip before the impact)
+        # did positive work: the velocity-level problem by the dissipative solver of the
+        # time stepping instead (Coulomb at velocity level, T(v+) <= T(v-))
+        _kin(model, active, q, qd, work)
+        low = np.empty(active)
+        high = np.empty(active)
+        _friction_bounds(model, params, active, slide, work, low, high)
+        normal = np.empty((active, 2))
+        tangential = np.empty((active, 2))
+        out_qd[:n] = qd[:n]
+        impulse_step(active, inverse_mass, jn, jt, contact_active, low, high, out_qd, normal,
+                     tangential)  # fmt: skip
+        istate[S_DISSIPATIVE_IMPACTS] += 1
+        for i in range(active):
+            impulses[chosen, i, 0] = normal[i, 0]
+            impulses[chosen, i, 1] = normal[i, 1]
     for i in range(active):
         factor = restitution[i]
         if factor == 1.0:

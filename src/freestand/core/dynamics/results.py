@@ -197,6 +197,11 @@ class TimeHistoryDiagnostics:
         Largest ratio of kinetic energies after and before the contact
         impulses of a time step, ``T(v+) / T(v_f)`` [-]: at most 1 (the
         impulses never create energy); 0 when no step was taken.
+    dissipative_impacts : int
+        Impacts whose enumerated velocity-level state would have raised the
+        kinetic energy (kinetic friction acting against the slip before the
+        impact, which the impact reversed), solved again by the dissipative
+        velocity-level solver of the time stepping.
     """
 
     time_step: float
@@ -212,6 +217,7 @@ class TimeHistoryDiagnostics:
     stepped_time: float = 0.0
     stretches: tuple[tuple[str, int], ...] = ()
     energy_ratio: float = 0.0
+    dissipative_impacts: int = 0
 
 
 @dataclass(frozen=True)

@@ -1027,6 +1027,7 @@ def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev,
             stepped_time=stepped_time,
             stretches=stretches,
             energy_ratio=float(fstate[engine.F_ENERGY_RATIO]),
+            dissipative_impacts=int(istate[engine.S_DISSIPATIVE_IMPACTS]),
         ),
         max_lift=max_lift,
     )
