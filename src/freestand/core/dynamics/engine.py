@@ -42,6 +42,11 @@ from freestand.core.contact.engine import (  # noqa: F401  (re-exported for the 
     solve_contact_problem,
     solve_in_place,
 )
+from freestand.core.dynamics.time_stepping import (
+    UNBOUNDED_FRICTION,
+    impulse_step,
+    kinetic_energy,
+)
 
 #: Event kinds, indexed by the kernel's event codes.
 EVENT_KINDS = (
@@ -53,11 +58,16 @@ EVENT_KINDS = (
     "slip-stop",
     "stop-impact",
     "overturn",
+    "time-stepping",
+    "resume",
 )
 START, IMPACT, TANGENTIAL_IMPACT, LIFT_OFF, SLIP, SLIP_STOP, STOP_IMPACT, OVERTURN = range(8)
+#: A stretch of velocity-impulse time stepping begins (no consistent event-driven
+#: mode: :mod:`freestand.core.dynamics.time_stepping`); events resume.
+TIME_STEPPING, RESUME = 8, 9
 #: Priority of simultaneous events (lower first): overturn, impact, stop-impact,
 #: lift-off, slip, slip-stop.
-_PRIORITY = np.array([9, 1, 9, 3, 4, 5, 2, 0], dtype=np.int64)
+_PRIORITY = np.array([9, 1, 9, 3, 4, 5, 2, 0, 9, 9], dtype=np.int64)
 
 #: Motions of a block relative to the body below, indexed by the kernel's codes.
 MOTION_NAMES = ("rest", "slide", "rock", "slide-rock", "free-flight", "overturned")
@@ -97,11 +107,26 @@ S_ACTIVE, S_STATUS, S_FAILURE, S_STEPS, S_CONTACT_SOLVES, S_IMPACT_SOLVES = rang
 S_AMBIGUOUS, S_ROWS, S_EVENTS, S_STALLED, S_BREAK, S_STARTED = range(6, 12)
 #: 1 when the run stopped because the stack was at rest after the excitation (P_UNTIL_REST)
 S_AT_REST = 12
-S_SIZE = 13
+#: 1 while a stretch of time stepping runs; its steps; stretches and their steps in all
+S_STEPPING, S_STRETCH_STEPS, S_STRETCHES, S_STEPPED = range(13, 17)
+#: Impacts whose enumerated state raised the kinetic energy, solved again dissipatively
+S_DISSIPATIVE_IMPACTS = 17
+#: Stretches begun per cause (indexed by the failure code it replaced: FAILURES)
+S_REMEDY = 18
+S_SIZE = S_REMEDY + 7
 
 # --- float state vector layout -----------------------------------------------------------------
 F_TIME, F_MAX_PENETRATION, F_MAX_PROJECTION = range(3)
-F_SIZE = 3
+#: Time spent time stepping [s]; the largest ratio T(v+)/T(v_f) of a step's impulses
+F_STEPPED_TIME, F_ENERGY_RATIO = 3, 4
+F_SIZE = 5
+
+#: Step of the time stepping remedy [s] (at most the engine's step cap).
+STEPPING_STEP = 1e-4
+#: Steps of a stretch before events are tried again.
+STRETCH_STEPS = 20
+#: Relative rise of the kinetic energy [-] an impact's state may show (round-off).
+ENERGY_SLACK = 1e-9
 
 
 # --- excitation ---------------------------------------------------------------------------------
@@ -704,6 +729,26 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
             break
     for c in range(n):
         out_qd[c] = qd[c] + jumps[chosen, c]
+    inverse_mass = model[1]
+    if kinetic_energy(inverse_mass, out_qd, n) > (1.0 + ENERGY_SLACK) * kinetic_energy(
+        inverse_mass, qd, n
+    ):
+        # the enumerated state's kinetic friction (against the slip before the impact)
+        # did positive work: the velocity-level problem by the dissipative solver of the
+        # time stepping instead (Coulomb at velocity level, T(v+) <= T(v-))
+        _kin(model, active, q, qd, work)
+        low = np.empty(active)
+        high = np.empty(active)
+        _friction_bounds(model, params, active, slide, work, low, high)
+        normal = np.empty((active, 2))
+        tangential = np.empty((active, 2))
+        out_qd[:n] = qd[:n]
+        impulse_step(active, inverse_mass, jn, jt, contact_active, low, high, out_qd, normal,
+                     tangential)  # fmt: skip
+        istate[S_DISSIPATIVE_IMPACTS] += 1
+        for i in range(active):
+            impulses[chosen, i, 0] = normal[i, 0]
+            impulses[chosen, i, 1] = normal[i, 1]
     for i in range(active):
         factor = restitution[i]
         if factor == 1.0:
@@ -1079,6 +1124,148 @@ def _rest_forces(exc, params, active, t, rest, lam):
             lam[i, c] = rest[0, i, c] + load_x * rest[1, i, c] + load_z * rest[2, i, c]
 
 
+# --- the remedy: a stretch of velocity-impulse time stepping ----------------------------------
+
+
+@nb.njit(cache=True)
+def _friction_bounds(model, params, active, slide, work, low, high):
+    """Bounds of each interface's tangential impulse over its normal one, for a step.
+
+    Static friction while the interface does not slip (kinematics in work),
+    kinetic while it does; unbounded for ``sliding = "none"`` and, one way,
+    at an engaged end stop (see :func:`time_stepping.impulse_step`).
+    """
+    mu_s = model[3]
+    mu_k = model[4]
+    codes = model[5]
+    for i in range(active):
+        slip = work[6][i, _lower_contact(work[4], i)]
+        mu = mu_s[i] if abs(slip) <= params[P_TOL_VEL] else mu_k[i]
+        low[i] = mu
+        high[i] = mu
+        code = codes[i]
+        if code == 1:
+            low[i] = UNBOUNDED_FRICTION
+            high[i] = UNBOUNDED_FRICTION
+        elif code == 2 and _engaged(code, slide[i], params[P_TOL_SLIDE]):
+            low[i] = UNBOUNDED_FRICTION  # the stop pushes back (-x) without bound
+        elif code == 3 and _engaged(code, slide[i], params[P_TOL_SLIDE]):
+            high[i] = UNBOUNDED_FRICTION
+
+
+@nb.njit(cache=True)
+def _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, directions, lam,
+               fstate):  # fmt: skip
+    """One Moreau-Jean step of ``h`` [s] (:mod:`freestand.core.dynamics.time_stepping`).
+
+    Advances ``q``, ``qd`` and ``slide`` in place; ``lam`` receives the mean
+    contact forces over the step (impulses / h) [N], ``mode`` and
+    ``directions`` the contacts that carried an impulse and how each
+    interface moves. Kinematics at the step's end are left in ``work``.
+    """
+    n = 3 * active
+    inverse_mass = model[1]
+    midpoint = np.empty(n)
+    for k in range(n):
+        midpoint[k] = q[k] + 0.5 * h * qd[k]
+    _kin(model, active, midpoint, qd, work)
+    low = np.empty(active)
+    high = np.empty(active)
+    _friction_bounds(model, params, active, slide, work, low, high)
+    a_h, a_v = _support(exc[0], exc[1], params[P_EXC_DT], t + 0.5 * h)
+    velocity = np.empty(n)
+    for i in range(active):
+        velocity[3 * i] = qd[3 * i] - h * a_h
+        velocity[3 * i + 1] = qd[3 * i + 1] - h * (params[P_GRAVITY] - a_v)
+        velocity[3 * i + 2] = qd[3 * i + 2]
+    closed = np.zeros((active, 2), dtype=np.bool_)
+    for i in range(active):
+        for c in range(2):
+            approach = 0.0
+            for k in range(n):
+                approach += work[0][i, c, k] * velocity[k]
+            closed[i, c] = work[4][i, c] + 0.5 * h * approach <= params[P_TOL_GAP]
+    normal = np.empty((active, 2))
+    tangential = np.empty((active, 2))
+    ratio = impulse_step(active, inverse_mass, work[0], work[2], closed, low, high, velocity,
+                         normal, tangential)  # fmt: skip
+    fstate[F_ENERGY_RATIO] = max(fstate[F_ENERGY_RATIO], ratio)
+    for i in range(active):
+        reference = _lower_contact(work[4], i)
+        slip = 0.0
+        for k in range(n):
+            slip += work[2][i, reference, k] * velocity[k]
+        slide[i] += h * slip
+        carried = 0
+        for c in range(2):
+            mode[i, c] = 1 if normal[i, c] > 0.0 else 0
+            carried += mode[i, c]
+        lam[i, 0] = normal[i, 0] / h
+        lam[i, 1] = normal[i, 1] / h
+        lam[i, 2] = (tangential[i, 0] + tangential[i, 1]) / h
+        if carried == 0:
+            mode[i, 2] = 0
+            directions[i] = 0
+        elif abs(slip) <= params[P_TOL_VEL]:
+            mode[i, 2] = 1
+            directions[i] = 0
+        else:
+            mode[i, 2] = 2 if slip > 0.0 else 3
+            directions[i] = 1 if slip > 0.0 else -1
+    for k in range(n):
+        q[k] = midpoint[k] + 0.5 * h * velocity[k]
+        qd[k] = velocity[k]
+    _kin(model, active, q, qd, work)
+
+
+@nb.njit(cache=True)
+def _begin_stretch(cause, t, active, mode, qd, count, ev, istate):
+    """Switch to time stepping for a stretch, because of failure code ``cause``."""
+    istate[S_STEPPING] = 1
+    istate[S_STRETCH_STEPS] = 0
+    istate[S_STRETCHES] += 1
+    istate[S_REMEDY + cause] += 1
+    istate[S_STALLED] = 0
+    _event(t, TIME_STEPPING, -1, -1, 0, active, active, mode, qd, qd, count, ev, istate)
+
+
+@nb.njit(cache=True)
+def _try_resume(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
+                directions, uplift, free_flight, settle, qdd, lam):  # fmt: skip
+    """End the stretch if an event-driven mode is consistent at the state; whether it did.
+
+    The state is left as it was when none is (the attempt works on copies).
+    """
+    n = 3 * active
+    q_saved = q[:n].copy()
+    qd_saved = qd[:n].copy()
+    slide_saved = slide[:active].copy()
+    mode_saved = mode[:active].copy()
+    directions_saved = directions[:active].copy()
+    _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
+            directions, uplift, free_flight, settle)  # fmt: skip
+    if settle[0] == NO_FAILURE and _evaluate(model, exc, params, active, t, q, qd, mode, work,
+                                             qdd, lam):  # fmt: skip
+        istate[S_STEPPING] = 0
+        return True
+    q[:n] = q_saved
+    qd[:n] = qd_saved
+    slide[:active] = slide_saved
+    mode[:active] = mode_saved
+    directions[:active] = directions_saved
+    _kin(model, active, q, qd, work)
+    return False
+
+
+@nb.njit(cache=True)
+def _overturn_blocks(t, index, active, flags, count):
+    """Mark the blocks from ``index`` up overturned at ``t``."""
+    for j in range(index, count):
+        if flags[2, j] < 0.5:
+            flags[2, j] = 1.0
+            flags[3, j] = t
+
+
 @nb.njit(cache=True)
 def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, mode, directions,
         istate, fstate, flags, rec, ev):  # fmt: skip
@@ -1142,31 +1329,32 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         velocity_before[:] = qd
         _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
                 directions, uplift, free_flight, settle)  # fmt: skip
-        if settle[0] != NO_FAILURE:
-            istate[S_FAILURE] = settle[0]
-            istate[S_STATUS] = FAILED
-            return FAILED
+        cause = settle[0]
         status = 1 if settle[2] > 1 else 0
-        if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-            istate[S_FAILURE] = SINGULAR_MODE
-            istate[S_STATUS] = FAILED
-            return FAILED
+        if cause == NO_FAILURE and not _evaluate(model, exc, params, active, t, q, qd, mode,
+                                                 work, qdd, lam):  # fmt: skip
+            cause = SINGULAR_MODE
+        if cause != NO_FAILURE:
+            _kin(model, active, q, qd, work)
+            lam[:] = 0.0
         _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
         _event(t, START, -1, -1, status, active, active, mode, velocity_before, qd, count, ev,
                istate)  # fmt: skip
         if settle[1] != 0:
             _event(t, settle[1], -1, -1, status, active, active, mode, velocity_before, qd,
                    count, ev, istate)  # fmt: skip
-    else:
-        if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-            istate[S_FAILURE] = SINGULAR_MODE
-            istate[S_STATUS] = FAILED
-            return FAILED
+        if cause != NO_FAILURE:
+            _begin_stretch(cause, t, active, mode, qd, count, ev, istate)
+    elif istate[S_STEPPING] == 1:
+        _kin(model, active, q, qd, work)
+    elif not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
+        _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
     _slide_rate(active, mode, work[6], rates_s)
     outcome = RUNNING
     until_rest = params[P_UNTIL_REST] > 0.0
     while active > 0 and t < end - 1e-12 * max(end, 1.0):
-        if until_rest and t >= exc_end and _at_rest(active, mode, qd):
+        stepping = istate[S_STEPPING] == 1
+        if until_rest and not stepping and t >= exc_end and _at_rest(active, mode, qd):
             # the excitation is over and every interface sticks closed with nothing
             # moving: the stack stays at rest from here on
             istate[S_AT_REST] = 1
@@ -1177,6 +1365,37 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         if istate[S_ROWS] + 4 > rows_capacity or istate[S_EVENTS] + 4 > events_capacity:
             outcome = BUFFER_FULL
             break
+        if stepping:
+            h = min(STEPPING_STEP, h_cap, end - t)
+            _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, directions,
+                       lam, fstate)  # fmt: skip
+            t += h
+            istate[S_STEPS] += 1
+            istate[S_STRETCH_STEPS] += 1
+            istate[S_STEPPED] += 1
+            fstate[F_STEPPED_TIME] += h
+            _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
+            for i in range(active):
+                if abs(work[7][i]) >= 0.5 * math.pi:
+                    velocity_before[: 3 * active] = qd[: 3 * active]
+                    _overturn_blocks(t, i, active, flags, count)
+                    _event(t, OVERTURN, i, -1, 0, active, i, mode, velocity_before, qd, count,
+                           ev, istate)  # fmt: skip
+                    active = i
+                    istate[S_ACTIVE] = active
+                    break
+            if active > 0 and istate[S_STRETCH_STEPS] >= STRETCH_STEPS:
+                velocity_before[: 3 * active] = qd[: 3 * active]
+                if _try_resume(model, exc, params, active, t, q, qd, slide, work, istate,
+                               fstate, mode, directions, uplift, free_flight, settle, qdd,
+                               lam):  # fmt: skip
+                    rest_ready = False
+                    _event(t, RESUME, -1, -1, 1 if settle[2] > 1 else 0, active, active, mode,
+                           velocity_before, qd, count, ev, istate)  # fmt: skip
+                    _slide_rate(active, mode, work[6], rates_s)
+                    _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift,
+                            max_flight)  # fmt: skip
+            continue
         n = 3 * active
         h = _next_end(t, params, breaks, istate, h_cap) - t
         if h <= 1e-3 * time_tol:
@@ -1193,9 +1412,8 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
             slide1[:active] = slide[:active]
             if not rest_ready:
                 if not _rest_prepare(model, active, q, qd, mode, work, rest, qdd1):
-                    istate[S_FAILURE] = SINGULAR_MODE
-                    outcome = FAILED
-                    break
+                    _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
+                    continue
                 rest_ready = True
             _rest_forces(exc, params, active, t + h, rest, lam1)
             qdd1[:n] = 0.0
@@ -1203,13 +1421,11 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
             rest_ready = False
             if not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, qdd, rates_s,
                         work, q1, qd1, slide1, lam1, first):  # fmt: skip
-                istate[S_FAILURE] = SINGULAR_MODE
-                outcome = FAILED
-                break
+                _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
+                continue
             if not _evaluate(model, exc, params, active, t + h, q1, qd1, mode, work, qdd1, lam1):
-                istate[S_FAILURE] = SINGULAR_MODE
-                outcome = FAILED
-                break
+                _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
+                continue
         if not _fired(model, params, active, mode, directions, lam1, slide1, work, found):
             t += h
             qdd[:n] = qdd1[:n]
@@ -1228,9 +1444,8 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                 rest_ready = False
                 _project(model, active, q, qd, mode, work, fstate)
                 if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-                    istate[S_FAILURE] = SINGULAR_MODE
-                    outcome = FAILED
-                    break
+                    _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
+                    continue
                 _slide_rate(active, mode, work[6], rates_s)
             _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
             if t >= exc_end:
@@ -1238,10 +1453,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                 if index >= 0:
                     rest_ready = False
                     velocity_before[:n] = qd[:n]
-                    for j in range(index, count):
-                        if flags[2, j] < 0.5:
-                            flags[2, j] = 1.0
-                            flags[3, j] = t
+                    _overturn_blocks(t, index, active, flags, count)
                     _event(t, OVERTURN, index, -1, 0, active, index, mode, velocity_before,
                            qd, count, ev, istate)  # fmt: skip
                     active = index
@@ -1252,13 +1464,11 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                     _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate,
                             mode, directions, uplift, free_flight, settle)  # fmt: skip
                     if settle[0] != NO_FAILURE:
-                        istate[S_FAILURE] = settle[0]
-                        outcome = FAILED
-                        break
+                        _begin_stretch(settle[0], t, active, mode, qd, count, ev, istate)
+                        continue
                     if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-                        istate[S_FAILURE] = SINGULAR_MODE
-                        outcome = FAILED
-                        break
+                        _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
+                        continue
                     _slide_rate(active, mode, work[6], rates_s)
             continue
         # locate the earliest event to time_tol: a bracket [low, high] (not fired,
@@ -1490,9 +1700,8 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
                     g_high *= 0.5
                 side = -1
         if failed:
-            istate[S_FAILURE] = SINGULAR_MODE
-            outcome = FAILED
-            break
+            _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
+            continue
         q[:n] = q1[:n]
         qd[:n] = qd1[:n]
         slide[:active] = slide1[:active]
@@ -1503,9 +1712,8 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         else:
             istate[S_STALLED] = 0
         if istate[S_STALLED] > 50:
-            istate[S_FAILURE] = STALLED
-            outcome = FAILED
-            break
+            _begin_stretch(STALLED, t, active, mode, qd, count, ev, istate)
+            continue
         # state at the event (kinematics and forces of the held mode)
         _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam)
         _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
@@ -1515,10 +1723,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         velocity_before[:n] = qd[:n]
         before = active
         if kind == OVERTURN:
-            for j in range(interface, count):
-                if flags[2, j] < 0.5:
-                    flags[2, j] = 1.0
-                    flags[3, j] = t
+            _overturn_blocks(t, interface, active, flags, count)
             active = interface
             istate[S_ACTIVE] = active
             if active == 0:
@@ -1528,9 +1733,8 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
                 directions, uplift, free_flight, settle)  # fmt: skip
         if settle[0] != NO_FAILURE:
-            istate[S_FAILURE] = settle[0]
-            outcome = FAILED
-            break
+            _begin_stretch(settle[0], t, active, mode, qd, count, ev, istate)
+            continue
         impacted = settle[1]
         if impacted == TANGENTIAL_IMPACT or (
             impacted != 0 and kind != IMPACT and kind != STOP_IMPACT and kind != OVERTURN
@@ -1543,9 +1747,8 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
             outcome = FAILED
             break
         if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-            istate[S_FAILURE] = SINGULAR_MODE
-            outcome = FAILED
-            break
+            _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
+            continue
         _slide_rate(active, mode, work[6], rates_s)
         _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
     fstate[F_TIME] = t

@@ -121,7 +121,11 @@ class TimeHistoryEvent:
         may stick resolves it, Painleve's paradox), ``"lift-off"`` (a normal
         force reached zero), ``"slip"`` (static friction could no longer
         hold), ``"slip-stop"`` (a slip velocity reached zero), ``"stop-impact"``
-        (a block slid back onto its end stop), ``"overturn"``.
+        (a block slid back onto its end stop), ``"overturn"``,
+        ``"time-stepping"`` (no consistent event-driven mode, or events
+        accumulating: a stretch of velocity-impulse time stepping begins,
+        see :mod:`freestand.core.dynamics.time_stepping`) and ``"resume"``
+        (events take over again).
     interface : int
         Interface (= upper block index) concerned, -1 for none.
     contact : int
@@ -181,6 +185,23 @@ class TimeHistoryDiagnostics:
     fallback : str
         Why the single-block path was not used (its failed assumption), if
         it was tried; empty otherwise.
+    stepped_time : float
+        Time [s] integrated by velocity-impulse time stepping, the remedy
+        where no event-driven contact mode is consistent (Painleve) or events
+        accumulate (Zeno); see :mod:`freestand.core.dynamics.time_stepping`.
+    stretches : tuple of (str, int)
+        The stretches of time stepping begun, counted per cause (the
+        situation each replaced: ``"contact problem inconsistent"``,
+        ``"events repeat without progress"``, ...).
+    energy_ratio : float
+        Largest ratio of kinetic energies after and before the contact
+        impulses of a time step, ``T(v+) / T(v_f)`` [-]: at most 1 (the
+        impulses never create energy); 0 when no step was taken.
+    dissipative_impacts : int
+        Impacts whose enumerated velocity-level state would have raised the
+        kinetic energy (kinetic friction acting against the slip before the
+        impact, which the impact reversed), solved again by the dissipative
+        velocity-level solver of the time stepping.
     """
 
     time_step: float
@@ -193,6 +214,10 @@ class TimeHistoryDiagnostics:
     method: str = "general"
     checks: tuple[str, ...] = ()
     fallback: str = ""
+    stepped_time: float = 0.0
+    stretches: tuple[tuple[str, int], ...] = ()
+    energy_ratio: float = 0.0
+    dissipative_impacts: int = 0
 
 
 @dataclass(frozen=True)

@@ -970,6 +970,19 @@ def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev,
         if overturned.any():
             names = ", ".join(b.name for b, o in zip(stack.blocks, overturned, strict=True) if o)
             message += f"; overturned: {names}"
+    stretches = tuple(
+        (engine.FAILURES[cause], int(istate[engine.S_REMEDY + cause]))
+        for cause in range(1, len(engine.FAILURES))
+        if istate[engine.S_REMEDY + cause] > 0
+    )
+    stepped_time = float(fstate[engine.F_STEPPED_TIME])
+    if stretches and status != "failed":
+        total = sum(number for _, number in stretches)
+        message += (
+            f"; time stepping over {stepped_time:.3g} s in {total} stretch"
+            f"{'es' if total > 1 else ''} where events could not continue "
+            f"({', '.join(f'{cause}: {number}' for cause, number in stretches)})"
+        )
     max_lift = flags[4].copy()
     max_flight = flags[5].copy()
     lift_threshold = UPLIFT_GAP_FRACTION * np.array(
@@ -1011,6 +1024,10 @@ def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev,
             ambiguous_solves=int(istate[engine.S_AMBIGUOUS]),
             max_penetration=float(fstate[engine.F_MAX_PENETRATION]),
             max_projection=float(fstate[engine.F_MAX_PROJECTION]),
+            stepped_time=stepped_time,
+            stretches=stretches,
+            energy_ratio=float(fstate[engine.F_ENERGY_RATIO]),
+            dissipative_impacts=int(istate[engine.S_DISSIPATIVE_IMPACTS]),
         ),
         max_lift=max_lift,
     )
