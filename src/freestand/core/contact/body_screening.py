@@ -1,0 +1,251 @@
+"""Screening of a 3-D body at rest: its initial motion and uplift threshold per direction.
+
+A body resting flat on the support (issue #18) under a horizontal support
+acceleration of magnitude a in direction phi (unit u = (cos phi, sin phi)) and
+a downward vertical support acceleration a_v carries, in the support's frame,
+the loads m g_e with ``g_e = (-a u, -(g - a_v))`` at its centre of gravity G.
+
+**Uplift** (statics; Housner 1963 in a plane, generalised): the body stays
+seated while the line of action of m g_e meets the base plane inside the base.
+It meets it at ``G_xy - (h a / (g - a_v)) u``, so uplift begins at::
+
+    a* = (g - a_v) rho(phi) / h
+
+with h the height of G and rho the distance from G_xy along -u to the base's
+outline (:func:`freestand.core.body.base_ray_distance`): for a box centred on
+its base ``min(b_x / |cos phi|, b_y / |sin phi|)``, for a cylinder R. The body
+then rocks about the edge that point crosses (a corner only on the diagonal;
+for a cylinder, the tangent to the rim at that point).
+
+**Initial motion** (the complementarity problem at rest, as the planar
+screening of the paper's section 3; the choice rule: static friction holds
+where it can):
+
+- rest while ``a <= a*`` and ``a <= mu_0 (g - a_v)``;
+- rock when ``a > a*`` and rocking about the pivot line with the pivot
+  sticking is admissible (static friction holds first): from rest
+  (omega = 0) the angular acceleration about the pivot axis e through the
+  pivot P is
+  ``alpha = e . (d x m g_e) / (e . I_P e)``, d = G - P, I_P = I_G + m (|d|^2 1 - d d^T);
+  the contact force ``F = m alpha e x d - m g_e`` must have ``F_z >= 0`` and
+  ``|F_xy| <= mu_0 F_z`` (the circular cone);
+- otherwise slide (flat) when the base cannot hold, ``a > mu_0 (g - a_v)``
+  (break-away with the static coefficient), and the base stays flat while
+  sliding: the kinetic friction mu m (g - a_v) at the base, the only
+  horizontal force, moves the centre of pressure by ``mu h`` from G_xy
+  towards -u whatever a is, which must stay inside the base (``mu h <= rho``);
+- slide-rock otherwise (the pivot slides while the body tips);
+- free flight when ``a_v >= g``.
+
+Sliding starts in the direction of the inertial force, -u, and in 3-D its
+friction opposes it on the circular cone, so a diagonal motion slides as an
+axis-aligned one of the same magnitude.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from freestand.core.body import Body, Box, base_ray_distance
+from freestand.core.contact.screening import GRAVITY, Motion
+
+#: Relative tolerance [-] of the comparisons with the thresholds (round-off).
+THRESHOLD_TOLERANCE = 1e-12
+
+
+@dataclass(frozen=True)
+class BodyInitialMotion:
+    """Initial motion of a 3-D body at rest for one horizontal direction.
+
+    Attributes
+    ----------
+    direction : float
+        phi [rad]: direction of the horizontal support acceleration, from +x
+        towards +y.
+    horizontal, vertical, gravity : float
+        a, a_v (downward positive) and g [m/s^2].
+    motion : Motion
+        rest, slide, rock, slide-rock or free-flight.
+    pivot : str or None
+        What it rocks about: ``"edge +x"``, ``"edge -y"``, ``"corner +x+y"``,
+        ``"rim at 180 deg"``; None when it does not rock.
+    slide_direction : float or None
+        Direction [rad] of the slide relative to the support (that of the
+        inertial force, phi + pi), None when it does not slide.
+    uplift_threshold : float
+        a* [m/s^2] in this direction (with this a_v).
+    slide_threshold : float
+        mu_0 (g - a_v) [m/s^2].
+    normal_force : float
+        N [N] on the body from the support at the instant (the rocking's
+        pivot force when it rocks).
+    tangential_force : tuple of float
+        (F_x, F_y) [N] on the body from the support.
+    angular_acceleration : float
+        About the pivot axis [rad/s^2] when it rocks, else 0.
+    """
+
+    direction: float
+    horizontal: float
+    vertical: float
+    gravity: float
+    motion: Motion
+    pivot: str | None
+    slide_direction: float | None
+    uplift_threshold: float
+    slide_threshold: float
+    normal_force: float
+    tangential_force: tuple[float, float]
+    angular_acceleration: float
+
+
+def uplift_threshold(body: Body, direction: float, vertical: float = 0.0,
+                     gravity: float = GRAVITY) -> float:  # fmt: skip
+    """Horizontal support acceleration a* [m/s^2] at which the body starts to rock.
+
+    ``a* = (g - a_v) rho(phi) / h`` (module docstring); ``direction`` phi
+    [rad], ``vertical`` a_v [m/s^2] downward positive, ``gravity`` g [m/s^2].
+    Zero when ``a_v >= g`` (weightless: it lifts at once).
+    """
+    weight = gravity - vertical
+    if weight <= 0.0:
+        return 0.0
+    away = (-math.cos(direction), -math.sin(direction))
+    return weight * base_ray_distance(body.shape, body.centre[:2], away) / body.centre_height
+
+
+def _pivot(body: Body, direction: float) -> tuple[np.ndarray, list[np.ndarray], str]:
+    """Pivot point P (3,), candidate axes (unit, horizontal) and a label, for tipping towards -u."""
+    w = np.array([-math.cos(direction), -math.sin(direction)])
+    origin = np.asarray(body.centre[:2])
+    distance = base_ray_distance(body.shape, origin, w)
+    point = np.array([*(origin + distance * w), 0.0])
+    if not isinstance(body.shape, Box):
+        angle = round(math.degrees(math.atan2(point[1], point[0]))) % 360
+        return point, [np.array([-w[1], w[0], 0.0])], f"rim at {angle} deg"
+    bx, by = 0.5 * body.shape.size[0], 0.5 * body.shape.size[1]
+    on_x = abs(abs(point[0]) - bx) <= 1e-9 * bx
+    on_y = abs(abs(point[1]) - by) <= 1e-9 * by
+    sx = "+x" if point[0] > 0 else "-x"
+    sy = "+y" if point[1] > 0 else "-y"
+    if on_x and on_y:
+        point = np.array([math.copysign(bx, point[0]), math.copysign(by, point[1]), 0.0])
+        return (
+            point,
+            [np.array([0.0, 1.0, 0.0]), np.array([1.0, 0.0, 0.0]), None],
+            f"corner {sx}{sy}",
+        )
+    if on_x:
+        return point, [np.array([0.0, 1.0, 0.0])], f"edge {sx}"
+    return point, [np.array([1.0, 0.0, 0.0])], f"edge {sy}"
+
+
+def _base_points(body: Body) -> np.ndarray:
+    if isinstance(body.shape, Box):
+        return body.shape.base_corners()
+    angles = np.linspace(0.0, 2.0 * math.pi, 73)[:-1]
+    radius = body.shape.radius
+    return np.column_stack([radius * np.cos(angles), radius * np.sin(angles), 0 * angles])
+
+
+def _rocking(body: Body, load: np.ndarray, pivot: np.ndarray, axes) -> tuple | None:
+    """(alpha vector [rad/s^2], contact force [N]) of the admissible sticking rotation, or None."""
+    d = np.asarray(body.centre) - pivot
+    inertia = body.inertia + body.mass * (d @ d * np.eye(3) - np.outer(d, d))
+    moment = np.cross(d, load)
+    points = _base_points(body) - pivot
+    scale = np.linalg.norm(moment) / max(np.linalg.eigvalsh(inertia).min(), 1e-300)
+    for axis in axes:
+        if axis is None:  # rotation about a point (a corner): free angular acceleration
+            alpha = np.linalg.solve(inertia, moment)
+        else:
+            alpha = (axis @ moment) / (axis @ inertia @ axis) * axis
+        # every other base point rises (or stays): the gap accelerations (alpha x s)_z >= 0
+        rises = np.cross(alpha, points)[:, 2] >= -1e-9 * scale * np.abs(points).max()
+        if not rises.all() or np.linalg.norm(alpha) <= 1e-12 * scale:
+            continue
+        force = body.mass * np.cross(alpha, d) - load
+        return alpha, force
+    return None
+
+
+def initial_motion(
+    body: Body, horizontal: float, direction: float, vertical: float = 0.0,
+    gravity: float = GRAVITY,
+) -> BodyInitialMotion:  # fmt: skip
+    """Initial motion of the body at rest (module docstring) for one direction.
+
+    Parameters
+    ----------
+    body : Body
+        The body, flat on the support.
+    horizontal : float
+        a [m/s^2], >= 0.
+    direction : float
+        phi [rad] of the support acceleration.
+    vertical : float, optional
+        a_v [m/s^2], downward positive.
+    gravity : float, optional
+        g [m/s^2].
+
+    Returns
+    -------
+    BodyInitialMotion
+        For slide-rock the forces and the angular acceleration are not
+        computed (NaN): they need the sliding pivot's dynamics.
+    """
+    weight = gravity - vertical
+    u = np.array([math.cos(direction), math.sin(direction), 0.0])
+    slide_threshold = body.friction.static * max(weight, 0.0)
+
+    def state(motion, pivot=None, sliding=False, normal=math.nan, force=(math.nan, math.nan),
+              alpha=math.nan):  # fmt: skip
+        return BodyInitialMotion(
+            direction=direction, horizontal=horizontal, vertical=vertical, gravity=gravity,
+            motion=motion, pivot=pivot,
+            slide_direction=(direction + math.pi) % (2.0 * math.pi) if sliding else None,
+            uplift_threshold=uplift_threshold(body, direction, vertical, gravity),
+            slide_threshold=slide_threshold, normal_force=normal,
+            tangential_force=(float(force[0]), float(force[1])), angular_acceleration=alpha,
+        )  # fmt: skip
+
+    if weight <= 0.0:
+        return state(Motion.FREE_FLIGHT, normal=0.0, force=(0.0, 0.0), alpha=0.0)
+    load = body.mass * np.array([-horizontal * u[0], -horizontal * u[1], -weight])
+    slack = 1.0 + THRESHOLD_TOLERANCE
+    tips = horizontal > uplift_threshold(body, direction, vertical, gravity) * slack
+    label = _pivot(body, direction)[2]
+    if tips:
+        pivot, axes, label = _pivot(body, direction)
+        rocking = _rocking(body, load, pivot, axes)
+        if rocking is not None:
+            alpha, force = rocking
+            normal = float(force[2])
+            if normal >= 0.0 and math.hypot(*force[:2]) <= body.friction.static * normal * slack:
+                return state(Motion.ROCK, label, normal=normal, force=force,
+                             alpha=float(np.linalg.norm(alpha)))  # fmt: skip
+    elif horizontal <= slide_threshold * slack:
+        return state(Motion.REST, normal=body.mass * weight, force=-load, alpha=0.0)
+    reach = base_ray_distance(body.shape, body.centre[:2], (-u[0], -u[1]))
+    friction = body.friction.kinetic * body.mass * weight * u
+    stays_flat = body.friction.kinetic * body.centre_height <= reach * slack
+    if horizontal > slide_threshold * slack and stays_flat:
+        return state(Motion.SLIDE, sliding=True, normal=body.mass * weight, force=friction,
+                     alpha=0.0)  # fmt: skip
+    return state(Motion.SLIDE_ROCK, label, sliding=True)
+
+
+def screen_directions(
+    body: Body, horizontal: float, vertical: float = 0.0, count: int = 24,
+    gravity: float = GRAVITY,
+) -> tuple[BodyInitialMotion, ...]:  # fmt: skip
+    """:func:`initial_motion` for ``count`` directions evenly over 0-360 deg (every 15 deg)."""
+    if count < 1:
+        raise ValueError(f"count must be at least 1, not {count!r}")
+    return tuple(
+        initial_motion(body, horizontal, 2.0 * math.pi * k / count, vertical, gravity)
+        for k in range(count)
+    )
