@@ -31,7 +31,6 @@ from rich.markup import escape
 from freestand.core.motion.spectra import Spectrum
 from freestand.errors import FreestandError
 from freestand.io.model_file import ModelFile, load_model
-from freestand.io.spectrum_input import parse_spectrum_option
 from freestand.io.units import to_si
 
 
@@ -101,30 +100,17 @@ def parse_numbers(
 def resolve_spectrum(option: str | None, model: ModelFile, direction: str) -> Spectrum | None:
     """The spectrum named by ``--spectrum``, else the model's first one for ``direction``.
 
-    A spectrum of the other direction is refused: the horizontal overturning
-    check needs a horizontal spectrum, the jump check a vertical one.
+    A spectrum of the other direction is refused (:func:`freestand.api.base.resolve_spectrum`).
     """
-    if option is None:
-        return model.spectrum(direction)
+    from freestand.api.base import resolve_spectrum as resolve
+    from freestand.api.base import subject
+
     with _busy(
         f"computing the response spectrum of {option.partition(':')[2].partition(',')[0]}"
-        if option.strip().startswith("record:")
+        if option is not None and option.strip().startswith("record:")
         else None
     ):
-        spectrum = parse_spectrum_option(
-            option, model_spectra=model.spectra, base_dir=model.base_dir, gravity=model.gravity
-        )
-    if spectrum.direction != direction:
-        other = ", ".join(
-            repr(name) for name, s in model.spectra.items() if s.direction == direction
-        )
-        raise FreestandError(
-            f"{option!r} is a {spectrum.direction} spectrum; this check needs a {direction} one"
-            + (f" (the model has {other})" if other else "")
-            + f", e.g. 'rg1.60:pga=0.3g,direction={direction}'",
-            source="--spectrum",
-        )
-    return spectrum
+        return resolve(option, subject(model), direction)
 
 
 @contextlib.contextmanager

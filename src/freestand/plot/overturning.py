@@ -33,14 +33,20 @@ _STYLE = {
 }
 
 
-def _new_figure() -> tuple[Figure, object]:
-    fig = Figure(figsize=(7.0, 4.8), layout="constrained")
-    ax = fig.add_subplot()
+def _new_figure(ax=None, size: tuple[float, float] = (7.0, 4.8)) -> tuple[Figure, object]:
+    """A new figure with one grid-lined axes, or ``ax`` and its figure when given."""
+    if ax is None:
+        fig = Figure(figsize=size, layout="constrained")
+        ax = fig.add_subplot()
+    else:
+        fig = ax.figure
     ax.grid(True, which="both", alpha=0.3)
     return fig, ax
 
 
-def plot_rectangular_pulse(limits: RectangularPulseLimits, *, title: str | None = None) -> Figure:
+def plot_rectangular_pulse(
+    limits: RectangularPulseLimits, *, title: str | None = None, ax=None
+) -> Figure:
     """Shortest overturning duration against amplitude of a rectangular pulse (paper Fig. 6).
 
     Parameters
@@ -49,8 +55,10 @@ def plot_rectangular_pulse(limits: RectangularPulseLimits, *, title: str | None 
         Housner's and the exact limits.
     title : str, optional
         Figure title.
+    ax : matplotlib.axes.Axes, optional
+        Draw into these axes (default: a new figure).
     """
-    fig, ax = _new_figure()
+    fig, ax = _new_figure(ax)
     a = limits.amplitude
     for name, values in (("housner", limits.housner), ("exact", limits.exact)):
         finite = np.isfinite(values)
@@ -71,7 +79,7 @@ def plot_rectangular_pulse(limits: RectangularPulseLimits, *, title: str | None 
     return fig
 
 
-def plot_pulse_limits(limits: OverturningLimits, *, title: str | None = None) -> Figure:
+def plot_pulse_limits(limits: OverturningLimits, *, title: str | None = None, ax=None) -> Figure:
     """Minimum overturning amplitude against pulse frequency (paper Fig. 7).
 
     Parameters
@@ -80,8 +88,10 @@ def plot_pulse_limits(limits: OverturningLimits, *, title: str | None = None) ->
         The limits to draw (all on one figure, log-log axes).
     title : str, optional
         Figure title.
+    ax : matplotlib.axes.Axes, optional
+        Draw into these axes (default: a new figure).
     """
-    fig, ax = _new_figure()
+    fig, ax = _new_figure(ax)
     _draw_limits(ax, limits)
     ax.set_title(title or f"{limits.kind} pulse: overturning above the curves")
     ax.legend(loc="upper left", fontsize="small")
@@ -113,6 +123,7 @@ def plot_spectrum_check(
     checks: dict | None = None,
     *,
     title: str | None = None,
+    ax=None,
 ) -> Figure:
     """A response spectrum against the overturning limits (paper Fig. 8).
 
@@ -127,10 +138,11 @@ def plot_spectrum_check(
         of smallest margin of each is marked.
     title : str, optional
         Figure title.
+    ax : matplotlib.axes.Axes, optional
+        Draw into these axes (default: a new figure); the legend goes below
+        the axes either way.
     """
-    fig = Figure(figsize=(7.0, 7.2), layout="constrained")
-    ax = fig.add_subplot()
-    ax.grid(True, which="both", alpha=0.3)
+    fig, ax = _new_figure(ax, size=(7.0, 7.2))
     _draw_limits(ax, limits)
     f = np.geomspace(limits.frequency[0], limits.frequency[-1], 300)
     ax.loglog(f, spectrum.acceleration_at(f), color="k", linewidth=2.0, label=spectrum.label)
