@@ -3,13 +3,38 @@
 ``import freestand as fs`` gives these names (see the README, "Python API").
 They are thin: each calls the one implementation in :mod:`freestand.core` or
 :mod:`freestand.io`; whatever moves inside the package, these names stay. One
-module per analysis; the command line (:mod:`freestand.cli`) is a shell over
-them.
+module per analysis, each with its function(s) and result class(es); the
+command line (:mod:`freestand.cli`) is a shell over them: a command's
+``--json`` prints ``result.to_dict()``.
 """
 
 from __future__ import annotations
 
-from freestand.api.screening import screen
-from freestand.api.simulation import simulate, support_motion
+from freestand.api.fragility import FragilityResult, fragility, fragility_from_store
+from freestand.api.frequency import FrequencyResult, frequency
+from freestand.api.maps import ModeMapResult, SampleResult, mode_map, sample
+from freestand.api.overturning import OverturningResult, overturning
+from freestand.api.report import ReportResult, report
+from freestand.api.screening import ScreeningResult, screen
+from freestand.api.simulation import SimulationResult, simulate, support_motion
 
-__all__ = ["screen", "simulate", "support_motion"]
+__all__ = [
+    "FragilityResult",
+    "FrequencyResult",
+    "ModeMapResult",
+    "OverturningResult",
+    "ReportResult",
+    "SampleResult",
+    "ScreeningResult",
+    "SimulationResult",
+    "fragility",
+    "fragility_from_store",
+    "frequency",
+    "mode_map",
+    "overturning",
+    "report",
+    "sample",
+    "screen",
+    "simulate",
+    "support_motion",
+]

@@ -10,7 +10,7 @@ from matplotlib.figure import Figure
 from freestand.core.sweeps.fragility.analysis import FragilityResult
 
 
-def plot_fragility(result: FragilityResult, im_label: str, title: str = "") -> Figure:
+def plot_fragility(result: FragilityResult, im_label: str, title: str = "", ax=None) -> Figure:
     """One panel: every outcome's fitted lognormal curve, its bootstrap band, the fractions.
 
     Parameters
@@ -28,8 +28,11 @@ def plot_fragility(result: FragilityResult, im_label: str, title: str = "") -> F
         (outcomes drawn slightly apart at each level so that none hides another);
         outcomes not fitted are named in the legend with the words "not fitted".
     """
-    fig = Figure(figsize=(7.5, 5.0), layout="constrained")
-    ax = fig.add_subplot()
+    if ax is None:
+        fig = Figure(figsize=(7.5, 5.0), layout="constrained")
+        ax = fig.add_subplot()
+    else:
+        fig = ax.figure
     ax.grid(True, alpha=0.3)
     colours = [f"C{i}" for i in range(10)]
     top = 0.0

@@ -66,14 +66,9 @@ def assess_fragility(model, workers: int | None = None) -> FragilitySection | No
     cloud = bool(table.get("cloud", False))
     if cloud == ("levels" in table):
         raise FreestandError('give levels = "A:B:N" or cloud = true', source=source)
-    from freestand.core.sweeps.fragility.analysis import analyse
-    from freestand.io.campaign_runner import default_chunk_size, run_campaign
+    from freestand.io.campaign_runner import run_fragility
     from freestand.io.fragility_options import build_campaign
-    from freestand.io.fragility_results import (
-        campaign_definition,
-        fragility_document,
-        im_label,
-    )
+    from freestand.io.fragility_results import fragility_document, im_label
 
     suite = model.base_dir / table["suite"]
     campaign, records = build_campaign(
@@ -83,18 +78,11 @@ def assess_fragility(model, workers: int | None = None) -> FragilitySection | No
         bool(table.get("both_polarities", False)), int(table.get("seed", 0)),
         float(table.get("free_time", 10.0)), source=source,
     )  # fmt: skip
-    size = default_chunk_size(campaign)
-    definition = campaign_definition(
-        campaign, model_name=model.name, model_source=model.source,
-        model_sha256=model.sha256, suite_name=records.name, suite_source=str(table["suite"]),
-        chunk_size=size,
-    )  # fmt: skip
-    rows = run_campaign(campaign, chunk_size=size, workers=workers)
     bootstrap = int(table.get("bootstrap", 1000))
-    seed = int(table.get("seed", 0))
-    result = analyse(
-        rows, campaign.outcomes, campaign.levels, unit=campaign.measure.unit,
-        bootstrap=bootstrap, seed=seed,
+    definition, result = run_fragility(
+        campaign, model_name=model.name, model_source=model.source, model_sha256=model.sha256,
+        suite_name=records.name, suite_source=str(table["suite"]), workers=workers,
+        bootstrap=bootstrap, seed=int(table.get("seed", 0)),
     )  # fmt: skip
     document = fragility_document(definition, result, bootstrap, 0.95)
     return FragilitySection(document, result, im_label(definition["im"]))
