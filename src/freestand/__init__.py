@@ -13,7 +13,7 @@ API"); they are loaded on first use, so the command line starts fast:
   :func:`simulate` (time history), :func:`overturning` (Figs. 6-8),
   :func:`frequency` (Fig. 9), :func:`mode_map`, :func:`sample` (Monte
   Carlo), :func:`fragility` (and :func:`fragility_from_store`),
-  :func:`report`; also :func:`response_spectrum`, :class:`RockingBlock` and
+  :func:`write_report`; also :func:`response_spectrum`, :class:`RockingBlock` and
   :func:`overturning_limits`;
 - :class:`FreestandError`, the one error class.
 
@@ -58,7 +58,7 @@ _PUBLIC = {
     "sample": "freestand.api",
     "fragility": "freestand.api",
     "fragility_from_store": "freestand.api",
-    "report": "freestand.api",
+    "write_report": "freestand.api",
     "ScreeningResult": "freestand.api",
     "SimulationResult": "freestand.api",
     "OverturningResult": "freestand.api",

@@ -14,7 +14,7 @@ from freestand.api.fragility import FragilityResult, fragility, fragility_from_s
 from freestand.api.frequency import FrequencyResult, frequency
 from freestand.api.maps import ModeMapResult, SampleResult, mode_map, sample
 from freestand.api.overturning import OverturningResult, overturning
-from freestand.api.report import ReportResult, report
+from freestand.api.report import ReportResult, write_report
 from freestand.api.screening import ScreeningResult, screen
 from freestand.api.simulation import SimulationResult, simulate, support_motion
 
@@ -32,9 +32,9 @@ __all__ = [
     "frequency",
     "mode_map",
     "overturning",
-    "report",
     "sample",
     "screen",
     "simulate",
     "support_motion",
+    "write_report",
 ]

@@ -351,8 +351,8 @@ def overturning(
     >>> import freestand as fs
     >>> model = fs.load_model("examples/crane.toml")
     >>> result = fs.overturning(model, configuration="x-z cart right", block="cart")
-    >>> round(result.rocking.about("pivot").alpha, 3)
-    0.373
+    >>> result.pivot, round(result.rocking.about("pivot").alpha, 3)
+    ('right', 0.439)
     >>> result.to_frame().columns[:3].tolist()
     ['frequency [Hz]', 'half_sine_duration [s]', 'half_sine_housner [m/s^2]']
     """

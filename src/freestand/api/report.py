@@ -1,4 +1,7 @@
-"""Public screening report: :func:`report` writes the engineer's report of a model file."""
+"""Public screening report: :func:`write_report` writes the engineer's report of a model file.
+
+(Not ``fs.report``: that name is the package :mod:`freestand.report`.)
+"""
 
 from __future__ import annotations
 
@@ -82,7 +85,7 @@ def default_path(model_file: str | Path) -> Path:
     return model_file.with_name(f"{model_file.stem}-report.html")
 
 
-def report(
+def write_report(
     model,
     path: str | Path | None = None,
     *,
@@ -127,7 +130,7 @@ def report(
     --------
     >>> import freestand as fs, tempfile, pathlib
     >>> folder = pathlib.Path(tempfile.mkdtemp())
-    >>> result = fs.report("examples/crane.toml", folder / "crane.html", date="2024-01-01")
+    >>> result = fs.write_report("examples/crane.toml", folder / "crane.html", date="2024-01-01")
     >>> [path.name for path in result.files]
     ['crane.html']
     """

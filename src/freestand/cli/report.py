@@ -33,8 +33,7 @@ def report(
     ),
 ) -> None:
     """Write the screening report: inputs, Tables 2-5, Figures 6-9 analogues, conclusions."""
-    from freestand.api.report import SUFFIXES, default_path
-    from freestand.api.report import report as write_report
+    from freestand.api.report import SUFFIXES, default_path, write_report
     from freestand.report.content import report_date
 
     day = report_date(date)
