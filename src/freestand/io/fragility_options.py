@@ -28,6 +28,22 @@ from freestand.io.units import to_si
 _QUANTITY = {"m/s^2": "acceleration", "-": "dimensionless"}
 
 
+#: The keys of a model file's ``[fragility]`` table (the options of ``freestand fragility``).
+FRAGILITY_KEYS = {
+    "suite": "the record suite file (required)",
+    "configuration": "the configuration (default: the first)",
+    "im": 'the intensity measure, as --im (default "pga")',
+    "levels": 'the levels, as --levels, e.g. "1:8:15" (or cloud = true)',
+    "cloud": "run the records unscaled (default false)",
+    "outcomes": "the outcomes, as --outcome (default: per configuration)",
+    "vary": "uncertain inputs, as --vary",
+    "samples": "samples per record and level (default 1; 10 with vary)",
+    "both_polarities": "also run every record negated (default false)",
+    "seed": "seed of the inputs and the bootstrap (default 0)",
+    "bootstrap": "bootstrap replicates (default 1000)",
+    "free_time": "cap on the time simulated after a record [s] (default 10)",
+}
+
 #: Most samples per record and level: with 1000 levels and a suite of 30 records, 3e8
 #: simulations already; beyond, a typo (--samples 100000000) would not finish.
 MAX_SAMPLES = 10_000

@@ -173,6 +173,16 @@ def read_spectrum_csv(
     )
 
 
+#: The keys each kind of spectrum takes besides ``name``, ``kind``, ``direction``, ``damping``.
+SPECTRUM_KEYS = {
+    "csv": {"file"},
+    "rg1.60": {"pga"},
+    "en1998": {"ag", "ground", "type", "importance"},
+    "table": {"frequency", "acceleration", "unit", "label"},
+    "record": {"file", "dt", "unit", "scale", "peak", "label"},
+}
+
+
 def spectrum_from_settings(
     kind: str, settings: dict, *, source: str, field: str, base_dir: Path, gravity: float
 ) -> Spectrum:
@@ -184,13 +194,7 @@ def spectrum_from_settings(
     damping = damping_fraction(
         settings.pop("damping", 0.05), field=f"{field}.damping", source=source
     )
-    allowed = {
-        "csv": {"file"},
-        "rg1.60": {"pga"},
-        "en1998": {"ag", "ground", "type", "importance"},
-        "table": {"frequency", "acceleration", "unit", "label"},
-        "record": {"file", "dt", "unit", "scale", "peak", "label"},
-    }
+    allowed = SPECTRUM_KEYS
     if kind not in allowed:
         raise FreestandError(
             f"{kind!r} is not a kind of spectrum; use one of {', '.join(KINDS)}",

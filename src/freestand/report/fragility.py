@@ -25,11 +25,9 @@ from dataclasses import dataclass
 
 from freestand.core.sweeps.fragility.analysis import FragilityResult
 from freestand.errors import FreestandError
+from freestand.io.fragility_options import FRAGILITY_KEYS
 
-_KEYS = {
-    "suite", "configuration", "im", "levels", "cloud", "outcomes", "vary", "samples",
-    "both_polarities", "seed", "bootstrap", "free_time",
-}  # fmt: skip
+_KEYS = set(FRAGILITY_KEYS)
 
 
 @dataclass(frozen=True)
