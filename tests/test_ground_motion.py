@@ -140,3 +140,97 @@ def test_synthetic_record_is_deterministic_and_at_rest_at_the_end():
     # baseline correction: the ground ends at rest where it started (round-off)
     assert abs(a.velocity()[-1]) < 1e-12
     assert abs(a.displacement()[-1]) < 1e-12
+
+
+# ------------------------------------------------------- two horizontal components
+
+
+def _pair(n=400, dt=0.01, seed=3):
+    rng = np.random.default_rng(seed)
+    return GroundMotion(
+        dt, rng.normal(size=n), rng.normal(size=n) * 0.5, name="pair",
+        horizontal_y=rng.normal(size=n) * 0.8,
+    )  # fmt: skip
+
+
+def test_second_horizontal_component_is_carried_through():
+    motion = _pair()
+    assert motion.components == ("horizontal", "horizontal_y", "vertical")
+    assert motion.peak_horizontal_y == pytest.approx(np.max(np.abs(motion.horizontal_y)))
+    scaled = motion.scaled(2.0)
+    np.testing.assert_array_equal(scaled.horizontal_y, 2.0 * motion.horizontal_y)
+    longer = motion.with_trailing_zeros(motion.duration + 1.0)
+    assert longer.horizontal_y.size == longer.horizontal.size == motion.n_samples + 100
+    assert np.all(longer.horizontal_y[motion.n_samples :] == 0.0)
+    assert motion.horizontal_y_at(0.005) == pytest.approx(
+        0.5 * (motion.horizontal_y[0] + motion.horizontal_y[1])
+    )
+    np.testing.assert_array_equal(motion.component("horizontal_y"), motion.horizontal_y)
+    peak = motion.scaled_to_peak(1.0, component="horizontal_y")
+    assert peak.peak_horizontal_y == pytest.approx(1.0)
+    assert motion.with_horizontal_y(None).components == ("horizontal", "vertical")
+    with pytest.raises(ValueError, match="same length"):
+        GroundMotion(0.01, [0.0, 1.0], horizontal_y=[0.0, 1.0, 2.0])
+    with pytest.raises(ValueError, match="no horizontal_y"):
+        GroundMotion(0.01, [0.0, 1.0]).component("horizontal_y")
+
+
+def test_a_planar_record_is_unchanged():
+    motion = GroundMotion(0.01, [0.0, 1.0, -2.0], [0.0, 0.1, 0.2])
+    assert motion.horizontal_y is None and motion.peak_horizontal_y is None
+    assert motion.components == ("horizontal", "vertical")
+    assert motion.scaled(3.0).horizontal_y is None
+    assert motion.with_trailing_zeros(1.0).horizontal_y is None
+    np.testing.assert_array_equal(motion.horizontal_y_at([0.0, 0.01]), [0.0, 0.0])
+
+
+def test_rotation_of_the_horizontal_pair():
+    motion = _pair()
+    quarter = motion.rotated(np.pi / 2)
+    # x' = y and y' = -x after a quarter turn (counter-clockwise seen from above)
+    np.testing.assert_allclose(quarter.horizontal, motion.horizontal_y, atol=1e-15)
+    np.testing.assert_allclose(quarter.horizontal_y, -motion.horizontal, atol=1e-15)
+    np.testing.assert_array_equal(quarter.vertical, motion.vertical)
+    # rotations compose and keep the horizontal magnitude at every instant
+    composed = motion.rotated(0.3).rotated(0.5)
+    direct = motion.rotated(0.8)
+    np.testing.assert_allclose(composed.horizontal, direct.horizontal, atol=1e-14)
+    np.testing.assert_allclose(composed.horizontal_y, direct.horizontal_y, atol=1e-14)
+    assert composed.metadata["rotation"] == pytest.approx(0.8)
+    np.testing.assert_allclose(
+        np.hypot(direct.horizontal, direct.horizontal_y),
+        np.hypot(motion.horizontal, motion.horizontal_y),
+        rtol=1e-13,
+    )
+    # a record with one horizontal component moves along x: its rotation has both
+    planar = GroundMotion(0.01, [0.0, 1.0, -2.0])
+    turned = planar.rotated(np.pi / 6)
+    np.testing.assert_allclose(turned.horizontal, np.cos(np.pi / 6) * planar.horizontal)
+    np.testing.assert_allclose(turned.horizontal_y, -np.sin(np.pi / 6) * planar.horizontal)
+
+
+def test_combine_three_components():
+    x = np.arange(5.0)
+    y = np.arange(9.0) * 0.5  # finer step, longer
+    v = np.arange(3.0)
+    motion = combine_components(x, 0.02, v, 0.02, horizontal_y=y, horizontal_y_dt=0.01)
+    assert motion.dt == 0.01 and motion.n_samples == 9
+    np.testing.assert_allclose(motion.horizontal, np.arange(9.0) * 0.5)
+    np.testing.assert_allclose(motion.horizontal_y, y)
+    np.testing.assert_allclose(motion.vertical[:5], [0, 0.5, 1, 1.5, 2])
+    assert motion.metadata["combination"] == (
+        "horizontal resampled from dt=0.02 s to 0.01 s; vertical resampled from dt=0.02 s to "
+        "0.01 s; vertical padded with 4 zeros"
+    )
+    only_y = combine_components(x, 0.02, horizontal_y=x[:3], horizontal_y_dt=0.02)
+    assert only_y.vertical is None and only_y.horizontal_y.size == 5
+
+
+def test_floor_motion_filters_both_horizontal_components():
+    from freestand.core.motion.response_spectrum import floor_motion
+
+    motion = _pair()
+    floor = floor_motion(motion, 2.5, 0.05)
+    alone = floor_motion(GroundMotion(motion.dt, motion.horizontal_y), 2.5, 0.05)
+    np.testing.assert_allclose(floor.horizontal_y, alone.horizontal, rtol=1e-12, atol=1e-12)
+    np.testing.assert_array_equal(floor.vertical, motion.vertical)

@@ -28,7 +28,7 @@ def test_spectra_figure_draws_records_target_band_and_ratios():
     ratios = [line.get_ydata() for line in lower.get_lines()]
     assert any(np.allclose(r, 1.1) for r in ratios)
     assert any(np.allclose(r, 0.95) for r in ratios)
-    assert lower.get_ylabel() == "record / target [-]"
+    assert lower.get_ylabel() == "record / its target [-]"
 
 
 def test_suite_figure_draws_the_mean():

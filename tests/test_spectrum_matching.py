@@ -139,3 +139,65 @@ def test_arias_intensity_and_duration_of_a_constant_record():
 def test_generate_rejects_a_step_too_coarse_for_50_hz():
     with pytest.raises(ValueError, match="dt"):
         generate_suite(rg160_spectrum(3.0), count=1, duration=4.0, dt=0.02)
+
+
+THREE_COMPONENT_TARGETS = {
+    "rg1.60": lambda: (rg160_spectrum(0.3 * G, 0.05), rg160_spectrum(0.3 * G, 0.05, "vertical")),
+    "en1998": lambda: (
+        en1998_spectrum(0.25 * G, "B", 1, 0.05),
+        en1998_spectrum(0.25 * G, "B", 1, 0.05, "vertical"),
+    ),
+}
+
+
+@pytest.mark.parametrize("name", sorted(THREE_COMPONENT_TARGETS))
+def test_three_component_suites_meet_every_check(name):
+    horizontal, vertical = THREE_COMPONENT_TARGETS[name]()
+    # two records of 8 s keep the test to about a second; the checks are the full ones
+    result = generate_suite(
+        horizontal, count=2, duration=8.0, seed=11, vertical_target=vertical,
+        horizontal_y_target=horizontal,
+    )  # fmt: skip
+    assert result.status == "accepted", result.failures
+    assert [c.direction for c in result.components] == ["horizontal", "horizontal_y", "vertical"]
+    frequencies = AcceptanceCriteria().frequencies()
+    for component in result.components:
+        goal = component.target.acceleration_at(frequencies)
+        spectra = []
+        for record in component.records:
+            # every check recomputed with the general spectrum function
+            psa = response_spectrum(
+                record.acceleration, record.dt, frequencies, component.target.damping
+            ).acceleration
+            spectra.append(psa)
+            assert (psa / goal).min() >= 0.9 and (psa / goal).max() <= 1.3, component.direction
+            pga = np.max(np.abs(record.acceleration))
+            assert pga == pytest.approx(zero_period_acceleration(component.target), rel=0.05)
+            assert record.check.duration_5_75 > 0.5
+        assert np.all(np.mean(spectra, axis=0) >= goal), component.direction
+    # independence (SRP 3.7.1): every pair of components of a record below 0.3
+    independence = result.component_correlations()
+    for index, record in enumerate(independence):
+        histories = [c.records[index].acceleration for c in result.components]
+        corr = np.abs(np.corrcoef(histories))
+        assert set(record["pairs"]) == {
+            "horizontal-horizontal_y", "horizontal-vertical", "horizontal_y-vertical"
+        }  # fmt: skip
+        assert record["pairs"]["horizontal-horizontal_y"] == pytest.approx(corr[0, 1])
+        assert record["max"] == pytest.approx(np.max(corr[np.triu_indices(3, 1)]))
+        assert record["max"] < 0.3
+    assert max(r["max"] for r in independence) <= result.max_correlation < 0.3
+    assert all(label[-1] in "XYV" for label in result.max_correlation_pair)
+
+
+def test_the_second_horizontal_component_has_its_own_seeds():
+    horizontal = rg160_spectrum(0.3 * G, 0.05)
+    result = generate_suite(
+        horizontal, count=1, duration=6.0, seed=2, horizontal_y_target=horizontal
+    )
+    x = result.horizontal.records[0]
+    y = result.horizontal_y.records[0]
+    assert x.seed_parameters != y.seed_parameters
+    assert abs(np.corrcoef(x.acceleration, y.acceleration)[0, 1]) < 0.3
+    assert result.vertical is None and result.count == 1
+    assert result.component_correlations()[0]["pairs"].keys() == {"horizontal-horizontal_y"}

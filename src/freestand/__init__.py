@@ -4,7 +4,7 @@
 API"); they are loaded on first use, so the command line starts fast:
 
 - models and records: :func:`load_model`, :func:`load_record`,
-  :func:`load_suite`, :class:`GroundMotion`, :class:`SupportMotion`,
+  :func:`load_suite`, :func:`load_station`, :class:`GroundMotion`, :class:`SupportMotion`,
   :class:`Block`, :class:`Stack`, :class:`Friction`, :class:`Sliding`,
   :class:`Excitation`;
 - analyses, one per command, each returning a result with ``to_dict()``
@@ -13,7 +13,8 @@ API"); they are loaded on first use, so the command line starts fast:
   :func:`simulate` (time history), :func:`overturning` (Figs. 6-8),
   :func:`frequency` (Fig. 9), :func:`mode_map`, :func:`sample` (Monte
   Carlo), :func:`fragility` (and :func:`fragility_from_store`),
-  :func:`write_report`; also :func:`response_spectrum`, :class:`RockingBlock` and
+  :func:`write_report`, :func:`response_spectrum`, :func:`generate_suite`,
+  :func:`floor_motion`; also :class:`RockingBlock` and
   :func:`overturning_limits`;
 - :class:`FreestandError`, the one error class.
 
@@ -59,6 +60,9 @@ _PUBLIC = {
     "fragility": "freestand.api",
     "fragility_from_store": "freestand.api",
     "write_report": "freestand.api",
+    "response_spectrum": "freestand.api",
+    "generate_suite": "freestand.api",
+    "floor_motion": "freestand.api",
     "ScreeningResult": "freestand.api",
     "SimulationResult": "freestand.api",
     "OverturningResult": "freestand.api",
@@ -67,7 +71,10 @@ _PUBLIC = {
     "SampleResult": "freestand.api",
     "FragilityResult": "freestand.api",
     "ReportResult": "freestand.api",
-    "response_spectrum": "freestand.core.motion.response_spectrum",
+    "RecordSpectra": "freestand.api",
+    "GeneratedSuite": "freestand.api",
+    "FloorMotion": "freestand.api",
+    "load_station": "freestand.io.pairing",
     "RockingBlock": "freestand.core.rocking.properties",
     "overturning_limits": "freestand.core.rocking.overturning",
 }

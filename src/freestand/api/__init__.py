@@ -14,24 +14,38 @@ from freestand.api.fragility import FragilityResult, fragility, fragility_from_s
 from freestand.api.frequency import FrequencyResult, frequency
 from freestand.api.maps import ModeMapResult, SampleResult, mode_map, sample
 from freestand.api.overturning import OverturningResult, overturning
+from freestand.api.records import (
+    FloorMotion,
+    GeneratedSuite,
+    RecordSpectra,
+    floor_motion,
+    generate_suite,
+    response_spectrum,
+)
 from freestand.api.report import ReportResult, write_report
 from freestand.api.screening import ScreeningResult, screen
 from freestand.api.simulation import SimulationResult, simulate, support_motion
 
 __all__ = [
+    "FloorMotion",
     "FragilityResult",
     "FrequencyResult",
+    "GeneratedSuite",
     "ModeMapResult",
     "OverturningResult",
+    "RecordSpectra",
     "ReportResult",
     "SampleResult",
     "ScreeningResult",
     "SimulationResult",
+    "floor_motion",
     "fragility",
     "fragility_from_store",
     "frequency",
+    "generate_suite",
     "mode_map",
     "overturning",
+    "response_spectrum",
     "sample",
     "screen",
     "simulate",

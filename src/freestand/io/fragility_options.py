@@ -3,6 +3,9 @@
 Syntax::
 
     --im pga | pgv | sa:2.5[,5%] | sa:2.5Hz,0.02 | pga-alpha[:BLOCK]
+         two horizontal components (x and y): pga-gm | pga-rotd50 | pga-rotd100
+         | pgv-gm | pgv-rotd50 | pgv-rotd100 | sa-gm:F[,DAMPING] | sa-rotd50:F[,DAMPING]
+         | sa-rotd100:F[,DAMPING]
     --levels 0.5:10:20           20 levels from 0.5 to 10 (IM unit, or with units:
                                  0.05g:1g:20), or a list 1,2,4,8
     --outcome overturn:cart | rotation:cart>0.5alpha | rotation:cart>0.1rad
@@ -50,24 +53,30 @@ MAX_SAMPLES = 10_000
 
 
 def parse_intensity(text: str, stack: Stack, option: str = "--im") -> IntensityMeasure:
-    """Read ``pga``, ``pgv``, ``sa:F[,DAMPING]`` or ``pga-alpha[:BLOCK]``."""
+    """Read ``pga``, ``pgv``, ``sa:F[,DAMPING]``, ``pga-alpha[:BLOCK]`` or a two-component IM.
+
+    Two-component IMs (records with x and y): ``pga-gm``, ``pga-rotd50``,
+    ``pga-rotd100``, the same for ``pgv``, and ``sa-gm:F[,DAMPING]``,
+    ``sa-rotd50:F[,DAMPING]``, ``sa-rotd100:F[,DAMPING]``.
+    """
     kind, _, rest = text.strip().partition(":")
     kind = kind.strip().lower()
     if kind not in KINDS:
         raise FreestandError(
             f"{text!r} is not an intensity measure; use pga, pgv, sa:FREQUENCY[,DAMPING] "
-            "(e.g. sa:2.5Hz,5%) or pga-alpha[:BLOCK]",
+            "(e.g. sa:2.5Hz,5%) or pga-alpha[:BLOCK], or for two horizontal components "
+            "pga-gm, pga-rotd50, pga-rotd100, pgv-rotd50, sa-rotd50:FREQUENCY[,DAMPING], ...",
             source=option,
         )
-    if kind == "sa":
+    if kind == "sa" or kind.startswith("sa-"):
         if not rest.strip():
             raise FreestandError(
-                f"{text!r} needs a frequency; e.g. sa:2.5Hz or sa:2.5,5%", source=option
+                f"{text!r} needs a frequency; e.g. {kind}:2.5Hz or {kind}:2.5,5%", source=option
             )
         from freestand.io.records import parse_spectral_target
 
         target = parse_spectral_target(f"1@{rest}", source=option)
-        return IntensityMeasure("sa", frequency=target.frequency, damping=target.damping)
+        return IntensityMeasure(kind, frequency=target.frequency, damping=target.damping)
     if kind == "pga-alpha":
         block = rest.strip() or stack.blocks[-1].name
         names = [b.name for b in stack.blocks]

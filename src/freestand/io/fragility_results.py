@@ -11,6 +11,7 @@ import numpy as np
 
 from freestand.core.sweeps.fragility.analysis import FragilityResult
 from freestand.core.sweeps.fragility.campaign import Campaign
+from freestand.core.sweeps.fragility.intensity import IntensityMeasure
 
 #: How the HCLPF is defined (in the JSON document and the docs).
 HCLPF_DEFINITION = (
@@ -38,6 +39,9 @@ def _record_hash(motion) -> str:
     digest.update(np.ascontiguousarray(motion.horizontal, dtype=float).tobytes())
     if motion.vertical is not None:
         digest.update(np.ascontiguousarray(motion.vertical, dtype=float).tobytes())
+    if getattr(motion, "horizontal_y", None) is not None:  # planar records hash as before
+        digest.update(b"horizontal_y")
+        digest.update(np.ascontiguousarray(motion.horizontal_y, dtype=float).tobytes())
     return digest.hexdigest()
 
 
@@ -157,11 +161,10 @@ def fragility_document(definition: dict, result: FragilityResult, bootstrap: int
 
 def im_label(im: dict) -> str:
     """Axis label of an IM document with its unit, e.g. ``"PGA [m/s^2]"``."""
-    kind = im["kind"]
-    if kind == "sa":
-        name = f"Sa({im['frequency']:g} Hz, {100 * im['damping']:g} %)"
-    elif kind == "pga-alpha":
-        name = f"PGA / (g tan alpha) of {im['block']}"
-    else:
-        name = kind.upper()
-    return f"{name} [{im['unit']}]"
+    measure = IntensityMeasure(
+        im["kind"],
+        frequency=im.get("frequency"),
+        damping=im.get("damping", 0.05),
+        block=im.get("block"),
+    )
+    return f"{measure.describe()} [{im['unit']}]"

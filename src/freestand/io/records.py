@@ -847,14 +847,15 @@ def load_record(
     vertical: str | Path | None = None,
     vertical_positive: str = "up",
     name: str | None = None,
+    horizontal_y: str | Path | None = None,
 ) -> GroundMotion:
-    """Read a record by its file type, with an optional vertical component.
+    """Read a record by its file type, with an optional vertical and second horizontal component.
 
     Parameters
     ----------
     path : str or Path
-        Horizontal record: ``.AT2`` (PEER), ``.V2`` (COSMOS/CSMIP), ``.csv`` (header with units) or
-        any other extension as a single-column file.
+        Horizontal record (x): ``.AT2`` (PEER), ``.V2`` (COSMOS/CSMIP), ``.csv`` (header with
+        units) or any other extension as a single-column file.
     dt : float, optional
         Time step [s]; needed for single-column files only.
     unit : str, optional
@@ -863,7 +864,7 @@ def load_record(
     gravity : float, optional
         g [m/s^2] that the unit g stands for (default 9.81).
     vertical : str or Path, optional
-        A second file with the vertical component (any of the three formats;
+        A second file with the vertical component (any of the formats;
         ``dt`` and ``unit`` apply to it as well). Not allowed when the CSV
         already has a vertical column.
     vertical_positive : str, optional
@@ -871,14 +872,20 @@ def load_record(
         recorded) or ``"down"``. freestand stores downward acceleration.
     name : str, optional
         Record name (default: the file name).
+    horizontal_y : str or Path, optional
+        A file with the second horizontal component, along y (seen from
+        above, x turned 90 degrees counter-clockwise); any of the formats.
+        :func:`freestand.io.pairing.pair_components` finds which files of a
+        station are x, y and vertical from their names or headers.
 
     Returns
     -------
     GroundMotion
-        Horizontal [m/s^2] and, if given, downward vertical [m/s^2]
-        acceleration. Components with different steps or lengths are combined
-        by :func:`freestand.core.motion.ground_motion.combine_components` (finer step,
-        linear interpolation, zeros after the shorter one).
+        Horizontal [m/s^2] and, if given, second horizontal and downward
+        vertical [m/s^2] acceleration. Components with different steps or
+        lengths are combined by
+        :func:`freestand.core.motion.ground_motion.combine_components` (finer
+        step, linear interpolation, zeros after the shorter one).
     """
     path = Path(path)
     sign = _vertical_sign(vertical_positive)
@@ -897,29 +904,51 @@ def load_record(
             "give only one of them",
             source=str(path),
         )
-    if csv_vertical is not None:
+    second = None
+    if horizontal_y is not None:
+        second = _read_single_component(Path(horizontal_y), dt, unit, gravity, "horizontal_y")
+        metadata["horizontal_y_source"] = str(horizontal_y)
+        metadata["horizontal_y_header"] = second.header
+    if csv_vertical is not None and second is None:
         return GroundMotion(
             component.dt, component.acceleration, sign * csv_vertical, record_name, metadata
         )
-    if vertical is None:
+    if vertical is None and csv_vertical is None and second is None:
         return GroundMotion(component.dt, component.acceleration, None, record_name, metadata)
-    vertical_path = Path(vertical)
-    vertical_component, extra = _read_component(vertical_path, dt, unit, gravity, "vertical")
-    if extra is not None:
-        raise FreestandError(
-            "the vertical file has two acceleration columns; give a file with one component",
-            source=str(vertical_path),
-        )
-    metadata["vertical_source"] = str(vertical_path)
-    metadata["vertical_header"] = vertical_component.header
+    down, down_dt = None, None
+    if csv_vertical is not None:
+        down, down_dt = sign * csv_vertical, component.dt
+    elif vertical is not None:
+        vertical_component = _read_single_component(Path(vertical), dt, unit, gravity, "vertical")
+        metadata["vertical_source"] = str(vertical)
+        metadata["vertical_header"] = vertical_component.header
+        down, down_dt = sign * vertical_component.acceleration, vertical_component.dt
     return combine_components(
         component.acceleration,
         component.dt,
-        sign * vertical_component.acceleration,
-        vertical_component.dt,
+        down,
+        down_dt,
+        horizontal_y=None if second is None else second.acceleration,
+        horizontal_y_dt=None if second is None else second.dt,
         name=record_name,
         metadata=metadata,
     )
+
+
+def _read_single_component(path: Path, dt, unit, gravity, what: str) -> RecordComponent:
+    """The one component of a file given for ``what`` (a CSV with two columns is refused)."""
+    component, extra = _read_component(path, dt, unit, gravity, what)
+    if extra is not None:
+        raise FreestandError(
+            f"the {what} file has two acceleration columns; give a file with one component",
+            source=str(path),
+        )
+    return component
+
+
+def v2_channel_count(path: str | Path) -> int:
+    """Number of acceleration blocks (channels) in a ``.V2`` file [-] (0 when none)."""
+    return sum(1 for line in _read_lines(Path(path)) if _is_v2_acceleration_line(line))
 
 
 # -------------------------------------------------------------------- writing
@@ -944,7 +973,7 @@ def write_at2(
     motion : GroundMotion
         The record.
     component : str, optional
-        ``"horizontal"`` or ``"vertical"``; the vertical is written positive
+        ``"horizontal"`` (x), ``"horizontal_y"`` or ``"vertical"``; the vertical is written positive
         upward, as recorded (the sign of freestand's downward value changed).
     title : str, optional
         Header line 1.
@@ -1060,7 +1089,7 @@ def write_csv_record(
     motion : GroundMotion
         The record.
     component : str, optional
-        ``"horizontal"`` or ``"vertical"``; the vertical is written positive
+        ``"horizontal"`` (x), ``"horizontal_y"`` or ``"vertical"``; the vertical is written positive
         upward, as recorded (and as :func:`load_record` expects).
     gravity : float, optional
         g [m/s^2] for the conversion to g.

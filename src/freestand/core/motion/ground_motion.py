@@ -1,7 +1,8 @@
 """Ground-motion records: support accelerations sampled at a uniform time step.
 
-A :class:`GroundMotion` holds the horizontal support acceleration and,
-optionally, the vertical one, sampled at t_i = i dt. Between samples the
+A :class:`GroundMotion` holds the horizontal support acceleration along x and,
+optionally, a second horizontal component along y and the vertical one,
+sampled at t_i = i dt. Between samples the
 acceleration is taken to vary linearly (the piecewise-linear representation
 on which the exact response-spectrum recursion and the sliding solver rest).
 Before t = 0 and after the last sample the support is at rest: the record is
@@ -10,6 +11,10 @@ followed by zero samples, so its last value ramps to zero over one step.
 Sign conventions (the same as :class:`freestand.core.model.Excitation`):
 
 - ``horizontal``: support acceleration along +x [m/s^2];
+- ``horizontal_y``: support acceleration along +y [m/s^2], or None for a
+  record with one horizontal component (every planar analysis uses x only).
+  x, y and z (up) form a right-handed frame: seen from above, y is x turned
+  90 degrees counter-clockwise;
 - ``vertical``: *downward* support acceleration [m/s^2], so that a block of
   mass m on the support has the apparent weight m (g - a_v) (paper section 2).
   Instruments record vertical motion positive upward; the record readers in
@@ -26,6 +31,9 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+
+#: Component names of a record, in the order x, y, vertical (the attribute names).
+COMPONENTS = ("horizontal", "horizontal_y", "vertical")
 
 
 def _frozen_array(values, name: str) -> np.ndarray:
@@ -45,8 +53,8 @@ class GroundMotion:
     dt : float
         Time step [s], positive.
     horizontal : numpy.ndarray
-        Horizontal support acceleration a_h(t_i) [m/s^2] at t_i = i dt, at
-        least two samples, all finite.
+        Horizontal support acceleration a_x(t_i) [m/s^2] along +x at
+        t_i = i dt, at least two samples, all finite.
     vertical : numpy.ndarray or None, optional
         Downward support acceleration a_v(t_i) [m/s^2] (positive down: the
         weight becomes m (g - a_v)), same length as ``horizontal``; ``None``
@@ -55,6 +63,19 @@ class GroundMotion:
         Record name used in labels.
     metadata : dict, optional
         Free-form provenance (source file, header lines, scale factor...).
+    horizontal_y : numpy.ndarray or None, optional
+        Second horizontal support acceleration a_y(t_i) [m/s^2] along +y
+        (keyword only), same length as ``horizontal``; ``None`` (default) for
+        a record with one horizontal component. Seen from above, +y is +x
+        turned 90 degrees counter-clockwise (x, y and z up right-handed).
+        Planar analyses use ``horizontal`` only.
+
+    Notes
+    -----
+    Everything that makes a new record from this one (:meth:`scaled`,
+    :meth:`with_trailing_zeros`, :meth:`rotated`,
+    :func:`combine_components`, the floor motion) treats the three
+    components alike; :meth:`rotated` turns the horizontal pair.
     """
 
     dt: float
@@ -62,6 +83,7 @@ class GroundMotion:
     vertical: np.ndarray | None = None
     name: str = ""
     metadata: dict = field(default_factory=dict, compare=False)
+    horizontal_y: np.ndarray | None = field(default=None, kw_only=True)
 
     def __post_init__(self) -> None:
         dt = float(self.dt)
@@ -84,6 +106,16 @@ class GroundMotion:
             if not np.all(np.isfinite(vertical)):
                 raise ValueError("the vertical acceleration contains non-finite values")
             object.__setattr__(self, "vertical", vertical)
+        if self.horizontal_y is not None:
+            horizontal_y = _frozen_array(self.horizontal_y, "horizontal_y")
+            if horizontal_y.shape != horizontal.shape:
+                raise ValueError(
+                    f"horizontal_y has {horizontal_y.size} samples, horizontal "
+                    f"{horizontal.size}; they must have the same length (see combine_components)"
+                )
+            if not np.all(np.isfinite(horizontal_y)):
+                raise ValueError("the horizontal_y acceleration contains non-finite values")
+            object.__setattr__(self, "horizontal_y", horizontal_y)
 
     # ------------------------------------------------------------------ basics
     @property
@@ -101,21 +133,30 @@ class GroundMotion:
         """Time of the last sample, (n - 1) dt [s]."""
         return (self.n_samples - 1) * self.dt
 
+    @property
+    def components(self) -> tuple[str, ...]:
+        """Names of the components the record has, among :data:`COMPONENTS`."""
+        return tuple(name for name in COMPONENTS if getattr(self, name) is not None)
+
     def component(self, name: str) -> np.ndarray:
-        """The ``"horizontal"`` or ``"vertical"`` acceleration array [m/s^2]."""
-        if name == "horizontal":
-            return self.horizontal
-        if name == "vertical":
-            if self.vertical is None:
-                raise ValueError(f"record {self.name!r} has no vertical component")
-            return self.vertical
-        raise ValueError(f"component must be 'horizontal' or 'vertical', got {name!r}")
+        """The ``"horizontal"``, ``"horizontal_y"`` or ``"vertical"`` acceleration [m/s^2]."""
+        if name not in COMPONENTS:
+            raise ValueError(f"component must be one of {', '.join(COMPONENTS)}, got {name!r}")
+        values = getattr(self, name)
+        if values is None:
+            raise ValueError(f"record {self.name!r} has no {name} component")
+        return values
 
     # ------------------------------------------------------------- peak values
     @property
     def peak_horizontal(self) -> float:
         """Peak horizontal ground acceleration max |a_h| [m/s^2]."""
         return float(np.max(np.abs(self.horizontal)))
+
+    @property
+    def peak_horizontal_y(self) -> float | None:
+        """Peak acceleration along y, max |a_y| [m/s^2], None without a y component."""
+        return None if self.horizontal_y is None else float(np.max(np.abs(self.horizontal_y)))
 
     @property
     def peak_vertical(self) -> float | None:
@@ -173,16 +214,27 @@ class GroundMotion:
         """
         return self._at(self.horizontal, t)
 
+    def horizontal_y_at(self, t) -> np.ndarray | float:
+        """Acceleration along y [m/s^2] at times ``t`` [s] (linear interpolation).
+
+        Zero without a y component, before t = 0 and (after a one-step ramp)
+        after the record.
+        """
+        return self._at_or_zero(self.horizontal_y, t)
+
     def vertical_at(self, t) -> np.ndarray | float:
         """Downward acceleration [m/s^2] at times ``t`` [s] (linear interpolation).
 
         Zero without a vertical component, before t = 0 and (after a one-step
         ramp) after the record.
         """
-        if self.vertical is None:
+        return self._at_or_zero(self.vertical, t)
+
+    def _at_or_zero(self, values: np.ndarray | None, t) -> np.ndarray | float:
+        if values is None:
             t_arr = np.zeros_like(np.asarray(t, dtype=float))
             return float(t_arr) if np.ndim(t) == 0 else t_arr
-        return self._at(self.vertical, t)
+        return self._at(values, t)
 
     # ------------------------------------------------------------ new records
     def _replace(self, **changes) -> GroundMotion:
@@ -190,34 +242,39 @@ class GroundMotion:
             "dt": self.dt,
             "horizontal": self.horizontal,
             "vertical": self.vertical,
+            "horizontal_y": self.horizontal_y,
             "name": self.name,
             "metadata": dict(self.metadata),
         }
         values.update(changes)
         return GroundMotion(**values)
 
+    def _each_component(self, function) -> dict:
+        """``{name: function(values)}`` for every component (None stays None)."""
+        return {
+            name: None if getattr(self, name) is None else function(getattr(self, name))
+            for name in COMPONENTS
+        }
+
     def scaled(self, factor: float) -> GroundMotion:
-        """Both components multiplied by ``factor`` [-]; metadata records the factor."""
+        """Every component multiplied by ``factor`` [-]; metadata records the factor."""
         if not math.isfinite(factor):
             raise ValueError(f"scale factor must be finite, got {factor!r}")
         metadata = dict(self.metadata)
         metadata["scale_factor"] = metadata.get("scale_factor", 1.0) * factor
-        return self._replace(
-            horizontal=self.horizontal * factor,
-            vertical=None if self.vertical is None else self.vertical * factor,
-            metadata=metadata,
-        )
+        return self._replace(**self._each_component(lambda a: a * factor), metadata=metadata)
 
     def scaled_to_peak(self, target: float, component: str = "horizontal") -> GroundMotion:
-        """Scale both components so that the peak of ``component`` is ``target`` [m/s^2].
+        """Scale every component so that the peak of ``component`` is ``target`` [m/s^2].
 
         Parameters
         ----------
         target : float
             Peak ground acceleration wanted [m/s^2], non-negative.
         component : str, optional
-            ``"horizontal"`` (default) or ``"vertical"``: the component whose peak
-            is matched; the other is scaled by the same factor.
+            ``"horizontal"`` (default), ``"horizontal_y"`` or ``"vertical"``: the
+            component whose peak is matched; the others are scaled by the same
+            factor.
         """
         if not (target >= 0 and math.isfinite(target)):
             raise ValueError(f"target peak must be non-negative and finite, got {target!r}")
@@ -233,7 +290,7 @@ class GroundMotion:
         damping: float = 0.05,
         component: str = "horizontal",
     ) -> GroundMotion:
-        """Scale both components so that the pseudo-acceleration at one frequency is ``target``.
+        """Scale every component so that the pseudo-acceleration at one frequency is ``target``.
 
         Parameters
         ----------
@@ -269,17 +326,50 @@ class GroundMotion:
         """The same record with the downward acceleration ``vertical`` [m/s^2] (or none)."""
         return self._replace(vertical=vertical)
 
+    def with_horizontal_y(self, horizontal_y: np.ndarray | None) -> GroundMotion:
+        """The same record with the acceleration along y ``horizontal_y`` [m/s^2] (or none)."""
+        return self._replace(horizontal_y=horizontal_y)
+
     def with_trailing_zeros(self, total_duration: float) -> GroundMotion:
         """The record followed by zero samples up to ``total_duration`` [s] (if longer)."""
         n_total = int(round(total_duration / self.dt)) + 1
         extra = max(0, n_total - self.n_samples)
         if extra == 0:
             return self
+        return self._replace(**self._each_component(lambda a: np.concatenate([a, np.zeros(extra)])))
+
+    def rotated(self, angle: float) -> GroundMotion:
+        """The record in horizontal axes turned by ``angle`` [rad] about the vertical.
+
+        Parameters
+        ----------
+        angle : float
+            Angle theta [rad] from the record's x axis to the new x' axis,
+            counter-clockwise seen from above (towards +y).
+
+        Returns
+        -------
+        GroundMotion
+            The same ground motion along the turned axes:
+
+                a_x'(t) =  a_x(t) cos theta + a_y(t) sin theta,
+                a_y'(t) = -a_x(t) sin theta + a_y(t) cos theta,
+
+            the vertical unchanged. a_x' is the rotated time series of Boore
+            (2010, BSSA 100(4), 1830-1835, eq. 1). A record with one horizontal
+            component is taken as moving along x only (a_y = 0): its rotation
+            has both components. ``metadata["rotation"]`` accumulates the
+            angle [rad]; ``rotated(a).rotated(b)`` equals ``rotated(a + b)``.
+        """
+        if not math.isfinite(angle):
+            raise ValueError(f"angle must be finite, got {angle!r}")
+        cos, sin = math.cos(angle), math.sin(angle)
+        x = self.horizontal
+        y = np.zeros_like(x) if self.horizontal_y is None else self.horizontal_y
+        metadata = dict(self.metadata)
+        metadata["rotation"] = metadata.get("rotation", 0.0) + float(angle)
         return self._replace(
-            horizontal=np.concatenate([self.horizontal, np.zeros(extra)]),
-            vertical=None
-            if self.vertical is None
-            else np.concatenate([self.vertical, np.zeros(extra)]),
+            horizontal=cos * x + sin * y, horizontal_y=-sin * x + cos * y, metadata=metadata
         )
 
 
@@ -299,24 +389,30 @@ def resample(acceleration: np.ndarray, dt: float, new_dt: float) -> np.ndarray:
 def combine_components(
     horizontal: np.ndarray,
     horizontal_dt: float,
-    vertical: np.ndarray,
-    vertical_dt: float,
+    vertical: np.ndarray | None = None,
+    vertical_dt: float | None = None,
     *,
+    horizontal_y: np.ndarray | None = None,
+    horizontal_y_dt: float | None = None,
     name: str = "",
     metadata: dict | None = None,
 ) -> GroundMotion:
-    """One record from a horizontal and a vertical component sampled separately.
+    """One record from components sampled separately (x, and y and/or vertical).
 
     Parameters
     ----------
     horizontal : numpy.ndarray
-        Horizontal acceleration [m/s^2] at steps of ``horizontal_dt`` [s].
+        Acceleration along x [m/s^2] at steps of ``horizontal_dt`` [s].
     horizontal_dt : float
         Its time step [s].
-    vertical : numpy.ndarray
+    vertical : numpy.ndarray, optional
         Downward acceleration [m/s^2] at steps of ``vertical_dt`` [s].
-    vertical_dt : float
-        Its time step [s].
+    vertical_dt : float, optional
+        Its time step [s] (required with ``vertical``).
+    horizontal_y : numpy.ndarray, optional
+        Acceleration along y [m/s^2] at steps of ``horizontal_y_dt`` [s].
+    horizontal_y_dt : float, optional
+        Its time step [s] (required with ``horizontal_y``).
     name : str, optional
         Name of the combined record.
     metadata : dict, optional
@@ -325,31 +421,44 @@ def combine_components(
     Returns
     -------
     GroundMotion
-        Rule: the common step is the smaller of the two; a component with a
-        coarser step is linearly interpolated onto it (exact when its step is
-        a whole multiple of the finer one); the shorter component is followed
-        by zeros (support at rest) up to the length of the longer one.
+        Rule: the common step is the smallest; a component with a coarser
+        step is linearly interpolated onto it (exact when its step is a whole
+        multiple of the finer one); the shorter components are followed by
+        zeros (support at rest) up to the length of the longest one.
     """
-    common_dt = min(horizontal_dt, vertical_dt)
+    given = [("horizontal", horizontal, horizontal_dt)]
+    for label, values, step in (
+        ("horizontal_y", horizontal_y, horizontal_y_dt),
+        ("vertical", vertical, vertical_dt),
+    ):
+        if values is not None:
+            if step is None:
+                raise ValueError(f"the {label} component needs its time step")
+            given.append((label, values, step))
+    common_dt = min(step for _, _, step in given)
     rule = []
-    h = np.asarray(horizontal, dtype=float)
-    v = np.asarray(vertical, dtype=float)
-    if not math.isclose(horizontal_dt, common_dt, rel_tol=1e-9):
-        h = resample(h, horizontal_dt, common_dt)
-        rule.append(f"horizontal resampled from dt={horizontal_dt:g} s to {common_dt:g} s")
-    if not math.isclose(vertical_dt, common_dt, rel_tol=1e-9):
-        v = resample(v, vertical_dt, common_dt)
-        rule.append(f"vertical resampled from dt={vertical_dt:g} s to {common_dt:g} s")
-    n = max(h.size, v.size)
-    if h.size < n:
-        rule.append(f"horizontal padded with {n - h.size} zeros")
-        h = np.concatenate([h, np.zeros(n - h.size)])
-    if v.size < n:
-        rule.append(f"vertical padded with {n - v.size} zeros")
-        v = np.concatenate([v, np.zeros(n - v.size)])
+    arrays = {}
+    for label, values, step in given:
+        array = np.asarray(values, dtype=float)
+        if not math.isclose(step, common_dt, rel_tol=1e-9):
+            array = resample(array, step, common_dt)
+            rule.append(f"{label} resampled from dt={step:g} s to {common_dt:g} s")
+        arrays[label] = array
+    n = max(array.size for array in arrays.values())
+    for label, array in arrays.items():
+        if array.size < n:
+            rule.append(f"{label} padded with {n - array.size} zeros")
+            arrays[label] = np.concatenate([array, np.zeros(n - array.size)])
     metadata = dict(metadata or {})
     metadata["combination"] = "; ".join(rule) if rule else "same step and length"
-    return GroundMotion(common_dt, h, v, name=name, metadata=metadata)
+    return GroundMotion(
+        common_dt,
+        arrays["horizontal"],
+        arrays.get("vertical"),
+        name=name,
+        metadata=metadata,
+        horizontal_y=arrays.get("horizontal_y"),
+    )
 
 
 # ---------------------------------------------------------------- pulses

@@ -537,6 +537,10 @@ def _check_damping(damping: float) -> None:
         raise ValueError(f"damping ratio must satisfy 0 <= damping < 1, got {damping!r}")
 
 
+#: Components of a record a spectrum can be taken of (x, y, vertical).
+_COMPONENTS = ("horizontal", "horizontal_y", "vertical")
+
+
 def _is_record(value) -> bool:
     """A record in the sense of :class:`freestand.core.motion.ground_motion.GroundMotion`.
 
@@ -551,14 +555,13 @@ def _record_arrays(motion_or_array, dt, component):
         if dt is not None and not math.isclose(dt, motion_or_array.dt, rel_tol=1e-12):
             raise ValueError(f"dt={dt!r} differs from the motion's dt={motion_or_array.dt!r}")
         motion = motion_or_array
-        if component == "horizontal":
-            acceleration = motion.horizontal
-        elif component == "vertical":
-            if motion.vertical is None:
-                raise ValueError(f"motion {motion.name!r} has no vertical component")
-            acceleration = motion.vertical
-        else:
-            raise ValueError(f"component must be 'horizontal' or 'vertical', got {component!r}")
+        if component not in _COMPONENTS:
+            raise ValueError(
+                f"component must be one of {', '.join(_COMPONENTS)}, got {component!r}"
+            )
+        acceleration = getattr(motion, component, None)
+        if acceleration is None:
+            raise ValueError(f"motion {motion.name!r} has no {component} component")
         return np.ascontiguousarray(acceleration, dtype=float), float(motion.dt), motion.name
     if dt is None:
         raise ValueError("dt is required when the record is given as an array")
@@ -602,7 +605,8 @@ def spectral_response(
     damping : float, optional
         Damping ratio zeta [-], ``0 <= zeta < 1`` (default 0.05).
     component : str, optional
-        ``"horizontal"`` or ``"vertical"`` component of a GroundMotion.
+        ``"horizontal"`` (x), ``"horizontal_y"`` or ``"vertical"`` component of
+        a GroundMotion.
     min_steps_per_period : int, optional
         Each record step is split so that an oscillator period spans at
         least this many sub-steps [-] (default 20).
@@ -671,7 +675,8 @@ def response_spectrum(
     damping : float, optional
         Damping ratio zeta [-], ``0 <= zeta < 1`` (default 0.05).
     component : str, optional
-        ``"horizontal"`` or ``"vertical"``; also the spectrum's direction.
+        ``"horizontal"`` (x), ``"horizontal_y"`` or ``"vertical"``; also the
+        spectrum's direction (``"horizontal"`` for either horizontal component).
     min_steps_per_period : int, optional
         Minimum sub-steps per oscillator period [-] (default 20).
     free_vibration : bool, optional
@@ -711,7 +716,7 @@ def response_spectrum(
         frequency=response.frequency,
         acceleration=response.pseudo_acceleration,
         damping=float(damping),
-        direction=component,
+        direction="vertical" if component == "vertical" else "horizontal",
         label=label,
         metadata={
             "source": "record",
@@ -747,7 +752,8 @@ def oscillator_response(
     dt : float, optional
         Time step [s]; required with an array.
     component : str, optional
-        ``"horizontal"`` or ``"vertical"`` component of a GroundMotion.
+        ``"horizontal"`` (x), ``"horizontal_y"`` or ``"vertical"`` component of
+        a GroundMotion.
 
     Returns
     -------
@@ -802,7 +808,9 @@ def floor_motion(
     motion : GroundMotion
         The ground record [m/s^2].
     frequency : float
-        Natural frequency of the structure's horizontal mode f [Hz], positive.
+        Natural frequency of the structure's horizontal mode f [Hz], positive;
+        a second horizontal component (y) is filtered by a mode of the same
+        frequency and damping.
     damping : float, optional
         Its damping ratio zeta [-] (default 0.05).
     vertical_frequency : float, optional
@@ -820,6 +828,11 @@ def floor_motion(
         (``with_trailing_zeros``) first to keep the structure's free vibration.
     """
     horizontal = oscillator_response(motion, frequency, damping, component="horizontal")
+    horizontal_y = None
+    if getattr(motion, "horizontal_y", None) is not None:
+        horizontal_y = oscillator_response(
+            motion, frequency, damping, component="horizontal_y"
+        ).absolute_acceleration
     vertical = motion.vertical
     note = {"frequency": float(frequency), "damping": float(damping)}
     if vertical_frequency is not None and motion.vertical is not None:
@@ -833,6 +846,7 @@ def floor_motion(
     name = f"{motion.name} floor {frequency:g} Hz {100 * damping:g} %"
     return motion._replace(
         horizontal=horizontal.absolute_acceleration,
+        horizontal_y=horizontal_y,
         vertical=vertical,
         name=name.strip(),
         metadata=metadata,

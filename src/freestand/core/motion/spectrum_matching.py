@@ -486,7 +486,7 @@ class SuiteComponent:
     Attributes
     ----------
     direction : str
-        ``"horizontal"`` or ``"vertical"``.
+        The component: ``"horizontal"`` (x), ``"horizontal_y"`` or ``"vertical"``.
     target : Spectrum
         The target spectrum.
     records : tuple of MatchedRecord
@@ -521,20 +521,25 @@ class SuiteResult:
     Attributes
     ----------
     horizontal : SuiteComponent
+        The x components.
     vertical : SuiteComponent or None
     dt : float
         Time step [s].
     seed : int
         The seed the suite was generated from.
     max_correlation : float
-        Largest |correlation coefficient| of any two records (all components) [-].
+        Largest |correlation coefficient| of any two time histories of the
+        suite (every component of every record) [-].
     max_correlation_pair : tuple of str
-        The pair where it occurs, as ``("3H", "7H")``.
+        The pair where it occurs, as ``("3H", "7H")`` (``"3X"``, ``"3Y"``,
+        ``"3V"`` in a suite with two horizontal components).
     criteria : AcceptanceCriteria
     status : str
         ``"accepted"`` or ``"failed"``.
     failures : tuple of str
         Every failed check, naming the record and why.
+    horizontal_y : SuiteComponent or None
+        The y components (None for a suite with one horizontal component).
     """
 
     horizontal: SuiteComponent
@@ -546,11 +551,48 @@ class SuiteResult:
     criteria: AcceptanceCriteria
     status: str
     failures: tuple[str, ...] = field(default=())
+    horizontal_y: SuiteComponent | None = None
 
     @property
     def count(self) -> int:
         """Number of records [-]."""
         return len(self.horizontal.records)
+
+    @property
+    def components(self) -> tuple[SuiteComponent, ...]:
+        """The suite's components in the order x, y, vertical (those it has)."""
+        return tuple(
+            c for c in (self.horizontal, self.horizontal_y, self.vertical) if c is not None
+        )
+
+    def component_correlations(self) -> list[dict]:
+        """Independence of each record's components (US NRC SRP 3.7.1).
+
+        Returns
+        -------
+        list of dict
+            Per record: ``pairs``, the |correlation coefficient| [-] of every
+            pair of its components (keys such as ``"horizontal-vertical"``),
+            and ``max``, the largest (None for a record of one component).
+            The suite passes when every one is below
+            ``criteria.max_correlation``; ``max_correlation`` (any two time
+            histories of the suite) bounds them all.
+        """
+        out = []
+        for index in range(self.count):
+            histories = [(c.direction, c.records[index].acceleration) for c in self.components]
+            pairs = {}
+            for i, (first, a) in enumerate(histories):
+                for second, b in histories[i + 1 :]:
+                    pairs[f"{first}-{second}"] = float(abs(correlation_matrix([a, b])[0, 1]))
+            out.append({"pairs": pairs, "max": max(pairs.values()) if pairs else None})
+        return out
+
+
+#: Seed-stream index of each component: record k, component c draws from
+#: SeedSequence([seed, k, c, attempt]); y comes third so that a suite without
+#: it draws exactly as before.
+COMPONENT_STREAMS = {"horizontal": 0, "vertical": 1, "horizontal_y": 2}
 
 
 def _rng(seed: int, record: int, component: int, attempt: int) -> np.random.Generator:
@@ -570,7 +612,8 @@ def _one_record(
     for attempt in range(start_attempt, start_attempt + settings.max_attempts):
         attempts += 1
         rng = _rng(seed, index, component, attempt)
-        parameters = draw_seed_parameters(rng, (n - 1) * dt, direction=direction)
+        kind = "vertical" if direction == "vertical" else "horizontal"
+        parameters = draw_seed_parameters(rng, (n - 1) * dt, direction=kind)
         raw = seed_acceleration(parameters, n, dt, rng)
         weight = parameters.envelope(np.arange(n) * dt)
         a, psa, psa_record, check = match_record(
@@ -675,6 +718,7 @@ def generate_suite(
     dt: float = 0.005,
     seed: int = 0,
     vertical_target: Spectrum | None = None,
+    horizontal_y_target: Spectrum | None = None,
     criteria: AcceptanceCriteria | None = None,
     settings: MatchSettings | None = None,
     progress=None,
@@ -684,7 +728,8 @@ def generate_suite(
     Parameters
     ----------
     target : Spectrum
-        Horizontal target pseudo-acceleration spectrum [m/s^2] at its damping.
+        Horizontal target pseudo-acceleration spectrum [m/s^2] at its damping
+        (the x components).
     count : int
         Number of records [-], at least 1.
     duration : float
@@ -693,10 +738,16 @@ def generate_suite(
         Time step [s] (default 0.005 s, 200 samples per second).
     seed : int, optional
         Suite seed; record k, component c, attempt j draw from
-        ``SeedSequence([seed, k, c, j])``, so the suite is reproducible and
-        its records independent.
+        ``SeedSequence([seed, k, c, j])`` with c = 0 for x, 1 for the
+        vertical and 2 for y (:data:`COMPONENT_STREAMS`), so the suite is
+        reproducible, its components independent, and a suite without y the
+        same as before y existed.
     vertical_target : Spectrum, optional
         Target for vertical components (matched the same way, independent seeds).
+    horizontal_y_target : Spectrum, optional
+        Target for a second horizontal component along y (e.g. ``target``
+        itself), matched the same way from independent seeds: a suite of
+        three-component records (US NRC SRP 3.7.1).
     criteria, settings : optional
         Acceptance criteria and matching settings.
     progress : callable, optional
@@ -708,8 +759,9 @@ def generate_suite(
         Records, per-record and suite checks, and the list of failures. A
         record that misses its checks is regenerated from new seeds (up to
         ``settings.max_attempts``); a record too correlated with an earlier
-        one is regenerated as well; what still fails is listed in
-        ``failures``, never dropped.
+        one (any component of any record, so also the components of one
+        record with each other) is regenerated as well; what still fails is
+        listed in ``failures``, never dropped.
     """
     criteria = criteria or AcceptanceCriteria()
     settings = settings or MatchSettings()
@@ -725,6 +777,8 @@ def generate_suite(
         )
     frequencies = criteria.frequencies()
     components = [("horizontal", target)]
+    if horizontal_y_target is not None:
+        components.append(("horizontal_y", horizontal_y_target))
     if vertical_target is not None:
         components.append(("vertical", vertical_target))
     plans = {}
@@ -735,14 +789,14 @@ def generate_suite(
     accepted_histories: list[np.ndarray] = []
     failures: list[str] = []
     for index in range(count):
-        for c, (direction, spectrum) in enumerate(components):
+        for direction, spectrum in components:
             start = 0
             record = None
             best_key = None
             for _ in range(3):  # regenerate if too correlated with earlier records
                 candidate, start = _one_record(
-                    index, c, direction, n, dt, spectrum, criteria, settings,
-                    plans[spectrum.damping], seed, start,
+                    index, COMPONENT_STREAMS[direction], direction, n, dt, spectrum, criteria,
+                    settings, plans[spectrum.damping], seed, start,
                 )  # fmt: skip
                 worst = 0.0
                 if accepted_histories:
@@ -760,14 +814,18 @@ def generate_suite(
     for direction, spectrum in components:
         results[direction] = _refine_mean(
             results[direction], spectrum, criteria, settings, plans[spectrum.damping], n, dt,
-            component=[d for d, _ in components].index(direction), direction=direction,
-            seed=seed,
+            component=COMPONENT_STREAMS[direction], direction=direction, seed=seed,
         )  # fmt: skip
+    letters = (
+        {"horizontal": "X", "horizontal_y": "Y", "vertical": "V"}
+        if horizontal_y_target is not None
+        else {"horizontal": "H", "vertical": "V"}
+    )
     labels = []
     histories = []
     for index in range(count):
         for direction, _ in components:
-            labels.append(f"{index + 1}{direction[0].upper()}")
+            labels.append(f"{index + 1}{letters[direction]}")
             histories.append(results[direction][index].acceleration)
     max_corr, pair = 0.0, ("", "")
     if len(histories) > 1:
@@ -812,4 +870,5 @@ def generate_suite(
         criteria=criteria,
         status="failed" if failures else "accepted",
         failures=tuple(failures),
+        horizontal_y=suite_components.get("horizontal_y"),
     )
