@@ -47,15 +47,13 @@ numpydoc_show_class_members = False
 numpydoc_xref_param_type = False
 numpydoc_validation_checks: set[str] = set()
 
-# --- the gallery, executed at every build
-from gallery_scraper import figure_scraper, reset_figures  # noqa: E402
-
+# --- the gallery, executed at every build (callables by name: the configuration stays cacheable)
 sphinx_gallery_conf = {
     "examples_dirs": [str(HERE.parent / "examples" / "gallery")],
     "gallery_dirs": ["gallery"],
     "filename_pattern": r"/plot_",
-    "image_scrapers": (figure_scraper,),
-    "reset_modules": (reset_figures,),
+    "image_scrapers": ("gallery_scraper.figure_scraper",),
+    "reset_modules": ("gallery_scraper.reset_figures",),
     "download_all_examples": False,
     "remove_config_comments": True,
     "abort_on_example_error": True,

@@ -103,7 +103,7 @@ class RockingBlock:
     Notes
     -----
     About a pivot P with centre of gravity at r = S - P = (b, h) in the rest
-    position: R = |r|, alpha = atan(b / h), I_O = I_S + m R^2 (parallel-axis
+    position: R = sqrt(b^2 + h^2), alpha = atan(b / h), I_O = I_S + m R^2 (parallel-axis
     rule), p = sqrt(m (g - a_v) R / I_O) (Housner 1963; Zhang and Makris 2001,
     eq. 3).
     """
