@@ -108,17 +108,25 @@ def mode_map_figure(
                 colors="none",
                 hatches=["////"],
             )
-        for point in points[panel] if panel < len(points) else ():
+        for number, point in enumerate(points[panel] if panel < len(points) else ()):
             name, x, y = point[:3]
             label = point[3] if len(point) > 3 else m.label_at(x, y)
             ax.plot(x, y, marker="o", color="black", markersize=6, markerfacecolor="white")
+            # labels stay in the panel (to the left of a point in its right half) and apart
+            # (every other one below its point)
+            right = x > 0.5 * (m.x_values[0] + m.x_values[-1])
+            below = number % 2 == 1
             ax.annotate(
-                f"{name} ({label})",
+                f"{name}:\n{label}",
                 (x, y),
                 textcoords="offset points",
-                xytext=(6, 6),
+                xytext=(-6 if right else 6, -6 if below else 6),
+                ha="right" if right else "left",
+                va="top" if below else "bottom",
                 fontsize=7,
-            )
+                bbox={"boxstyle": "round,pad=0.15", "facecolor": "white", "alpha": 0.7,
+                      "linewidth": 0},
+            )  # fmt: skip
         sense = "+" if m.sense > 0 else "-"
         ax.set_title(f"{m.configuration}, {m.excitation}, sense {sense}", fontsize=10)
         ax.set_xlabel(m.x.title)
