@@ -26,6 +26,7 @@ from freestand.core.sweeps.fragility.intensity import KINDS, IntensityMeasure
 from freestand.core.sweeps.fragility.outcomes import KINDS as OUTCOME_KINDS
 from freestand.core.sweeps.fragility.outcomes import Outcome
 from freestand.errors import FreestandError
+from freestand.io.table_keys import TableKey
 from freestand.io.units import to_si
 
 _QUANTITY = {"m/s^2": "acceleration", "-": "dimensionless"}
@@ -33,18 +34,23 @@ _QUANTITY = {"m/s^2": "acceleration", "-": "dimensionless"}
 
 #: The keys of a model file's ``[fragility]`` table (the options of ``freestand fragility``).
 FRAGILITY_KEYS = {
-    "suite": "the record suite file (required)",
-    "configuration": "the configuration (default: the first)",
-    "im": 'the intensity measure, as --im (default "pga")',
-    "levels": 'the levels, as --levels, e.g. "1:8:15" (or cloud = true)',
-    "cloud": "run the records unscaled (default false)",
-    "outcomes": "the outcomes, as --outcome (default: per configuration)",
-    "vary": "uncertain inputs, as --vary",
-    "samples": "samples per record and level (default 1; 10 with vary)",
-    "both_polarities": "also run every record negated (default false)",
-    "seed": "seed of the inputs and the bootstrap (default 0)",
-    "bootstrap": "bootstrap replicates (default 1000)",
-    "free_time": "cap on the time simulated after a record [s] (default 10)",
+    "suite": TableKey("the record suite file, relative to the model file", required=True),
+    "configuration": TableKey("the configuration", shown_default="the first"),
+    "im": TableKey("the intensity measure, as --im", default="pga"),
+    "levels": TableKey(
+        'the levels, as --levels, e.g. "1:8:15" (IM unit); or cloud = true',
+        shown_default="required without cloud",
+    ),  # fmt: skip
+    "cloud": TableKey("run the records unscaled (cloud analysis)", default=False),
+    "outcomes": TableKey(
+        "the outcomes, as --outcome", default=(), shown_default="per configuration"
+    ),  # fmt: skip
+    "vary": TableKey("uncertain inputs, as --vary", default=(), shown_default="none"),
+    "samples": TableKey("samples per record and level", "-", shown_default="1; 10 with vary"),
+    "both_polarities": TableKey("also run every record negated", default=False),
+    "seed": TableKey("seed of the inputs and of the bootstrap", "-", default=0),
+    "bootstrap": TableKey("bootstrap replicates", "-", default=1000),
+    "free_time": TableKey("cap on the time simulated after a record", "s", default=10.0),
 }
 
 #: Most samples per record and level: with 1000 levels and a suite of 30 records, 3e8

@@ -11,13 +11,16 @@ to the schema appears in the reference without an edit here. For each key:
   it for the SI unit of every kind of quantity freestand converts
   (:data:`freestand.io.units.QUANTITIES`), and the unit it accepts as 1 is
   the key's (a plain number field is dimensionless, a text field has none);
-- what it is: :data:`DESCRIPTIONS` where written, else the hint the loader
-  gives when the key is missing.
+- what it is: :data:`DESCRIPTIONS` where written (the bodies of a
+  ``configuration.paper`` table take the block's, :data:`ALIASES`), else the
+  hint the loader gives when the key is missing.
 
-The tables validated outside the pydantic models follow from their own
-definitions: ``[beam]`` from :data:`freestand.io.beam_section.BEAM_FIELDS`,
-``[[spectrum]]`` from :data:`freestand.io.spectrum_input.SPECTRUM_KEYS`,
-``[fragility]`` from :data:`freestand.io.fragility_options.FRAGILITY_KEYS`.
+The tables validated outside the pydantic models follow from the tables
+their readers take their keys, units and defaults from: ``[beam]`` from
+:data:`freestand.io.beam_section.BEAM_FIELDS`, ``[[spectrum]]`` from
+:data:`freestand.io.spectrum_input.COMMON_SPECTRUM_KEYS` and
+:data:`~freestand.io.spectrum_input.SPECTRUM_KEYS`, ``[fragility]`` from
+:data:`freestand.io.fragility_options.FRAGILITY_KEYS`.
 """
 
 from __future__ import annotations
@@ -79,16 +82,21 @@ DESCRIPTIONS = {
 UNITS = {"gravity": "m/s^2"}
 
 
+#: Paths whose keys are described as those of another (the paper notation's two bodies are
+#: blocks).
+ALIASES = {
+    "configuration.paper.lower.": "configuration.block.",
+    "configuration.paper.upper.": "configuration.block.",
+}
+
+
 def _description(path: str) -> str:
-    """:data:`DESCRIPTIONS` of ``path``, else of the longest written path ending like it."""
+    """:data:`DESCRIPTIONS` of ``path`` or of the path it is an alias of ('' if none)."""
     if path in DESCRIPTIONS:
         return DESCRIPTIONS[path]
-    parts = path.split(".")
-    for start in range(1, len(parts)):
-        tail = "." + ".".join(parts[start:])
-        for known, text in DESCRIPTIONS.items():
-            if known.endswith(tail):
-                return text
+    for alias, original in ALIASES.items():
+        if path.startswith(alias):
+            return DESCRIPTIONS.get(original + path[len(alias) :], "")
     return ""
 
 
@@ -227,66 +235,64 @@ def _table(rows: list[tuple[str, ...]], header: tuple[str, ...]) -> str:
     return "\n".join(lines)
 
 
+def _table_key_rows(prefix: str, keys: dict) -> list[tuple[str, ...]]:
+    """Rows of the reference for the :class:`~freestand.io.table_keys.TableKey` of a table."""
+    return [
+        (f"`{prefix}{name}`", key.default_text(), key.unit, key.what) for name, key in keys.items()
+    ]
+
+
+INTRODUCTION = (
+    "Generated from the validation schema (`freestand.io.model_file`) and the readers' key "
+    "tables when the site is built: every key the loader accepts, with its unit and default. "
+    'Bare numbers are in the unit given; a text with a unit (`"2.70 m/s^2"`, '
+    '`"0.275 g"`, `"16.6 t"`, `"98 cm"`) is converted at load time, `g` meaning the '
+    "model's gravity. An unknown key is an error naming it. Keys are given by their TOML "
+    "path: `configuration.block.base.left` is `left` in the `base` table of a "
+    "`[[configuration.block]]`."
+)
+
+
 def model_file_reference() -> str:
     """The model-file reference as Markdown (MyST): every key, its unit and default."""
     from freestand.io.beam_section import BEAM_FIELDS
     from freestand.io.fragility_options import FRAGILITY_KEYS
-    from freestand.io.spectrum_input import SPECTRUM_KEYS
+    from freestand.io.spectrum_input import COMMON_SPECTRUM_KEYS, SPECTRUM_KEYS
     from freestand.io.units import QUANTITIES
 
-    keys = schema_keys()
     rows = [
-        (
-            f"`{key.path}`",
-            key.kind,
-            "required" if key.required else key.default,
-            key.unit,
-            key.description,
-        )
-        for key in keys
-    ]
+        (f"`{key.path}`", key.kind, "required" if key.required else key.default, key.unit,
+         key.description)
+        for key in schema_keys()
+    ]  # fmt: skip
     beam = [
-        (
-            f"`beam.{name}`",
-            "number or text with unit",
-            "required" if required else "none",
-            QUANTITIES[quantity][0].replace("*", " ") or "-",
-            f"{what} ({rule})",
-        )
+        (f"`beam.{name}`", "number or text with unit", "required" if required else "none",
+         QUANTITIES[quantity][0].replace("*", " ") or "-", f"{what} ({rule})")
         for name, (quantity, required, rule, what) in BEAM_FIELDS.items()
-    ]
+    ]  # fmt: skip
     beam.append(
         ("`beam.parking`", "array of 2", "required", "m",
-         "range of the cart's centre from the left support")  # fmt: skip
-    )
-    spectra = [
-        (f'`kind = "{kind}"`', ", ".join(f"`{k}`" for k in sorted(allowed)))
-        for kind, allowed in SPECTRUM_KEYS.items()
-    ]
-    fragility = [(f"`fragility.{key}`", what) for key, what in FRAGILITY_KEYS.items()]
+         "range of the cart's centre from the left support")
+    )  # fmt: skip
     header = ("key", "type", "default", "unit", "what it is")
-    return "\n\n".join(
-        [
-            "# Model file reference",
-            "Generated from the validation schema (`freestand.io.model_file`) when the site "
-            "is built: every key the loader accepts, with its unit and default. Bare numbers "
-            "are in the unit given; a text with a unit (`\"2.70 m/s^2\"`, `\"0.275 g\"`, "
-            '`"16.6 t"`, `"98 cm"`) is converted at load time, `g` meaning the model\'s '
-            "gravity. An unknown key is an error naming it. Keys are given by their TOML "
-            "path: `configuration.block.base.left` is `left` in the `base` table of a "
-            "`[[configuration.block]]`.",
-            "## Model, excitations and configurations",
-            _table(rows, header),
-            "## `[beam]`: the bridge under the parked cart (paper section 6)",
-            _table(beam, header),
-            "## `[[spectrum]]`: response spectra",
-            "Every spectrum has `name`, `kind`, `direction` (`\"horizontal\"` or "
-            '`"vertical"`, default horizontal) and `damping` (0.05 or `"5 %"`, default 5 %); '
-            "each kind takes these keys besides:",
-            _table(spectra, ("kind", "keys")),
-            "## `[fragility]`: a fragility campaign for the report",
-            "The options of `freestand fragility` (see the fragility guide); paths relative "
-            "to the model file.",
-            _table(fragility, ("key", "what it is")),
-        ]
-    ) + "\n"
+    short = ("key", "default", "unit", "what it is")
+    parts = [
+        "# Model file reference",
+        INTRODUCTION,
+        "## Model, excitations and configurations",
+        _table(rows, header),
+        "## `[beam]`: the bridge under the parked cart (paper section 6)",
+        _table(beam, header),
+        "## `[[spectrum]]`: response spectra",
+        "Every spectrum takes these keys (`--spectrum` takes `direction` and `damping`):",
+        _table(_table_key_rows("", COMMON_SPECTRUM_KEYS), short),
+    ]
+    for kind, keys in SPECTRUM_KEYS.items():
+        parts += [f'### `kind = "{kind}"`', _table(_table_key_rows("", keys), short)]
+    parts += [
+        "## `[fragility]`: a fragility campaign for the report",
+        "The options of `freestand fragility` (see the fragility guide); paths relative to "
+        "the model file.",
+        _table(_table_key_rows("fragility.", FRAGILITY_KEYS), short),
+    ]
+    return "\n\n".join(parts) + "\n"

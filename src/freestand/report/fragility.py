@@ -61,7 +61,11 @@ def assess_fragility(model, workers: int | None = None) -> FragilitySection | No
         )
     if not isinstance(table.get("suite"), str):
         raise FreestandError('give the record suite, e.g. suite = "suite.toml"', source=source)
-    cloud = bool(table.get("cloud", False))
+
+    def get(key: str):
+        return table.get(key, FRAGILITY_KEYS[key].default)
+
+    cloud = bool(get("cloud"))
     if cloud == ("levels" in table):
         raise FreestandError('give levels = "A:B:N" or cloud = true', source=source)
     from freestand.io.campaign_runner import run_fragility
@@ -70,17 +74,17 @@ def assess_fragility(model, workers: int | None = None) -> FragilitySection | No
 
     suite = model.base_dir / table["suite"]
     campaign, records = build_campaign(
-        model, table.get("configuration"), suite, str(table.get("im", "pga")),
-        None if cloud else str(table["levels"]), list(table.get("vary", [])) or None,
-        table.get("samples"), list(table.get("outcomes", [])) or None,
-        bool(table.get("both_polarities", False)), int(table.get("seed", 0)),
-        float(table.get("free_time", 10.0)), source=source,
+        model, get("configuration"), suite, str(get("im")),
+        None if cloud else str(table["levels"]), list(get("vary")) or None,
+        get("samples"), list(get("outcomes")) or None,
+        bool(get("both_polarities")), int(get("seed")),
+        float(get("free_time")), source=source,
     )  # fmt: skip
-    bootstrap = int(table.get("bootstrap", 1000))
+    bootstrap = int(get("bootstrap"))
     definition, result = run_fragility(
         campaign, model_name=model.name, model_source=model.source, model_sha256=model.sha256,
         suite_name=records.name, suite_source=str(table["suite"]), workers=workers,
-        bootstrap=bootstrap, seed=int(table.get("seed", 0)),
+        bootstrap=bootstrap, seed=int(get("seed")),
     )  # fmt: skip
     document = fragility_document(definition, result, bootstrap, 0.95)
     return FragilitySection(document, result, im_label(definition["im"]))
