@@ -546,7 +546,7 @@ class GeneratedSuite:
         Returns
         -------
         dict
-            ``limit`` [-], ``max`` (the largest |correlation coefficient|
+            ``limit`` [-], ``max`` (the largest absolute correlation coefficient
             between two components of one record, over the suite),
             ``passed``, and ``records``: per record its ``index``, ``max``
             and the coefficient of each pair (``pairs``).
@@ -620,7 +620,7 @@ class GeneratedSuite:
         ``peak_acceleration [m/s^2]``, ``zero_period_acceleration [m/s^2]``,
         ``peak_ratio [-]``, ``duration_5_75 [s]``, ``final_velocity [m/s]``,
         ``final_displacement [m]``, ``iterations``, ``attempts``, ``passed``,
-        ``component_correlation [-]`` (the largest |correlation coefficient|
+        ``component_correlation [-]`` (the largest absolute correlation coefficient
         between the record's components; NaN for one component). ``attrs``:
         status, seed, dt, targets, suite-mean ratios, failures.
         """

@@ -108,12 +108,12 @@ class SimulationResult(Result):
 
     @property
     def max_rotation(self) -> np.ndarray:
-        """Largest |rotation| of each block relative to the body below [rad]."""
+        """Largest absolute rotation of each block relative to the body below [rad]."""
         return self.core.max_rotation
 
     @property
     def max_slide(self) -> np.ndarray:
-        """Largest |slide| of each block along the body below [m]."""
+        """Largest absolute slide of each block along the body below [m]."""
         return self.core.max_slide
 
     @property

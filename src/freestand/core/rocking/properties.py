@@ -309,7 +309,7 @@ class RockingBlock:
             omega_after / omega_before [-]. Conservation of angular momentum
             about the new pivot Q (Housner 1963, eq. 4, generalised):
 
-            (I_S + m r_P . r_Q) omega_before = (I_S + m |r_Q|^2) omega_after,
+            (I_S + m r_P . r_Q) omega_before = (I_S + m r_Q . r_Q) omega_after,
 
             with r_P, r_Q the vectors from the old and new pivot to the centre
             of gravity. For a homogeneous rectangle this is
