@@ -158,11 +158,10 @@ class SimulationResult(Result):
 
     @property
     def title(self) -> str:
-        """The figure title: model, configuration, record and its peak."""
-        return (
-            f"{self.model} / {self.configuration}: {self.record}, "
-            f"peak {self.peak_horizontal:.2f} m/s^2"
-        )
+        """The figure title: model, configuration (once when they share a name), record, peak."""
+        same = self.model == self.configuration
+        name = self.model if same else f"{self.model} / {self.configuration}"
+        return f"{name}: {self.record}, peak {self.peak_horizontal:.2f} m/s^2"
 
     def event_counts(self) -> dict[str, int]:
         """Number of events of each kind (sorted by kind)."""

@@ -33,6 +33,14 @@ _STYLE = {
 }
 
 
+#: Short names of the limits in legends.
+_SHORT = {"housner": "Housner", "makris-roussos": "Makris & Roussos", "exact": "exact"}
+
+
+def _short(name: str) -> str:
+    return _SHORT.get(name, name)
+
+
 def _new_figure(ax=None, size: tuple[float, float] = (7.0, 4.8)) -> tuple[Figure, object]:
     """A new figure with one grid-lined axes, or ``ax`` and its figure when given."""
     if ax is None:
@@ -69,7 +77,7 @@ def plot_rectangular_pulse(
             if np.isfinite(t):
                 ax.plot(
                     [a0], [t], "o", color=_STYLE[name]["color"],
-                    label=f"{a0:.2f} m/s^2: {t:.2f} s ({name})",
+                    label=f"{a0:.2f} m/s^2: {t:.2f} s ({_short(name)})",
                 )  # fmt: skip
         ax.axvline(a0, color="0.4", linewidth=0.8, linestyle=":")
     ax.set_xlabel("pulse acceleration a [m/s^2]")
@@ -93,7 +101,7 @@ def plot_pulse_limits(limits: OverturningLimits, *, title: str | None = None, ax
     """
     fig, ax = _new_figure(ax)
     _draw_limits(ax, limits)
-    ax.set_title(title or f"{limits.kind} pulse: overturning above the curves")
+    ax.set_title(title or f"{limits.kind.capitalize()} pulse: overturning above the curves")
     ax.legend(loc="upper left", fontsize="small")
     return fig
 
@@ -111,7 +119,7 @@ def _draw_limits(ax, limits: OverturningLimits) -> None:
             if np.isfinite(f0):
                 ax.plot(
                     [f0], [a0], "o", color=_STYLE.get(name, {}).get("color", "k"),
-                    label=f"{a0:.2f} m/s^2 overturns up to {f0:.2f} Hz ({name})",
+                    label=f"{a0:.2f} m/s^2 overturns up to {f0:.2f} Hz ({_short(name)})",
                 )  # fmt: skip
     ax.set_xlabel("pulse frequency f [Hz]")
     ax.set_ylabel("peak acceleration of the pulse [m/s^2]")
@@ -155,8 +163,8 @@ def plot_spectrum_check(
                 [check.frequency_at_min], [check.spectrum_at_min], marker,
                 color=_STYLE.get(name, {}).get("color", "k"), markerfacecolor="none",
                 markersize=size, markeredgewidth=1.4, linestyle="none",
-                label=f"min margin {check.min_ratio:.2f} at {check.frequency_at_min:.2f} Hz "
-                f"({name}): {check.verdict}",
+                label=f"smallest limit / spectrum {check.min_ratio:.2f} at "
+                f"{check.frequency_at_min:.2f} Hz ({_short(name)}): {check.verdict}",
             )  # fmt: skip
     ax.set_ylabel("peak pulse / spectral acceleration [m/s^2]")
     ax.set_title(title or "Response spectrum against the overturning limits")
