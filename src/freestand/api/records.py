@@ -31,6 +31,7 @@ import numpy as np
 from freestand.core.motion.ground_motion import GroundMotion
 from freestand.core.motion.spectra import Spectrum
 from freestand.errors import FreestandError
+from freestand.io.outputs import check_file, check_writable
 
 #: Frequencies of ``freestand records spectrum`` [Hz]: 0.1 to 100 Hz, 100 per decade.
 SPECTRUM_FREQUENCIES = np.geomspace(0.1, 100.0, 301)
@@ -775,7 +776,7 @@ def _check_suite_folder(output: Path) -> None:
     if not parent.is_dir():
         raise FreestandError(f"folder {str(parent)!r} does not exist; create it first",
                              source="output")  # fmt: skip
-    _check_writable_parent(output, "output")
+    check_writable(output, "output")
 
 
 def _check_generation(count, duration, dt, seed) -> None:
@@ -1120,39 +1121,7 @@ class FloorMotion:
 
 
 def _check_floor_output(output) -> Path:
-    output = Path(output)
-    if output.suffix.lower() not in (".at2", ".csv"):
-        raise FreestandError(
-            f"{str(output)!r} has no .at2 or .csv suffix; e.g. {output.with_suffix('.AT2').name}",
-            source="output",
-        )
-    if output.is_dir():
-        raise FreestandError(f"{str(output)!r} is a folder; give a file name", source="output")
-    _check_writable_parent(output, "output")
-    return output
-
-
-def _check_writable_parent(path: Path, name: str) -> None:
-    """The nearest existing folder above ``path`` is a folder that can be written into."""
-    existing = path.resolve().parent
-    while not existing.exists():
-        existing = existing.parent
-    if not existing.is_dir():
-        raise FreestandError(
-            f"{str(existing)!r} is a file, not a folder, so {str(path)!r} cannot be written "
-            "under it; choose another path",
-            source=name,
-        )
-    try:  # a scratch file: the only sure test of writing
-        handle, scratch = tempfile.mkstemp(prefix=".freestand-check-", dir=existing)
-    except OSError as error:
-        raise FreestandError(
-            f"cannot write into the folder {str(existing)!r} for {str(path)!r} "
-            f"({error.strerror}); choose a folder you can write to",
-            source=name,
-        ) from None
-    os.close(handle)
-    os.unlink(scratch)
+    return check_file(Path(output), "output", (".at2", ".csv"))
 
 
 def floor_motion(

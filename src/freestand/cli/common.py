@@ -17,9 +17,9 @@ from freestand.errors import FreestandError
 from freestand.io.model_file import ModelFile, load_model
 from freestand.io.outputs import (  # noqa: F401 (the commands' output helpers, re-exported)
     Staging,
-    _check_parent,
     check_file,
     check_folder,
+    check_writable,
     staging,
 )
 from freestand.io.units import to_si

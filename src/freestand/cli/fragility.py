@@ -20,7 +20,7 @@ from rich.progress import (
 from rich.table import Table
 from rich.text import Text
 
-from freestand.cli.common import _check_parent, console
+from freestand.cli.common import check_writable, console
 from freestand.errors import FreestandError
 from freestand.io.fragility_results import im_label
 
@@ -70,7 +70,7 @@ def _check_outputs(plot: Path | None) -> None:
             f"{str(plot)!r} is a folder; give a file name, e.g. --plot {plot / 'fragility.png'}",
             source="--plot",
         )
-    _check_parent(plot, "--plot")
+    check_writable(plot, "--plot")
 
 
 def fragility(
@@ -80,7 +80,12 @@ def fragility(
     ),
     suite: Path = typer.Option(None, "--suite", help="Record suite file (TOML)."),
     im: str = typer.Option(
-        "pga", "--im", help="Intensity measure: pga, pgv, sa:F[,DAMPING], pga-alpha[:BLOCK]."
+        "pga",
+        "--im",
+        help="Intensity measure: pga, pgv, sa:F[,DAMPING], pga-alpha[:BLOCK]; of two "
+        "horizontal components (records with x and y): pga-gm, pga-rotd50, pga-rotd100, "
+        "pgv-gm, pgv-rotd50, pgv-rotd100, sa-gm:F[,DAMPING], sa-rotd50:F[,DAMPING], "
+        "sa-rotd100:F[,DAMPING].",
     ),
     levels: str = typer.Option(
         None,

@@ -50,8 +50,23 @@ def _existing_ancestor(path: Path) -> Path:
     return parent
 
 
-def _check_parent(path: Path, option: str) -> None:
-    """The folders above ``path`` exist, or can be made, and can be written into."""
+def check_writable(path: Path, option: str) -> None:
+    """Check, before computing, that ``path`` can be written: the folders above it exist or
+    can be made, and the nearest existing one can be written into.
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The file or folder to be written.
+    option : str
+        The option or argument that gave it (``"--csv"``, ``"output"``), named in errors.
+
+    Raises
+    ------
+    FreestandError
+        A path under a file, or in a folder that cannot be written (tested with a scratch
+        file, the only sure test).
+    """
     existing = _existing_ancestor(path)
     if not existing.is_dir():
         raise FreestandError(
@@ -82,7 +97,7 @@ def check_folder(path: Path | None, option: str = "--plot") -> Path | None:
             f"{option} {path.with_suffix('') if path.stem else 'figures'}",
             source=option,
         )
-    _check_parent(path, option)
+    check_writable(path, option)
     return path
 
 
@@ -103,7 +118,7 @@ def check_file(path: Path | None, option: str, suffixes: tuple[str, ...]) -> Pat
             f"{path / ('out' + suffixes[0])}",
             source=option,
         )
-    _check_parent(path, option)
+    check_writable(path, option)
     return path
 
 
