@@ -36,15 +36,39 @@ class Result:
     """Base of the public results: ``to_dict``, ``to_json``, ``to_frame``."""
 
     def to_dict(self) -> dict:
-        """The result as a JSON-ready dict (the command's ``--json`` document)."""
+        """The result as a JSON-ready dict (the command's ``--json`` document).
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
+        """
         raise NotImplementedError
 
     def to_json(self, indent: int | None = 2) -> str:
-        """:meth:`to_dict` as JSON text, exactly as the command prints it."""
+        """:meth:`to_dict` as JSON text, exactly as the command prints it.
+
+        Parameters
+        ----------
+        indent : int or None, optional
+            Spaces per level (None: one line).
+
+        Returns
+        -------
+        str
+        """
         return json.dumps(self.to_dict(), indent=indent)
 
     def to_frame(self):
-        """The result as a tidy :class:`pandas.DataFrame` (units in the column names)."""
+        """The result as a tidy :class:`pandas.DataFrame` (units in the column names).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per case, level, stripe, time step or frequency as fits
+            the result; units in the column names, metadata in ``attrs``.
+        """
         raise NotImplementedError
 
 

@@ -63,6 +63,17 @@ class FragilityResult(Result):
         Confidence level of the intervals [-].
     store : str or None
         The store folder, when there is one.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> block = fs.Block.rectangle("cabinet", 0.6, 2.0, 1200.0, fs.Friction(0.8, 0.7))
+    >>> records = [fs.load_record("examples/records/synthetic_H.AT2")]
+    >>> result = fs.fragility(fs.Stack("cabinet", (block,)), records, "pga", "1:8:8",
+    ...                       ["uplift:cabinet", "flight:cabinet"], workers=1)
+    >>> result.to_frame("fits")[["outcome", "occurrences", "fitted"]].values.tolist()
+    [['cabinet uplifts', 5, False], ['cabinet in free flight', 0, False]]
+    >>> fig = result.plot()  # a panel for the uplift; the free flight, never seen, in a note
     """
 
     definition: dict
@@ -95,7 +106,14 @@ class FragilityResult(Result):
         return f"{d['model']} / {d['configuration']}: {self.core.simulations} simulations"
 
     def to_dict(self) -> dict:
-        """The ``freestand fragility --json`` document (see ``docs/fragility.md``, Outputs)."""
+        """The ``freestand fragility --json`` document (see ``docs/fragility.md``, Outputs).
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
+        """
         from freestand.io.fragility_results import fragility_document
 
         document = fragility_document(self.definition, self.core, self.bootstrap, self.confidence)
@@ -123,6 +141,12 @@ class FragilityResult(Result):
 
         ``attrs``: ``model``, ``configuration``, ``im``, ``unit``,
         ``simulations``, ``failed``, ``confidence``, ``fingerprint``.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         unit = self.unit
         d = self.definition
@@ -401,6 +425,18 @@ def fragility_from_store(
     FragilityResult
         Over the simulations stored (``core.simulations`` may be fewer than
         ``definition["simulations"]`` for a stopped campaign).
+
+    Examples
+    --------
+    >>> import pathlib, tempfile, freestand as fs
+    >>> block = fs.Block.rectangle("cabinet", 0.6, 2.0, 1200.0, fs.Friction(0.8, 0.7))
+    >>> records = [fs.load_record("examples/records/synthetic_H.AT2")]
+    >>> store = pathlib.Path(tempfile.mkdtemp()) / "store"
+    >>> _ = fs.fragility(fs.Stack("cabinet", (block,)), records, "pga", "1:8:8",
+    ...                  ["uplift:cabinet"], workers=1, store=store)
+    >>> again = fs.fragility_from_store(store, outcomes=["rotation:cabinet>0.5alpha"])
+    >>> again.to_frame("fits")[["outcome", "occurrences"]].values.tolist()
+    [['cabinet rotates > 0.5 alpha', 2]]
     """
     from freestand.core.sweeps.fragility.analysis import analyse
     from freestand.io.fragility_options import parse_outcome

@@ -55,6 +55,14 @@ class FrequencyResult(Result):
         g [m/s^2].
     note : str or None
         Positions asked outside the parking range, in words.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> result = fs.frequency(fs.load_model("examples/crane.toml"), positions=[0.0, 4.9])
+    >>> result.to_frame()[["position [m]", "verdict"]].values.tolist()
+    [[0.0, 'not parked'], [4.9, 'jump possible']]
+    >>> fig = result.plot()  # paper Fig. 9
     """
 
     model: str
@@ -83,6 +91,12 @@ class FrequencyResult(Result):
         (``spectrum``, ``basis``, ``status``, ``positions_at_risk`` [m],
         ``risk_intervals`` [m], ``minimum_margin`` [m/s^2],
         ``minimum_margin_position`` [m], ``notes``) and ``figures``.
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
         sweep, check = self.sweep, self.check
         rows = []
@@ -126,6 +140,12 @@ class FrequencyResult(Result):
         ``ratio_to_g [-]`` and ``verdict`` (the last three NaN / empty
         without a vertical spectrum). ``attrs``: ``model``, ``parking [m]``,
         ``spectrum``, ``status`` (of the jump check).
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         sweep, check = self.sweep, self.check
         count = sweep.position.size

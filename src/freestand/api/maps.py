@@ -84,6 +84,17 @@ class ModeMapResult(Result):
     points_not_shown : tuple of str
         Excitations whose inputs off the axes differ from ``excitation``'s,
         or that lie outside the map.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> model = fs.load_model("examples/crane.toml")
+    >>> result = fs.mode_map(model, nodes=50, configurations="y-z", sense="+")
+    >>> result.to_frame().shape  # 50 x 50 nodes
+    (2500, 14)
+    >>> sorted(result.to_dict()["maps"][0]["regions"])
+    ['bridge rests, cart rests', 'bridge slides, cart rests', 'free flight (a_ver >= g)']
+    >>> fig = result.plot()
     """
 
     model: str
@@ -108,6 +119,12 @@ class ModeMapResult(Result):
         SI), ``nodes``, ``maps`` (per configuration and sense: ``regions``,
         each region's share [-], ``ambiguous_nodes``, ``points``),
         ``points_not_shown`` and ``files`` (written by the command).
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
         return {
             "model": self.model,
@@ -153,6 +170,12 @@ class ModeMapResult(Result):
         name), ``ambiguous``, ``admissible_states``, and per block B
         ``B.motion``, ``B.pivot``, ``B.slide_direction``. ``attrs``:
         ``model``, ``excitation``, ``nodes``.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         import pandas as pd
 
@@ -364,6 +387,17 @@ class SampleResult(Result):
         Per configuration, excitation and sense: the probabilities of every
         block's motion, of every joint state and of every solver status, with
         their confidence intervals, and every sample's solution.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> model = fs.load_model("examples/crane.toml")
+    >>> result = fs.sample(model, "friction.static=uniform(0.25,0.45)", n=1000,
+    ...                    configurations="y-z", excitations="rigid", sense="+")
+    >>> result.to_frame()[["block", "motion", "probability [-]"]].values.tolist()
+    [['bridge', 'rest', 0.441], ['bridge', 'slide', 0.559], ['cart', 'rest', 1.0]]
+    >>> result.samples_frame().shape  # one row per sample
+    (1000, 10)
     """
 
     model: str
@@ -382,6 +416,12 @@ class SampleResult(Result):
         ``samples``, ``invalid``, and ``motions``, ``states``, ``statuses``,
         each an ``outcome`` with ``block``, ``count``, ``total``,
         ``probability`` [-] and ``interval`` [-]).
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
 
         def probability(item):
@@ -423,6 +463,12 @@ class SampleResult(Result):
         ``motion``, ``count``, ``total`` (valid samples), ``probability [-]``,
         ``low [-]``, ``high [-]`` (the confidence interval). ``attrs``:
         ``model``, ``seed``, ``confidence``, ``interval``, ``variations``.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         rows = [
             {
@@ -488,7 +534,13 @@ class SampleResult(Result):
         return {key: np.concatenate(parts) for key, parts in columns.items()}
 
     def samples_frame(self):
-        """:meth:`sample_columns` as a DataFrame: one row per sample and case."""
+        """:meth:`sample_columns` as a DataFrame: one row per sample and case.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per sample, units in the column names.
+        """
         import pandas as pd
 
         table = pd.DataFrame(self.sample_columns())

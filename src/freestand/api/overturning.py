@@ -97,6 +97,17 @@ class OverturningResult(Result):
         Whether the weight is m (g - a_v) with ``vertical_acceleration``.
     vertical_acceleration : float
         a_v [m/s^2] in the weight (0 for m g).
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> model = fs.load_model("examples/crane.toml")
+    >>> result = fs.overturning(model, configuration="x-z cart right", block="cart")
+    >>> result.checks["exact"].verdict
+    'no overturning'
+    >>> round(result.to_dict()["spectrum_check"]["exact"]["min_ratio"], 2)
+    2.78
+    >>> fig = result.plot(figure="spectrum")  # paper Fig. 8
     """
 
     model: str
@@ -134,6 +145,12 @@ class OverturningResult(Result):
         [m/s^2], ``overturns_below_frequency`` [Hz] by limit,
         ``spectrum_check``, ``weight``, ``vertical_acceleration`` [m/s^2],
         ``conclusion`` and ``figures`` (files the command wrote).
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
         first, other = self.rocking.about("pivot"), self.rocking.about("other")
         rectangular, half_sine = self.rectangular, self.half_sine
@@ -214,6 +231,12 @@ class OverturningResult(Result):
 
         ``attrs``: ``model``, ``configuration``, ``block``, ``pivot``,
         ``weight``, ``operating_amplitude [m/s^2]``.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         attrs = {
             "model": self.model,

@@ -153,6 +153,15 @@ class RecordSpectra:
         :func:`freestand.io.pairing.pair_components`).
     files : tuple of str
         Files written from this result (``with_files``).
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> spectra = fs.response_spectrum("examples/records/synthetic_H.AT2",
+    ...                                target="rg1.60:pga=0.3g,damping=5%")
+    >>> spectra.to_frame().columns.tolist()
+    ['record', 'component', 'frequency [Hz]', 'psa [m/s^2]', 'target [m/s^2]', 'ratio [-]']
+    >>> fig = spectra.plot()
     """
 
     frequency: np.ndarray
@@ -195,6 +204,12 @@ class RecordSpectra:
         damping, acceleration [m/s^2] at ``frequency``, or None), ``records``
         (the rows), ``pairing`` (the files paired into records, or refused,
         with how and why) and ``files``.
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
         target = self.target
         return {
@@ -220,6 +235,12 @@ class RecordSpectra:
         ``psa [m/s^2]``, ``target [m/s^2]`` (NaN without a target for the
         component), ``ratio [-]`` (psa / target). ``attrs``: damping, targets,
         units.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         import pandas as pd
 
@@ -520,6 +541,16 @@ class GeneratedSuite:
     files : tuple of str
         Files written: the suite file, ``acceptance.json`` and any added by
         :meth:`with_files` (a figure).
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> suite = fs.generate_suite("rg1.60:pga=0.3g,damping=5%", count=2, duration=8.0, seed=7)
+    >>> suite.status, suite.failures
+    ('accepted', ())
+    >>> suite.to_frame()[["record", "component", "passed"]].values.tolist()
+    [[1, 'horizontal', True], [2, 'horizontal', True]]
+    >>> fig = suite.plot()
     """
 
     core: object
@@ -575,6 +606,12 @@ class GeneratedSuite:
         coefficient between a record's components, per record and for the
         suite), ``output``, ``suite_file`` and ``files``. ``acceptance.json``
         holds the same without the last three.
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
         result = self.core
         criteria = result.criteria
@@ -606,7 +643,13 @@ class GeneratedSuite:
         return document
 
     def acceptance(self) -> dict:
-        """The ``acceptance.json`` document: :meth:`to_dict` without where it was written."""
+        """The ``acceptance.json`` document: :meth:`to_dict` without where it was written.
+
+        Returns
+        -------
+        dict
+            JSON-ready, as written to ``acceptance.json``.
+        """
         document = self.to_dict()
         for key in ("output", "suite_file", "files"):
             document.pop(key)
@@ -624,6 +667,12 @@ class GeneratedSuite:
         ``component_correlation [-]`` (the largest absolute correlation coefficient
         between the record's components; NaN for one component). ``attrs``:
         status, seed, dt, targets, suite-mean ratios, failures.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         import pandas as pd
 
@@ -977,6 +1026,16 @@ class FloorMotion:
     outputs : dict
         Files written per component (``"horizontal"``, ``"horizontal_y"``,
         ``"vertical"``).
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> floor = fs.floor_motion("examples/records/synthetic_H.AT2", 2.5, 0.05)
+    >>> round(floor.to_dict()["floor_peak"], 2)
+    7.72
+    >>> floor.to_frame().columns[:2].tolist()
+    ['time [s]', 'ground [m/s^2]']
+    >>> fig = floor.plot()
     """
 
     ground: GroundMotion
@@ -1004,6 +1063,12 @@ class FloorMotion:
         ``floor_peak_vertical`` [m/s^2], ``output``; ``output_vertical`` when
         a vertical file was written; with a second horizontal component
         ``ground_peak_y``, ``floor_peak_y`` [m/s^2] (and ``output_y``).
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
         ground_peak = self.ground.peak_horizontal
         floor_peak = self.floor.peak_horizontal
@@ -1040,6 +1105,12 @@ class FloorMotion:
         where the record has them ``ground_y [m/s^2]``, ``floor_y [m/s^2]``,
         ``ground_vertical [m/s^2]``, ``floor_vertical [m/s^2]`` (downward
         positive). ``attrs``: record, frequency, damping, units.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         import pandas as pd
 

@@ -30,6 +30,15 @@ class ReportResult(Result):
         2-5), the overturning assessments (Figs. 6-8), the frequency and
         jump check (Fig. 9), the fragility appendix and the summary of
         conclusions (:mod:`freestand.report.content`).
+
+    Examples
+    --------
+    >>> import tempfile, freestand as fs
+    >>> folder = tempfile.mkdtemp()
+    >>> result = fs.write_report(fs.load_model("examples/crane.toml"), f"{folder}/crane.html",
+    ...                          date="2024-01-01")
+    >>> [path.endswith("crane.html") for path in result.to_dict()["files"]]
+    [True]
     """
 
     files: tuple[Path, ...]
@@ -47,6 +56,12 @@ class ReportResult(Result):
         ``version`` (freestand's), ``date`` (YYYY-MM-DD), ``summary`` (the
         conclusions), ``flagged_cases`` (ambiguous or inconsistent screening
         cases) and ``files`` (written).
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
         content = self.content
         return {
@@ -65,6 +80,12 @@ class ReportResult(Result):
 
         The columns of :meth:`freestand.api.screening.ScreeningResult.to_frame`;
         ``attrs`` add ``date`` and ``sha256``.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         from freestand.api.screening import ScreeningResult
 

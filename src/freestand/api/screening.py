@@ -54,6 +54,17 @@ class ScreeningResult(Result):
     envelope : tuple of ForceEnvelope
         Per block, the largest normal force at each lower contact and the
         largest tangential force [N] over the cases, with the case giving it.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> result = fs.screen(fs.load_model("examples/crane.toml"))
+    >>> len(result), result.flagged
+    (12, ())
+    >>> result.to_dict()["cases"][0]["paper_case"]
+    '3.1.2.3: bridge slides, cart rests on it'
+    >>> result.to_frame().shape  # 12 cases x 2 blocks, 17 columns
+    (24, 17)
     """
 
     model: str
@@ -77,7 +88,14 @@ class ScreeningResult(Result):
         return tuple(c for c in self.cases if c.status in ("ambiguous", "inconsistent"))
 
     def to_dict(self) -> dict:
-        """The ``freestand screen --json`` document (see the README, "JSON output")."""
+        """The ``freestand screen --json`` document (see the README, "JSON output").
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
+        """
         from freestand.io.results import envelope_document, screening_document
 
         document = screening_document(self.model, self.cases, self.gravity)
@@ -96,6 +114,12 @@ class ScreeningResult(Result):
         ``normal_left [N]``, ``normal_right [N]``, ``tangential [N]`` (forces on
         the block from the body below). A case with no consistent state has
         one row with no block. ``attrs``: ``model``, ``gravity [m/s^2]``.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         rows = []
         for case in self.cases:

@@ -42,6 +42,13 @@ def support_motion(motion: GroundMotion | SupportMotion) -> SupportMotion:
     -------
     SupportMotion
         The same samples, as the time history takes them.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> support = fs.support_motion(fs.load_record("examples/records/synthetic_H.AT2"))
+    >>> support.time_step, support.horizontal.shape, support.vertical  # [s]
+    (0.005, (3001,), None)
     """
     if isinstance(motion, SupportMotion):
         return motion
@@ -77,6 +84,19 @@ class SimulationResult(Result):
         The support accelerations simulated [m/s^2].
     core : TimeHistoryResult
         Histories of every block, events, peaks and diagnostics.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> model = fs.load_model("examples/crane.toml")
+    >>> record = fs.load_record("examples/records/synthetic_H.AT2").scaled_to_peak(8.0)
+    >>> result = fs.simulate(model, record, duration=4.0, configuration="x-z cart right")
+    >>> result.status, result.block_names
+    ('completed', ('bridge', 'cart'))
+    >>> result.to_frame().columns[:3].tolist()
+    ['time [s]', 'support_horizontal [m/s^2]', 'support_vertical [m/s^2]']
+    >>> len(result.plot().axes)  # support, slides, rotations, forces of each block
+    5
     """
 
     model: str
@@ -194,6 +214,12 @@ class SimulationResult(Result):
         ``free_flight``, ``overturned``, ``overturn_time`` [s]), ``events``
         (count per kind), ``figures`` (files the command wrote) and
         ``first_events`` (the first 50: ``time`` [s], ``kind``, ``interface``).
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
         metadata = self.motion.metadata if self.motion is not None else {}
         return {
@@ -239,6 +265,12 @@ class SimulationResult(Result):
 
         ``attrs``: ``model``, ``configuration``, ``record``, ``status``,
         ``method``.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         attrs = {
             "model": self.model,

@@ -76,6 +76,16 @@ class GroundMotion:
     :meth:`with_trailing_zeros`, :meth:`rotated`,
     :func:`combine_components`, the floor motion) treats the three
     components alike; :meth:`rotated` turns the horizontal pair.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import freestand as fs
+    >>> motion = fs.GroundMotion(0.01, np.array([0.0, 1.0, -2.0, 0.5]), name="four samples")
+    >>> motion.peak_horizontal, motion.duration, motion.components  # [m/s^2], [s]
+    (2.0, 0.03, ('horizontal',))
+    >>> motion.scaled_to_peak(4.0).horizontal.tolist()
+    [0.0, 2.0, -4.0, 1.0]
     """
 
     dt: float

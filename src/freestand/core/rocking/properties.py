@@ -106,6 +106,16 @@ class RockingBlock:
     position: R = sqrt(b^2 + h^2), alpha = atan(b / h), I_O = I_S + m R^2 (parallel-axis
     rule), p = sqrt(m (g - a_v) R / I_O) (Housner 1963; Zhang and Makris 2001,
     eq. 3).
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> cabinet = fs.Block.rectangle("cabinet", 0.6, 2.0, 1200.0, fs.Friction(0.8, 0.7))
+    >>> rocking = fs.RockingBlock.from_block(cabinet, "right")
+    >>> round(rocking.alpha, 4), round(rocking.p, 3)  # [rad], [rad/s]
+    (0.2915, 2.655)
+    >>> round(rocking.uplift_threshold, 3), round(rocking.restitution, 3)  # [m/s^2], [-]
+    (2.943, 0.876)
     """
 
     mass: float
