@@ -94,3 +94,22 @@ def test_into_given_axes_with_the_legend_outside():
     assert len(texts) == 2 and texts[0].startswith("block overturns: median")
     assert legend.get_bbox_to_anchor().x0 > ax.get_window_extent().x1  # right of the axes
     assert "block in free flight" in _note(fig) and "Markers: fraction" in _note(fig)
+
+
+def test_a_cloud_and_a_campaign_in_which_nothing_occurred():
+    rows = _rows()
+    cloud = analyse(rows, [Outcome("overturn", "block"), Outcome("overturn", "other")], [],
+                    unit="m/s^2", bootstrap=50)  # fmt: skip
+    fig = plot_fragility(cloud, "PGA [m/s^2]")
+    (legend,) = [ax.get_legend() for ax in fig.axes if ax.get_legend() is not None]
+    assert legend.get_texts()[0].get_text() == "simulations (1: occurred, 0: not)"
+    assert (
+        [ax for ax in fig.axes if ax.axison][0].get_title(loc="left").startswith("block overturns")
+    )
+    assert "other overturns" in _note(fig)
+    nothing = analyse(rows, [Outcome("overturn", "other")], [1.0, 2.0, 3.0, 4.0, 5.0], bootstrap=0)
+    fig = plot_fragility(nothing, "PGA [m/s^2]")
+    (panel,) = [ax for ax in fig.axes if ax.axison]
+    assert [t.get_text() for t in panel.texts] == ["no outcome occurred"]
+    assert not panel.lines and not panel.containers
+    assert "other overturns" in _note(fig)

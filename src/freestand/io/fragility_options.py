@@ -40,11 +40,11 @@ FRAGILITY_KEYS = {
     "levels": TableKey(
         'the levels, as --levels, e.g. "1:8:15" (IM unit); or cloud = true',
         shown_default="required without cloud",
-    ),  # fmt: skip
+    ),
     "cloud": TableKey("run the records unscaled (cloud analysis)", default=False),
     "outcomes": TableKey(
         "the outcomes, as --outcome", default=(), shown_default="per configuration"
-    ),  # fmt: skip
+    ),
     "vary": TableKey("uncertain inputs, as --vary", default=(), shown_default="none"),
     "samples": TableKey("samples per record and level", "-", shown_default="1; 10 with vary"),
     "both_polarities": TableKey("also run every record negated", default=False),

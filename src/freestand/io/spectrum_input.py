@@ -197,12 +197,12 @@ SPECTRUM_KEYS = {
             "peak ground acceleration the US NRC RG 1.60 shape is anchored to",
             "m/s^2",
             required=True,
-        ),  # fmt: skip
+        ),
     },
     "en1998": {
         "ag": TableKey(
             "design ground acceleration on type A ground a_g (EN 1998-1)", "m/s^2", required=True
-        ),  # fmt: skip
+        ),
         "ground": TableKey("ground type, A to E", default="A"),
         "type": TableKey("spectrum type, 1 or 2", "-", default=1),
         "importance": TableKey("importance factor gamma_I", "-", default=1.0),
@@ -220,16 +220,14 @@ SPECTRUM_KEYS = {
     "record": {
         "file": TableKey(
             "record file (.AT2, .V2, CSV, one column), relative to the model file", required=True
-        ),  # fmt: skip
+        ),
         "dt": TableKey("time step of a single-column file", "s"),
         "unit": TableKey("acceleration unit of a single-column file (g, m/s^2, cm/s^2)"),
         "scale": TableKey("factor on the record (instead of peak)", "-"),
-        "peak": TableKey(
-            "scale the record to this peak acceleration (instead of scale)", "m/s^2"
-        ),  # fmt: skip
+        "peak": TableKey("scale the record to this peak acceleration (instead of scale)", "m/s^2"),
         "label": TableKey(
             "label in outputs", shown_default="the file's name, direction and damping"
-        ),  # fmt: skip
+        ),
     },
 }
 

@@ -169,26 +169,11 @@ def plot_fragility(result: FragilityResult, im_label: str, title: str = "", ax=N
         return _into_axes(ax, result, shown, x, im_label, title, note)
     rows, columns = _grid(len(shown))
     width = max(7.5, PANEL_WIDTH * columns)
-    wrap = int(width * 15)
-    lines = len(textwrap.wrap(note, wrap)) if note else 0
-    note_height = 0.45 + 0.2 * lines
+    wrap = int(width * 15)  # characters of the note per line at its font size
+    note_height = 0.45 + 0.2 * (len(textwrap.wrap(note, wrap)) if note else 0)
     fig = Figure(figsize=(width, PANEL_HEIGHT * rows + note_height + 0.4), layout="constrained")
     grid = fig.add_gridspec(rows + 1, columns, height_ratios=[PANEL_HEIGHT] * rows + [note_height])
-    kinds = 0
-    for number, item in enumerate(shown or [None]):
-        panel = fig.add_subplot(grid[number // columns, number % columns])
-        _style(panel, x)
-        if item is None:
-            panel.text(0.5, 0.5, "no outcome occurred", ha="center", va="center",
-                       transform=panel.transAxes, color="0.4")  # fmt: skip
-        else:
-            kinds = max(kinds, len(_draw_outcome(panel, item, x, f"C{number % 10}", result.cloud)))
-            summary = "\n".join(textwrap.wrap(fit_summary(item, result.unit), 52))
-            panel.set_title(f"{item.outcome.name}\n{summary}", fontsize=9, loc="left")
-        if number % columns == 0:
-            panel.set_ylabel("probability [-]")
-        if number + columns >= len(shown or [None]):
-            panel.set_xlabel(im_label)
+    kinds = _draw_panels(fig, grid, columns, shown, x, result, im_label)
     bottom = fig.add_subplot(grid[rows, :])
     bottom.axis("off")
     if kinds:
@@ -201,6 +186,27 @@ def plot_fragility(result: FragilityResult, im_label: str, title: str = "", ax=N
     if title:
         fig.suptitle(title, fontsize=10)
     return fig
+
+
+def _draw_panels(fig, grid, columns: int, shown, x, result, im_label: str) -> int:
+    """A panel per outcome shown (one saying so when none is); the most kinds of artist drawn."""
+    kinds = 0
+    items = shown or [None]
+    for number, item in enumerate(items):
+        panel = fig.add_subplot(grid[number // columns, number % columns])
+        _style(panel, x)
+        if item is None:
+            panel.text(0.5, 0.5, "no outcome occurred", ha="center", va="center",
+                       transform=panel.transAxes, color="0.4")  # fmt: skip
+        else:
+            kinds = max(kinds, len(_draw_outcome(panel, item, x, f"C{number % 10}", result.cloud)))
+            summary = "\n".join(textwrap.wrap(fit_summary(item, result.unit), 52))
+            panel.set_title(f"{item.outcome.name}\n{summary}", fontsize=9, loc="left")
+        if number % columns == 0:
+            panel.set_ylabel("probability [-]")
+        if number + columns >= len(items):  # no panel below it
+            panel.set_xlabel(im_label)
+    return kinds
 
 
 def _legend_keys(cloud: bool) -> tuple[list, tuple[str, ...]]:
