@@ -54,9 +54,11 @@ print(motions)
 # %%
 # The paper names each two-block case (section 3.1.2); every case here is
 # unique (``status``), none ambiguous:
-print(table.drop_duplicates(["configuration", "excitation", "sense"])[
-    ["configuration", "excitation", "sense", "status", "paper_case"]
-].to_string(index=False))
+print(
+    table.drop_duplicates(["configuration", "excitation", "sense"])[
+        ["configuration", "excitation", "sense", "status", "paper_case"]
+    ].to_string(index=False)
+)
 
 # %%
 # Accelerations and contact forces: Tables 3 and 5
@@ -64,9 +66,15 @@ print(table.drop_duplicates(["configuration", "excitation", "sense"])[
 # The forces on each block from the body below [N] and the accelerations of
 # its centre of gravity [m/s^2, rad/s^2], here for the elastic level:
 columns = [
-    "configuration", "sense", "block", "acceleration_x [m/s^2]",
-    "angular_acceleration [rad/s^2]", "normal_left [N]", "normal_right [N]", "tangential [N]",
-]  # fmt: skip
+    "configuration",
+    "sense",
+    "block",
+    "acceleration_x [m/s^2]",
+    "angular_acceleration [rad/s^2]",
+    "normal_left [N]",
+    "normal_right [N]",
+    "tangential [N]",
+]
 elastic = table[table["excitation"] == "elastic"][columns]
 print(elastic.round(3).to_string(index=False))
 
@@ -108,8 +116,10 @@ fig_half_sine = cart.plot(figure="half-sine")
 # The horizontal spectrum (a stand-in for the paper's, see the model file)
 # lies below every limit: no overturning, with the smallest margin given.
 for limit, check in cart.checks.items():
-    print(f"{limit:>15}: {check.verdict}, smallest limit/spectrum {check.min_ratio:.2f} "
-          f"at {check.frequency_at_min:.2f} Hz")  # fmt: skip
+    print(
+        f"{limit:>15}: {check.verdict}, smallest limit/spectrum {check.min_ratio:.2f} "
+        f"at {check.frequency_at_min:.2f} Hz"
+    )
 fig_spectrum = cart.plot(figure="spectrum")
 
 # %%

@@ -17,10 +17,17 @@ top.
 # frame: static and kinetic coefficients [-].
 import freestand as fs
 
-frame = fs.Block.rectangle("frame", width=1.0, height=0.3, mass=150.0,
-                           friction=fs.Friction(static=0.5, kinetic=0.4))  # fmt: skip
-cabinet = fs.Block.rectangle("cabinet", width=0.8, height=2.2, mass=600.0,
-                             friction=fs.Friction(static=0.4, kinetic=0.35), level=0.3)  # fmt: skip
+frame = fs.Block.rectangle(
+    "frame", width=1.0, height=0.3, mass=150.0, friction=fs.Friction(static=0.5, kinetic=0.4)
+)
+cabinet = fs.Block.rectangle(
+    "cabinet",
+    width=0.8,
+    height=2.2,
+    mass=600.0,
+    friction=fs.Friction(static=0.4, kinetic=0.35),
+    level=0.3,
+)
 stack = fs.Stack("cabinet on frame", (frame, cabinet))
 
 # %%
@@ -30,8 +37,10 @@ stack = fs.Stack("cabinet on frame", (frame, cabinet))
 import math
 
 alpha = math.atan(0.8 / 2.2)
-print(f"alpha = {alpha:.3f} rad; rocks from {9.81 * math.tan(alpha):.2f} m/s^2, "
-      f"slides from {0.4 * 9.81:.2f} m/s^2 (with no vertical acceleration)")  # fmt: skip
+print(
+    f"alpha = {alpha:.3f} rad; rocks from {9.81 * math.tan(alpha):.2f} m/s^2, "
+    f"slides from {0.4 * 9.81:.2f} m/s^2 (with no vertical acceleration)"
+)
 
 # %%
 # Screening from rest
@@ -51,8 +60,9 @@ print(table[["excitation", "sense", "block", "motion", "pivot", "status"]].to_st
 # %%
 # Some cases are *ambiguous*: with rigid contacts and Coulomb friction the
 # contact problem need not have one solution, and here several states
-# satisfy every contact condition. The one shown is chosen by the rule "static friction holds where it can,
-# then fewest separations"; the others are listed so that none is missed:
+# satisfy every contact condition. The one shown is chosen by the rule
+# "static friction holds where it can, then fewest separations"; the others
+# are listed so that none is missed:
 for case in screening.flagged:
     states = [
         ", ".join(f"{state.name} {state.motion.value}" for state in alternative)
@@ -72,9 +82,11 @@ rows = []
 for peak in (3.0, 5.0, 7.0, 9.0):
     run = fs.simulate(stack, record.scaled_to_peak(peak), until_rest=True)
     rows.append(run.to_frame("peaks").assign(**{"peak [m/s^2]": peak}))
-    print(f"PGA {peak:.1f} m/s^2: {run.status}; cabinet max rotation "
-          f"{run.max_rotation[1]:.3f} rad, max slide {1000 * run.max_slide[1]:.1f} mm, "
-          f"overturned: {bool(run.overturned[1])}")  # fmt: skip
+    print(
+        f"PGA {peak:.1f} m/s^2: {run.status}; cabinet max rotation "
+        f"{run.max_rotation[1]:.3f} rad, max slide {1000 * run.max_slide[1]:.1f} mm, "
+        f"overturned: {bool(run.overturned[1])}"
+    )
 
 # %%
 # The peaks of every run as one table (``to_frame("peaks")``, one row per
@@ -82,8 +94,11 @@ for peak in (3.0, 5.0, 7.0, 9.0):
 import pandas as pd
 
 peaks = pd.concat(rows, ignore_index=True)
-print(peaks[["peak [m/s^2]", "block", "max_rotation [rad]", "max_slide [m]", "uplift",
-             "overturned"]].round(4).to_string(index=False))  # fmt: skip
+print(
+    peaks[["peak [m/s^2]", "block", "max_rotation [rad]", "max_slide [m]", "uplift", "overturned"]]
+    .round(4)
+    .to_string(index=False)
+)
 
 # %%
 # The histories of the strongest run: the support accelerations, the
@@ -99,6 +114,8 @@ fig_history = history.plot()
 # spectrum, here the US NRC RG 1.60 shape anchored at 0.3 g:
 check = fs.overturning(stack, excitations=levels, spectrum="rg1.60:pga=0.3g,damping=5%")
 for name, item in check.checks.items():
-    print(f"{name:>15}: {item.verdict} (smallest limit/spectrum {item.min_ratio:.2f} "
-          f"at {item.frequency_at_min:.2f} Hz)")  # fmt: skip
+    print(
+        f"{name:>15}: {item.verdict} (smallest limit/spectrum {item.min_ratio:.2f} "
+        f"at {item.frequency_at_min:.2f} Hz)"
+    )
 fig_overturning = check.plot(figure="spectrum")

@@ -23,8 +23,9 @@ import freestand as fs
 
 horizontal = "rg1.60:pga=0.3g,damping=5%"
 vertical = "rg1.60:pga=0.3g,damping=5%,direction=vertical"
-suite = fs.generate_suite(horizontal, count=8, duration=15.0, seed=3,
-                          horizontal_y=True, vertical=vertical)  # fmt: skip
+suite = fs.generate_suite(
+    horizontal, count=8, duration=15.0, seed=3, horizontal_y=True, vertical=vertical
+)
 print(suite.status, "|", len(suite.motions), "records with", suite.motions[0].components)
 
 # %%
@@ -57,8 +58,10 @@ print({component: round(ratio, 3) for component, ratio in checks.attrs["mean_rat
 # largest absolute correlation coefficient between two components of a
 # record, against the limit 0.3:
 independence = suite.independence()
-print(f"largest {independence['max']:.3f} (limit {independence['limit']}), "
-      f"passed: {independence['passed']}")  # fmt: skip
+print(
+    f"largest {independence['max']:.3f} (limit {independence['limit']}), "
+    f"passed: {independence['passed']}"
+)
 
 # %%
 # The spectra of every record (grey), their mean (red) and the target with
@@ -102,7 +105,9 @@ print(band.groupby(["record", "component"])["ratio [-]"].agg(["min", "max"]).rou
 # structure's dominant mode (2.5 Hz, 5 % damping): the floor motion is
 # narrow-band and amplified.
 floor = fs.floor_motion(suite.motions[0], frequency=2.5, damping=0.05)
-print(f"ground peak {floor.to_dict()['ground_peak']:.2f} m/s^2, "
-      f"floor peak {floor.to_dict()['floor_peak']:.2f} m/s^2, "
-      f"amplification {floor.to_dict()['amplification']:.2f}")  # fmt: skip
+print(
+    f"ground peak {floor.to_dict()['ground_peak']:.2f} m/s^2, "
+    f"floor peak {floor.to_dict()['floor_peak']:.2f} m/s^2, "
+    f"amplification {floor.to_dict()['amplification']:.2f}"
+)
 fig_floor = floor.plot()

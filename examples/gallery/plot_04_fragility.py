@@ -22,8 +22,13 @@ A campaign for a decision wants 30 records or more.
 # the record suite example): horizontal RG 1.60 at 0.3 g, vertical at 0.2 g.
 import freestand as fs
 
-suite = fs.generate_suite("rg1.60:pga=0.3g,damping=5%", count=8, duration=10.0, seed=7,
-                          vertical="rg1.60:pga=0.2g,damping=5%,direction=vertical")  # fmt: skip
+suite = fs.generate_suite(
+    "rg1.60:pga=0.3g,damping=5%",
+    count=8,
+    duration=10.0,
+    seed=7,
+    vertical="rg1.60:pga=0.2g,damping=5%,direction=vertical",
+)
 print(suite.status, "|", len(suite.motions), "records")
 
 # %%
@@ -52,8 +57,10 @@ campaign = fs.fragility(
     bootstrap=300,
     store=store,
 )
-print(f"{campaign.core.simulations} simulations, {campaign.core.failed} left out:",
-      campaign.core.statuses)  # fmt: skip
+print(
+    f"{campaign.core.simulations} simulations, {campaign.core.failed} left out:",
+    campaign.core.statuses,
+)
 
 # %%
 # A few simulations fail: the cart, rocking on one wheel, is driven into its
@@ -66,8 +73,11 @@ print(f"{campaign.core.simulations} simulations, {campaign.core.failed} left out
 # never occurred, or whose stripes jump from none to all, is not fitted and
 # says why:
 fits = campaign.to_frame("fits")
-print(fits[["outcome", "occurrences", "median [m/s^2]", "beta [-]", "hclpf [m/s^2]"]]
-      .round(3).to_string(index=False))  # fmt: skip
+print(
+    fits[["outcome", "occurrences", "median [m/s^2]", "beta [-]", "hclpf [m/s^2]"]]
+    .round(3)
+    .to_string(index=False)
+)
 for row in fits[~fits["fitted"]].itertuples():
     print(f"{row.outcome}: {row.reason}")
 
@@ -91,6 +101,9 @@ fig_curves = campaign.plot()
 # needs no new simulation. Here the cart rocking past half its slenderness
 # angle alpha, and sliding more than 5 cm:
 again = fs.fragility_from_store(store, outcomes=["rotation:cart>0.5alpha", "slide:cart>0.05m"])
-print(again.to_frame("fits")[["outcome", "occurrences", "median [m/s^2]", "beta [-]"]]
-      .round(3).to_string(index=False))  # fmt: skip
+print(
+    again.to_frame("fits")[["outcome", "occurrences", "median [m/s^2]", "beta [-]"]]
+    .round(3)
+    .to_string(index=False)
+)
 fig_from_store = again.plot()

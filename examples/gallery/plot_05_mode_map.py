@@ -22,8 +22,9 @@ batch solver, hundreds of thousands of cases a second.
 import freestand as fs
 
 model = fs.load_model("../crane.toml")
-excitation_map = fs.mode_map(model, "horizontal=0:12", "vertical=-3:10",
-                             configurations="y-z", nodes=300)  # fmt: skip
+excitation_map = fs.mode_map(
+    model, "horizontal=0:12", "vertical=-3:10", configurations="y-z", nodes=300
+)
 for item in excitation_map.to_dict()["maps"]:
     shares = {region: round(share, 3) for region, share in item["regions"].items()}
     print(f"{item['configuration']}, sense {item['sense']}: {shares}")
@@ -39,9 +40,14 @@ fig_excitation = excitation_map.plot()
 # acceleration and the static friction of the cart's brakes (the vertical
 # acceleration is the elastic level's, 2.35 m/s^2): where does the cart
 # slide, where does it rock about its wheels?
-friction_map = fs.mode_map(model, "horizontal=0:12", "cart.friction.static=0.1:0.6",
-                           configurations="x-z cart right", excitation="elastic",
-                           nodes=300)  # fmt: skip
+friction_map = fs.mode_map(
+    model,
+    "horizontal=0:12",
+    "cart.friction.static=0.1:0.6",
+    configurations="x-z cart right",
+    excitation="elastic",
+    nodes=300,
+)
 table = friction_map.to_frame()
 print(table.groupby(["sense", "region"]).size().rename("nodes").to_string())
 fig_friction = friction_map.plot()
@@ -52,11 +58,20 @@ fig_friction = friction_map.plot()
 # The rail friction of the bridge is not known better than "between 0.25
 # and 0.45". At the rigid level (a_h = 2.70, a_v = 2.35 m/s^2) the bridge
 # slides where mu_0 < a_h / (g - a_v) = 2.70 / 7.46 = 0.362. 20,000 samples:
-sweep = fs.sample(model, "friction.static=uniform(0.25,0.45)", n=20_000, seed=1,
-                  configurations="y-z", excitations="rigid")  # fmt: skip
+sweep = fs.sample(
+    model,
+    "friction.static=uniform(0.25,0.45)",
+    n=20_000,
+    seed=1,
+    configurations="y-z",
+    excitations="rigid",
+)
 probabilities = sweep.to_frame()
-print(probabilities[["sense", "block", "motion", "probability [-]", "low [-]", "high [-]"]]
-      .round(3).to_string(index=False))  # fmt: skip
+print(
+    probabilities[["sense", "block", "motion", "probability [-]", "low [-]", "high [-]"]]
+    .round(3)
+    .to_string(index=False)
+)
 
 # %%
 # Every sample is a row of ``samples_frame()``: the inputs drawn and each
@@ -94,8 +109,11 @@ ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncols=3, f
 near = fs.Excitation("near the threshold", horizontal=3.5, vertical=2.35)
 uncertain = fs.sample(
     model,
-    ["cart.centre.x+=normal(0,0.05)", "cart.mass*=uniform(0.9,1.1)",
-     "cart.friction.static=uniform(0.2,0.3)"],  # fmt: skip
+    [
+        "cart.centre.x+=normal(0,0.05)",
+        "cart.mass*=uniform(0.9,1.1)",
+        "cart.friction.static=uniform(0.2,0.3)",
+    ],
     n=20_000,
     seed=2,
     configurations="x-z cart right",
@@ -103,5 +121,8 @@ uncertain = fs.sample(
     sense="+",
 )
 frame = uncertain.to_frame()
-print(frame[frame["block"] == "cart"][["motion", "probability [-]", "low [-]", "high [-]"]]
-      .round(3).to_string(index=False))  # fmt: skip
+print(
+    frame[frame["block"] == "cart"][["motion", "probability [-]", "low [-]", "high [-]"]]
+    .round(3)
+    .to_string(index=False)
+)
