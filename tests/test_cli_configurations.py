@@ -93,10 +93,10 @@ def test_failed_simulation_exits_with_1(monkeypatch, capsys):
     """Injection: no model found makes the engine fail (a Painleve-type inconsistency is
     resolved by a tangential impact, see test_timehistory), so the real command line runs
     in-process (``freestand.cli.main``) with the engine's result marked failed."""
-    import freestand.cli.simulate as command
+    import freestand.api.simulation as command
     from freestand.cli import main
 
-    real = command.simulate_stack
+    real = command._simulate_stack
 
     def failing(*args, **kwargs):
         result = real(*args, **kwargs)
@@ -104,7 +104,7 @@ def test_failed_simulation_exits_with_1(monkeypatch, capsys):
             result, status="failed", message="at t = 0.1 s: no consistent contact mode"
         )
 
-    monkeypatch.setattr(command, "simulate_stack", failing)
+    monkeypatch.setattr(command, "_simulate_stack", failing)
     base = ["simulate", str(CRANE), "-c", "y-z", "--record", str(RECORD), "--duration", "0.1"]
     assert main([*base, "--json"]) == 1
     captured = capsys.readouterr()

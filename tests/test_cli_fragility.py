@@ -158,3 +158,10 @@ def test_every_simulation_invalid_exits_1(files, capsys, monkeypatch):
     assert document["failed"] == document["simulations"] == 16
     assert document["statuses"] == {"invalid": 16}
     assert "every simulation failed" in captured.err
+
+
+def test_im_help_lists_the_two_component_measures():
+    text = " ".join(run_freestand("fragility", "--help").stdout.split())
+    for name in ("pga-gm", "pga-rotd50", "pga-rotd100", "pgv-gm", "pgv-rotd50", "pgv-rotd100",
+                 "sa-gm:F[,DAMPING]", "sa-rotd50:F[,DAMPING]", "sa-rotd100:F[,DAMPING]"):  # fmt: skip
+        assert name in text.replace("- ", "-"), name

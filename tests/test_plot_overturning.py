@@ -47,7 +47,7 @@ def test_fig7_and_fig8_analogues():
     labels = _labels(ax)
     for name in ("Housner", "Makris & Roussos", "exact nonlinear"):
         assert any(name in s for s in labels)
-    assert any("0.50 Hz (housner)" in s for s in labels)
+    assert any("0.50 Hz (Housner)" in s for s in labels)
     assert ax.get_xscale() == "log" and "[Hz]" in ax.get_xlabel()
     # the drawn exact curve is the computed one
     exact_line = next(line for line in ax.get_lines() if "exact nonlinear" in line.get_label())
@@ -58,7 +58,7 @@ def test_fig7_and_fig8_analogues():
     fig8 = plot_spectrum_check(limits, spectrum, checks)
     labels8 = _labels(fig8.axes[0])
     assert spectrum.label in labels8
-    assert sum("min margin" in s for s in labels8) == 3
+    assert sum("smallest limit / spectrum" in s for s in labels8) == 3
     assert "[m/s^2]" in fig8.axes[0].get_ylabel()
 
 
@@ -73,7 +73,7 @@ def test_fig8_legend_below_the_axes_and_margin_markers_apart():
     fig.draw_without_rendering()  # runs the constrained layout
     legend_box = fig.legends[0].get_window_extent()
     assert legend_box.y1 <= ax.get_window_extent().y0  # below the axes
-    margins = [line for line in ax.get_lines() if "min margin" in line.get_label()]
+    margins = [line for line in ax.get_lines() if "smallest limit / spectrum" in line.get_label()]
     # two limits may have their smallest margin at the same frequency: different
     # shapes and sizes keep both markers visible
     assert len({(line.get_marker(), line.get_markersize()) for line in margins}) == len(margins)

@@ -7,10 +7,15 @@ API"); they are loaded on first use, so the command line starts fast:
   :func:`load_suite`, :func:`load_station`, :class:`GroundMotion`, :class:`SupportMotion`,
   :class:`Block`, :class:`Stack`, :class:`Friction`, :class:`Sliding`,
   :class:`Excitation`;
-- analyses: :func:`screen` (paper Tables 2-5), :func:`simulate` (time
-  history), :func:`response_spectrum`, :func:`generate_suite`,
-  :func:`floor_motion`, :class:`RockingBlock` and
-  :func:`overturning_limits` (paper Figs. 6-8);
+- analyses, one per command, each returning a result with ``to_dict()``
+  (the command's ``--json``), ``to_frame()`` (a pandas table) and, where the
+  command draws one, ``plot()``: :func:`screen` (paper Tables 2-5),
+  :func:`simulate` (time history), :func:`overturning` (Figs. 6-8),
+  :func:`frequency` (Fig. 9), :func:`mode_map`, :func:`sample` (Monte
+  Carlo), :func:`fragility` (and :func:`fragility_from_store`),
+  :func:`write_report`, :func:`response_spectrum`, :func:`generate_suite`,
+  :func:`floor_motion`; also :class:`RockingBlock` and
+  :func:`overturning_limits`;
 - :class:`FreestandError`, the one error class.
 
 The package is layered:
@@ -48,9 +53,27 @@ _PUBLIC = {
     "screen": "freestand.api",
     "simulate": "freestand.api",
     "support_motion": "freestand.api",
+    "overturning": "freestand.api",
+    "frequency": "freestand.api",
+    "mode_map": "freestand.api",
+    "sample": "freestand.api",
+    "fragility": "freestand.api",
+    "fragility_from_store": "freestand.api",
+    "write_report": "freestand.api",
     "response_spectrum": "freestand.api",
     "generate_suite": "freestand.api",
     "floor_motion": "freestand.api",
+    "ScreeningResult": "freestand.api",
+    "SimulationResult": "freestand.api",
+    "OverturningResult": "freestand.api",
+    "FrequencyResult": "freestand.api",
+    "ModeMapResult": "freestand.api",
+    "SampleResult": "freestand.api",
+    "FragilityResult": "freestand.api",
+    "ReportResult": "freestand.api",
+    "RecordSpectra": "freestand.api",
+    "GeneratedSuite": "freestand.api",
+    "FloorMotion": "freestand.api",
     "load_station": "freestand.io.pairing",
     "RockingBlock": "freestand.core.rocking.properties",
     "overturning_limits": "freestand.core.rocking.overturning",

@@ -21,6 +21,17 @@ class FreestandError(ValueError):
         message when given.
     field : str, optional
         The dotted path of the offending field (``configuration[0].block[1].mass``).
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> try:
+    ...     fs.Block.rectangle("cabinet", -0.6, 2.0, 1200.0, fs.Friction(0.8, 0.7))
+    ... except fs.FreestandError as error:
+    ...     print(error.field, "|", error.detail)
+    width | ...
+    >>> issubclass(fs.FreestandError, ValueError)
+    True
     """
 
     def __init__(self, message: str, *, source: str | None = None, field: str | None = None):

@@ -31,6 +31,7 @@ import numpy as np
 from freestand.core.motion.ground_motion import GroundMotion
 from freestand.core.motion.spectra import Spectrum
 from freestand.errors import FreestandError
+from freestand.io.outputs import check_file, check_writable
 
 #: Frequencies of ``freestand records spectrum`` [Hz]: 0.1 to 100 Hz, 100 per decade.
 SPECTRUM_FREQUENCIES = np.geomspace(0.1, 100.0, 301)
@@ -152,6 +153,15 @@ class RecordSpectra:
         :func:`freestand.io.pairing.pair_components`).
     files : tuple of str
         Files written from this result (``with_files``).
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> spectra = fs.response_spectrum("examples/records/synthetic_H.AT2",
+    ...                                target="rg1.60:pga=0.3g,damping=5%")
+    >>> spectra.to_frame().columns.tolist()
+    ['record', 'component', 'frequency [Hz]', 'psa [m/s^2]', 'target [m/s^2]', 'ratio [-]']
+    >>> fig = spectra.plot()
     """
 
     frequency: np.ndarray
@@ -194,6 +204,12 @@ class RecordSpectra:
         damping, acceleration [m/s^2] at ``frequency``, or None), ``records``
         (the rows), ``pairing`` (the files paired into records, or refused,
         with how and why) and ``files``.
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
         target = self.target
         return {
@@ -219,6 +235,12 @@ class RecordSpectra:
         ``psa [m/s^2]``, ``target [m/s^2]`` (NaN without a target for the
         component), ``ratio [-]`` (psa / target). ``attrs``: damping, targets,
         units.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         import pandas as pd
 
@@ -519,6 +541,16 @@ class GeneratedSuite:
     files : tuple of str
         Files written: the suite file, ``acceptance.json`` and any added by
         :meth:`with_files` (a figure).
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> suite = fs.generate_suite("rg1.60:pga=0.3g,damping=5%", count=2, duration=8.0, seed=7)
+    >>> suite.status, suite.failures
+    ('accepted', ())
+    >>> suite.to_frame()[["record", "component", "passed"]].values.tolist()
+    [[1, 'horizontal', True], [2, 'horizontal', True]]
+    >>> fig = suite.plot()
     """
 
     core: object
@@ -546,7 +578,7 @@ class GeneratedSuite:
         Returns
         -------
         dict
-            ``limit`` [-], ``max`` (the largest |correlation coefficient|
+            ``limit`` [-], ``max`` (the largest absolute correlation coefficient
             between two components of one record, over the suite),
             ``passed``, and ``records``: per record its ``index``, ``max``
             and the coefficient of each pair (``pairs``).
@@ -574,6 +606,12 @@ class GeneratedSuite:
         coefficient between a record's components, per record and for the
         suite), ``output``, ``suite_file`` and ``files``. ``acceptance.json``
         holds the same without the last three.
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
         result = self.core
         criteria = result.criteria
@@ -605,7 +643,13 @@ class GeneratedSuite:
         return document
 
     def acceptance(self) -> dict:
-        """The ``acceptance.json`` document: :meth:`to_dict` without where it was written."""
+        """The ``acceptance.json`` document: :meth:`to_dict` without where it was written.
+
+        Returns
+        -------
+        dict
+            JSON-ready, as written to ``acceptance.json``.
+        """
         document = self.to_dict()
         for key in ("output", "suite_file", "files"):
             document.pop(key)
@@ -620,9 +664,15 @@ class GeneratedSuite:
         ``peak_acceleration [m/s^2]``, ``zero_period_acceleration [m/s^2]``,
         ``peak_ratio [-]``, ``duration_5_75 [s]``, ``final_velocity [m/s]``,
         ``final_displacement [m]``, ``iterations``, ``attempts``, ``passed``,
-        ``component_correlation [-]`` (the largest |correlation coefficient|
+        ``component_correlation [-]`` (the largest absolute correlation coefficient
         between the record's components; NaN for one component). ``attrs``:
         status, seed, dt, targets, suite-mean ratios, failures.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         import pandas as pd
 
@@ -775,7 +825,7 @@ def _check_suite_folder(output: Path) -> None:
     if not parent.is_dir():
         raise FreestandError(f"folder {str(parent)!r} does not exist; create it first",
                              source="output")  # fmt: skip
-    _check_writable_parent(output, "output")
+    check_writable(output, "output")
 
 
 def _check_generation(count, duration, dt, seed) -> None:
@@ -976,6 +1026,16 @@ class FloorMotion:
     outputs : dict
         Files written per component (``"horizontal"``, ``"horizontal_y"``,
         ``"vertical"``).
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> floor = fs.floor_motion("examples/records/synthetic_H.AT2", 2.5, 0.05)
+    >>> round(floor.to_dict()["floor_peak"], 2)
+    7.72
+    >>> floor.to_frame().columns[:2].tolist()
+    ['time [s]', 'ground [m/s^2]']
+    >>> fig = floor.plot()
     """
 
     ground: GroundMotion
@@ -1003,6 +1063,12 @@ class FloorMotion:
         ``floor_peak_vertical`` [m/s^2], ``output``; ``output_vertical`` when
         a vertical file was written; with a second horizontal component
         ``ground_peak_y``, ``floor_peak_y`` [m/s^2] (and ``output_y``).
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
         ground_peak = self.ground.peak_horizontal
         floor_peak = self.floor.peak_horizontal
@@ -1039,6 +1105,12 @@ class FloorMotion:
         where the record has them ``ground_y [m/s^2]``, ``floor_y [m/s^2]``,
         ``ground_vertical [m/s^2]``, ``floor_vertical [m/s^2]`` (downward
         positive). ``attrs``: record, frequency, damping, units.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         import pandas as pd
 
@@ -1120,39 +1192,7 @@ class FloorMotion:
 
 
 def _check_floor_output(output) -> Path:
-    output = Path(output)
-    if output.suffix.lower() not in (".at2", ".csv"):
-        raise FreestandError(
-            f"{str(output)!r} has no .at2 or .csv suffix; e.g. {output.with_suffix('.AT2').name}",
-            source="output",
-        )
-    if output.is_dir():
-        raise FreestandError(f"{str(output)!r} is a folder; give a file name", source="output")
-    _check_writable_parent(output, "output")
-    return output
-
-
-def _check_writable_parent(path: Path, name: str) -> None:
-    """The nearest existing folder above ``path`` is a folder that can be written into."""
-    existing = path.resolve().parent
-    while not existing.exists():
-        existing = existing.parent
-    if not existing.is_dir():
-        raise FreestandError(
-            f"{str(existing)!r} is a file, not a folder, so {str(path)!r} cannot be written "
-            "under it; choose another path",
-            source=name,
-        )
-    try:  # a scratch file: the only sure test of writing
-        handle, scratch = tempfile.mkstemp(prefix=".freestand-check-", dir=existing)
-    except OSError as error:
-        raise FreestandError(
-            f"cannot write into the folder {str(existing)!r} for {str(path)!r} "
-            f"({error.strerror}); choose a folder you can write to",
-            source=name,
-        ) from None
-    os.close(handle)
-    os.unlink(scratch)
+    return check_file(Path(output), "output", (".at2", ".csv"))
 
 
 def floor_motion(

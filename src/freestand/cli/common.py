@@ -1,27 +1,11 @@
 """Helpers shared by the sub-commands: option parsing, consoles, model loading, output paths.
 
-Output paths follow one rule in every command:
-
-- ``--plot FOLDER`` is a folder; the figures are written into it under fixed
-  names (``map.png``, ``fig7_half_sine_pulse.svg``...).
-- every other output (``--csv``, ``--samples``, ``--animate``, ``report -o``)
-  is a file with one of the suffixes the option names.
-- missing folders on the way are created (like ``mkdir -p``), but only once
-  everything is computed; a path under a file, onto a folder, in a folder that
-  cannot be written or with another suffix is refused.
-
-They are checked before any computation (:func:`check_folder`,
-:func:`check_file`), and written through :class:`Staging`: into temporary
-files first, renamed into place only when every output of the command is
-complete, so a failure never leaves a partial set of files behind.
+Output paths are checked and written by :mod:`freestand.io.outputs` (re-exported here).
 """
 
 from __future__ import annotations
 
 import contextlib
-import os
-import shutil
-import tempfile
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -31,7 +15,13 @@ from rich.markup import escape
 from freestand.core.motion.spectra import Spectrum
 from freestand.errors import FreestandError
 from freestand.io.model_file import ModelFile, load_model
-from freestand.io.spectrum_input import parse_spectrum_option
+from freestand.io.outputs import (  # noqa: F401 (the commands' output helpers, re-exported)
+    Staging,
+    check_file,
+    check_folder,
+    check_writable,
+    staging,
+)
 from freestand.io.units import to_si
 
 
@@ -101,30 +91,17 @@ def parse_numbers(
 def resolve_spectrum(option: str | None, model: ModelFile, direction: str) -> Spectrum | None:
     """The spectrum named by ``--spectrum``, else the model's first one for ``direction``.
 
-    A spectrum of the other direction is refused: the horizontal overturning
-    check needs a horizontal spectrum, the jump check a vertical one.
+    A spectrum of the other direction is refused (:func:`freestand.api.base.resolve_spectrum`).
     """
-    if option is None:
-        return model.spectrum(direction)
+    from freestand.api.base import resolve_spectrum as resolve
+    from freestand.api.base import subject
+
     with _busy(
         f"computing the response spectrum of {option.partition(':')[2].partition(',')[0]}"
-        if option.strip().startswith("record:")
+        if option is not None and option.strip().startswith("record:")
         else None
     ):
-        spectrum = parse_spectrum_option(
-            option, model_spectra=model.spectra, base_dir=model.base_dir, gravity=model.gravity
-        )
-    if spectrum.direction != direction:
-        other = ", ".join(
-            repr(name) for name, s in model.spectra.items() if s.direction == direction
-        )
-        raise FreestandError(
-            f"{option!r} is a {spectrum.direction} spectrum; this check needs a {direction} one"
-            + (f" (the model has {other})" if other else "")
-            + f", e.g. 'rg1.60:pga=0.3g,direction={direction}'",
-            source="--spectrum",
-        )
-    return spectrum
+        return resolve(option, subject(model), direction)
 
 
 @contextlib.contextmanager
@@ -140,157 +117,3 @@ def _busy(description: str | None) -> Iterator[None]:
         return
     with err.status(escape(description)):
         yield
-
-
-# --- output paths ---------------------------------------------------------------------------
-
-
-def _check_writable(folder: Path, option: str, what: Path) -> None:
-    """Create and remove a scratch file in ``folder``: the only sure test of writing."""
-    try:
-        handle, scratch = tempfile.mkstemp(prefix=".freestand-check-", dir=folder)
-    except OSError as error:
-        raise FreestandError(
-            f"cannot write into the folder {str(folder)!r} for {str(what)!r} "
-            f"({error.strerror}); choose a folder you can write to",
-            source=option,
-        ) from None
-    os.close(handle)
-    os.unlink(scratch)
-
-
-def _existing_ancestor(path: Path) -> Path:
-    """The nearest folder (or file) above ``path`` that exists."""
-    parent = path.parent
-    while not parent.exists() and parent != parent.parent:
-        parent = parent.parent
-    return parent
-
-
-def _check_parent(path: Path, option: str) -> None:
-    """The folders above ``path`` exist, or can be made, and can be written into."""
-    existing = _existing_ancestor(path)
-    if not existing.is_dir():
-        raise FreestandError(
-            f"{str(existing)!r} is a file, not a folder, so {str(path)!r} cannot be written "
-            "under it; choose another path",
-            source=option,
-        )
-    _check_writable(existing, option, path)
-
-
-def check_folder(path: Path | None, option: str = "--plot") -> Path | None:
-    """Check an output folder before computing: it is (or can be made) a writable folder."""
-    if path is None:
-        return None
-    if path.exists():
-        if not path.is_dir():
-            raise FreestandError(
-                f"{str(path)!r} is a file; {option} takes a folder that the figures are "
-                f"written into, e.g. {option} figures",
-                source=option,
-            )
-        _check_writable(path, option, path)
-        return path
-    if path.suffix:
-        raise FreestandError(
-            f"{str(path)!r} looks like a file name ({path.suffix}); {option} takes a folder "
-            f"that the figures are written into (PNG and SVG, under fixed names), e.g. "
-            f"{option} {path.with_suffix('') if path.stem else 'figures'}",
-            source=option,
-        )
-    _check_parent(path, option)
-    return path
-
-
-def check_file(path: Path | None, option: str, suffixes: tuple[str, ...]) -> Path | None:
-    """Check an output file before computing: a known suffix, in a writable existing folder."""
-    if path is None:
-        return None
-    if path.suffix.lower() not in suffixes:
-        example = path.with_suffix(suffixes[0]) if path.stem else f"out{suffixes[0]}"
-        raise FreestandError(
-            f"{str(path)!r} does not end in {' or '.join(suffixes)}; name the file with one of "
-            f"them, e.g. {option} {example}",
-            source=option,
-        )
-    if path.is_dir():
-        raise FreestandError(
-            f"{str(path)!r} is a folder; give a file name, e.g. {option} "
-            f"{path / ('out' + suffixes[0])}",
-            source=option,
-        )
-    _check_parent(path, option)
-    return path
-
-
-class Staging:
-    """Outputs written to temporary names and renamed into place together.
-
-    Use :meth:`file` and :meth:`folder` for the temporary path to write to;
-    :meth:`commit` renames them to their targets and returns the paths really
-    written. On an error (the ``staging()`` context) every temporary is removed.
-    """
-
-    def __init__(self) -> None:
-        self._files: list[tuple[Path, Path]] = []
-        self._folders: list[tuple[Path, Path]] = []
-
-    def file(self, target: Path) -> Path:
-        """A temporary file for ``target``, with the same suffix."""
-        handle, name = tempfile.mkstemp(
-            prefix=f".{target.stem}.",
-            suffix=f".tmp{target.suffix}",
-            dir=_existing_ancestor(target) if not target.parent.is_dir() else target.parent,
-        )
-        os.close(handle)
-        self._files.append((Path(name), target))
-        return Path(name)
-
-    def folder(self, target: Path) -> Path:
-        """A temporary folder whose files go into ``target`` (created if missing)."""
-        base = target if target.is_dir() else _existing_ancestor(target)
-        name = tempfile.mkdtemp(prefix=f".{target.name or 'figures'}.tmp-", dir=base)
-        self._folders.append((Path(name), target))
-        return Path(name)
-
-    def forget(self, temporary: Path) -> None:
-        """Drop a temporary that was only a step (already removed)."""
-        self._files = [(t, target) for t, target in self._files if t != temporary]
-
-    def commit(self) -> list[Path]:
-        """Rename everything into place; the target paths, in the order written."""
-        written = []
-        for temporary, target in self._folders:
-            target.mkdir(parents=True, exist_ok=True)
-            for item in sorted(temporary.iterdir()):
-                os.replace(item, target / item.name)
-                written.append(target / item.name)
-            shutil.rmtree(temporary, ignore_errors=True)
-        for temporary, target in self._files:
-            target.parent.mkdir(parents=True, exist_ok=True)
-            os.chmod(temporary, 0o644)
-            os.replace(temporary, target)
-            written.append(target)
-        self._files, self._folders = [], []
-        return written
-
-    def discard(self) -> None:
-        """Remove every temporary."""
-        for temporary, _ in self._folders:
-            shutil.rmtree(temporary, ignore_errors=True)
-        for temporary, _ in self._files:
-            temporary.unlink(missing_ok=True)
-        self._files, self._folders = [], []
-
-
-@contextlib.contextmanager
-def staging() -> Iterator[Staging]:
-    """A :class:`Staging` whose temporaries are removed if the block raises."""
-    stage = Staging()
-    try:
-        yield stage
-    except BaseException:
-        stage.discard()
-        raise
-    stage.discard()

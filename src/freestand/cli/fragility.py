@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import json
-import math
+from dataclasses import replace
 from pathlib import Path
 
 import typer
@@ -20,7 +20,7 @@ from rich.progress import (
 from rich.table import Table
 from rich.text import Text
 
-from freestand.cli.common import _check_parent, console
+from freestand.cli.common import check_writable, console
 from freestand.errors import FreestandError
 from freestand.io.fragility_results import im_label
 
@@ -70,7 +70,7 @@ def _check_outputs(plot: Path | None) -> None:
             f"{str(plot)!r} is a folder; give a file name, e.g. --plot {plot / 'fragility.png'}",
             source="--plot",
         )
-    _check_parent(plot, "--plot")
+    check_writable(plot, "--plot")
 
 
 def fragility(
@@ -80,7 +80,12 @@ def fragility(
     ),
     suite: Path = typer.Option(None, "--suite", help="Record suite file (TOML)."),
     im: str = typer.Option(
-        "pga", "--im", help="Intensity measure: pga, pgv, sa:F[,DAMPING], pga-alpha[:BLOCK]."
+        "pga",
+        "--im",
+        help="Intensity measure: pga, pgv, sa:F[,DAMPING], pga-alpha[:BLOCK]; of two "
+        "horizontal components (records with x and y): pga-gm, pga-rotd50, pga-rotd100, "
+        "pgv-gm, pgv-rotd50, pgv-rotd100, sa-gm:F[,DAMPING], sa-rotd50:F[,DAMPING], "
+        "sa-rotd100:F[,DAMPING].",
     ),
     levels: str = typer.Option(
         None,
@@ -124,67 +129,38 @@ def fragility(
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
     """Fragility curves: probability of overturning, sliding, uplift, flight against IM."""
-    from freestand.core.sweeps.fragility.analysis import analyse
-    from freestand.io.fragility_options import parse_outcome
-    from freestand.io.fragility_results import fragility_document
-    from freestand.io.store import CampaignStore
+    from freestand.api.fragility import check_fit_options, fragility_from_store
 
     _check_outputs(plot)
-    if not 0 < confidence < 1:
-        raise FreestandError(f"{confidence} is not in (0, 1); e.g. 0.95", source="--confidence")
-    if bootstrap < 0:
-        raise FreestandError(f"{bootstrap} replicates: give 0 or more", source="--bootstrap")
-    if seed < 0:
-        raise FreestandError(f"{seed} is negative; give a seed >= 0", source="--seed")
+    check_fit_options(bootstrap, confidence, seed)
     if from_store is not None:
-        stored = CampaignStore(from_store)
-        try:
-            definition = stored.definition()
-        except FreestandError as error:
-            if error.source != "--store":
-                raise
-            raise FreestandError(error.detail, source="--from-store") from None
-        rows = stored.read()
-        if not rows:
-            raise FreestandError(
-                f"{str(from_store)!r} holds no simulation yet", source="--from-store"
-            )
-        blocks = definition["blocks"]
-        outcomes = (
-            [parse_outcome(text, blocks) for text in outcome]
-            if outcome
-            else [parse_outcome(text, blocks) for text in definition["outcomes"]]
+        result = fragility_from_store(
+            from_store, outcome or None, bootstrap=bootstrap, confidence=confidence, seed=seed
         )
-        if rows["task"].size < definition["simulations"]:
+        stored, expected = result.core.simulations, result.definition["simulations"]
+        if stored < expected:
             console().print(
-                f"[yellow]the store holds {rows['task'].size} of "
-                f"{definition['simulations']} simulations; fitting those[/]"
+                f"[yellow]the store holds {stored} of {expected} simulations; fitting those[/]"
             )
+        if store is not None:
+            result = replace(result, store=str(store))
     else:
-        definition, rows, outcomes = _run(
+        result = _run(
             model_file, configuration, suite, im, levels, vary, samples, outcome,
-            both_polarities, cloud, workers, scheduler, store, seed, free_time, chunk, as_json,
+            both_polarities, cloud, workers, scheduler, store, seed, free_time, bootstrap,
+            confidence, chunk, as_json,
         )  # fmt: skip
-    result = analyse(
-        rows, outcomes, [] if definition["cloud"] else definition["levels"],
-        unit=definition["im"]["unit"], bootstrap=bootstrap, confidence=confidence, seed=seed,
-    )  # fmt: skip
-    document = fragility_document(definition, result, bootstrap, confidence)
-    if store is not None:
-        document["store"] = str(store)
+    document = result.to_dict()
     written = None
     if plot is not None:
-        from freestand.plot.fragility import plot_fragility, save_fragility_figure
+        from freestand.plot.fragility import save_fragility_figure
 
-        title = f"{definition['model']} / {definition['configuration']}: {result.simulations} sims"
-        written = save_fragility_figure(
-            plot_fragility(result, im_label(definition["im"]), title), plot
-        )
+        written = save_fragility_figure(result.plot(), plot)
     if as_json:
         typer.echo(json.dumps(document, indent=2))
     else:
-        _print(document, result, written)
-    if result.simulations and result.failed == result.simulations:
+        _print(document, written)
+    if result.core.simulations and result.core.failed == result.core.simulations:
         from rich.console import Console
 
         Console(emoji=False, stderr=True).print(
@@ -194,10 +170,9 @@ def fragility(
 
 
 def _run(model_file, configuration, suite, im, levels, vary, samples, outcome, both_polarities,
-         cloud, workers, scheduler, store, seed, free_time, chunk, quiet):  # fmt: skip
-    from freestand.io.campaign_runner import default_chunk_size, run_campaign
-    from freestand.io.fragility_options import build_campaign
-    from freestand.io.fragility_results import campaign_definition
+         cloud, workers, scheduler, store, seed, free_time, bootstrap, confidence, chunk,
+         quiet):  # fmt: skip
+    from freestand.api.fragility import fragility as run_fragility
     from freestand.io.model_file import load_model
     from freestand.io.store import CampaignStore
 
@@ -205,66 +180,40 @@ def _run(model_file, configuration, suite, im, levels, vary, samples, outcome, b
         raise FreestandError("give the model file (or --from-store DIR)", source="MODEL_FILE")
     if suite is None:
         raise FreestandError("give the record suite, e.g. --suite records.toml", source="--suite")
-    if cloud == (levels is not None):
-        raise FreestandError(
-            "give either --levels A:B:N (stripes) or --cloud (unscaled records)", source="--levels"
-        )
-    if workers is not None and workers < 1:
-        raise FreestandError(f"{workers} workers: give 1 or more", source="--workers")
-    if workers is not None and scheduler is not None:
-        raise FreestandError("give --workers or --scheduler, not both", source="--scheduler")
-    if not (free_time >= 0 and math.isfinite(free_time)):
-        raise FreestandError(f"{free_time} s: give 0 or more", source="--free-time")
-    if chunk is not None and chunk < 1:
-        raise FreestandError(f"{chunk}: give 1 or more", source="--chunk")
     model = load_model(model_file)
-    campaign, records = build_campaign(
-        model, configuration, suite, im, levels, vary, samples, outcome, both_polarities,
-        seed, free_time,
-    )  # fmt: skip
-    outcomes = campaign.outcomes
-    size = chunk or default_chunk_size(campaign)
-    definition = campaign_definition(
-        campaign,
-        model_name=model.name,
-        model_source=str(model_file),
-        model_sha256=model.sha256,
-        suite_name=records.name,
-        suite_source=str(suite),
-        chunk_size=size,
-    )
-    target = None
-    if store is not None:
-        target = CampaignStore(store)
-        target.open(definition)
     try:
         with _progress(quiet) as bar:
-            task = bar.add_task("simulating", total=campaign.size)
-            rows = run_campaign(
-                campaign,
-                chunk_size=size,
-                workers=workers,
-                scheduler=scheduler,
-                store=target,
-                progress=lambda n: bar.advance(task, n),
-            )
+            task = bar.add_task("simulating", total=None)
+
+            def advance(count: int, total: int) -> None:
+                bar.update(task, total=total, advance=count)
+
+            return run_fragility(
+                model, suite, im, levels, outcome or None, configuration=configuration,
+                vary=vary or None, samples=samples, both_polarities=both_polarities, cloud=cloud,
+                seed=seed, free_time=free_time, bootstrap=bootstrap, confidence=confidence,
+                workers=workers, scheduler=scheduler, store=store, chunk=chunk,
+                progress=advance,
+            )  # fmt: skip
     except KeyboardInterrupt:
-        kept = (
-            f"{len(target.chunks())} chunk(s) of {size} simulations are in {store}; run the "
-            "same command again to resume"
-            if target is not None
-            else "nothing was kept (give --store DIR to keep finished simulations)"
-        )
+        if store is not None and (store / "campaign.json").is_file():
+            target = CampaignStore(store)
+            size = target.definition()["chunk_size"]
+            kept = (
+                f"{len(target.chunks())} chunk(s) of {size} simulations are in {store}; run the "
+                "same command again to resume"
+            )
+        else:
+            kept = "nothing was kept (give --store DIR to keep finished simulations)"
         console().print(f"[yellow]interrupted:[/] {escape(kept)}")
         raise typer.Exit(130) from None
-    return definition, rows, outcomes
 
 
 def _fmt(value, digits: int = 4) -> str:
     return "-" if value is None else f"{value:.{digits}g}"
 
 
-def _print(document: dict, result, written) -> None:
+def _print(document: dict, written) -> None:
     out = console()
     unit = document["im"]["unit"]
     u = escape(f"[{unit}]")

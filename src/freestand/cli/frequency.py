@@ -5,7 +5,6 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-import numpy as np
 import typer
 from rich.markup import escape
 from rich.table import Table
@@ -18,8 +17,6 @@ from freestand.cli.common import (
     resolve_spectrum,
     staging,
 )
-from freestand.core.structure.beam import frequency_sweep, jump_check
-from freestand.errors import FreestandError
 
 
 def frequency(
@@ -44,88 +41,31 @@ def frequency(
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
     """Lowest vertical frequency against the cart's position, and whether the cart may jump."""
+    from freestand.api.frequency import frequency as frequency_of
+
     model = load(model_file)
     check_folder(plot, "--plot")
-    if model.beam is None:
-        raise FreestandError(
-            "has no [beam] section; add span, youngs_modulus, second_moment, mass, load_mass "
-            "and parking (see the README)",
-            source=model.source,
-        )
-    beam, parking = model.beam.beam, model.beam.parking
     values = parse_numbers(positions, "--positions", "m", "length")
-    if values is not None:
-        for value in values:
-            if not 0 <= value <= beam.span:
-                raise FreestandError(
-                    f"position {value:g} m is outside the span 0 .. {beam.span:g} m; give "
-                    "positions measured from the left support",
-                    source="--positions",
-                )
-    full_sweep = frequency_sweep(beam, parking=parking)
-    sweep = full_sweep if values is None else frequency_sweep(beam, np.array(values))
-    vertical = resolve_spectrum(spectrum, model, "vertical")
-    tolerance = 1e-9 * beam.span
-    parked = [parking[0] - tolerance <= p <= parking[1] + tolerance for p in sweep.position]
-    outside_note = None
-    if not all(parked):
-        outside = ", ".join(
-            f"{p:g}" for p, inside in zip(sweep.position, parked, strict=True) if not inside
-        )
-        outside_note = (
-            f"position(s) {outside} m lie outside the parking range {parking[0]:g}-"
-            f"{parking[1]:g} m: the cart does not park there"
-            + ("; their jump verdict is given as if it did" if vertical else "")
-        )
-    check = None
-    if vertical:
-        # the jump check counts parked positions only; for positions asked outside the
-        # parking range alone, it is made as if the cart parked there (and says so)
-        check = jump_check(sweep, vertical, model.gravity, parking=parking if any(parked) else None)
+    vertical = resolve_spectrum(spectrum, model, "vertical") if model.beam is not None else None
+    result = frequency_of(model, values, spectrum=vertical)
+    sweep, full_sweep, check, parking = (
+        result.sweep,
+        result.full_sweep,
+        result.check,
+        result.parking,
+    )
+    outside_note = result.note
 
     written: list[Path] = []
     if plot is not None:
-        from freestand.plot.frequency import plot_frequency_sweep, save_frequency_figure
+        from freestand.plot.frequency import save_frequency_figure
 
-        full_check = check
-        if vertical is not None and sweep is not full_sweep:
-            full_check = jump_check(full_sweep, vertical, model.gravity, parking=parking)
-        figure = plot_frequency_sweep(
-            full_sweep, parking=parking, jump=full_check, vertical_spectrum=vertical
-        )
         with staging() as stage:
-            save_frequency_figure(figure, stage.folder(plot) / "fig9_frequency")
+            save_frequency_figure(result.plot(), stage.folder(plot) / "fig9_frequency")
             written = stage.commit()
 
     if as_json:
-        rows = []
-        for k, position in enumerate(sweep.position):
-            row = {
-                "position": float(position),
-                "dunkerley": float(sweep.dunkerley[k]),
-                "exact": float(sweep.exact[k]),
-            }
-            if check is not None:
-                row.update(
-                    spectral_acceleration=float(check.spectral_acceleration[k]),
-                    ratio_to_g=float(check.ratio[k]),
-                    verdict=str(check.verdict[k]),
-                )
-            rows.append(row)
-        document = {"model": model.name, "parking": list(parking), "positions": rows}
-        if outside_note:
-            document["note"] = outside_note
-        if check is not None:
-            document["jump_check"] = {
-                "spectrum": check.spectrum_label,
-                "basis": check.basis,
-                "status": check.status,
-                "positions_at_risk": [float(p) for p in check.positions_at_risk],
-                "risk_intervals": [list(run) for run in check.risk_intervals],
-                "minimum_margin": check.minimum_margin,
-                "minimum_margin_position": check.minimum_margin_position,
-                "notes": list(check.notes),
-            }
+        document = result.to_dict()
         document["figures"] = [str(path) for path in written]
         typer.echo(json.dumps(document, indent=2))
         return

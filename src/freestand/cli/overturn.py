@@ -6,11 +6,12 @@ import json
 import math
 from pathlib import Path
 
-import numpy as np
 import typer
 from rich.markup import escape
 from rich.table import Table
 
+from freestand.api.base import subject
+from freestand.api.overturning import FIGURES, check_block, overturning
 from freestand.cli.common import (
     check_folder,
     console,
@@ -19,115 +20,6 @@ from freestand.cli.common import (
     resolve_spectrum,
     staging,
 )
-from freestand.core.contact.screening import Motion, initial_motion
-from freestand.core.rocking.overturning import (
-    CURVE_FREQUENCIES,
-    TABLE_FREQUENCIES,
-    check_spectrum,
-    overturning_limits,
-    rectangular_amplitude_grid,
-    rectangular_pulse_limits,
-)
-from freestand.core.rocking.properties import RockingBlock
-from freestand.errors import FreestandError
-
-#: Highest pulse frequency accepted [Hz]: beyond, the pulse is far shorter than any rocking
-#: period and the overturning amplitude is beyond any support acceleration.
-MAX_FREQUENCY = 100.0
-#: Lowest pulse frequency accepted [Hz]: a pulse of 50 s, longer than any record.
-MIN_FREQUENCY = 0.01
-
-CONCLUSION = (
-    "Housner's half-sine criterion, as the paper applies it, is unconservative (Makris and "
-    "Roussos 2000): a block can overturn in free rocking after the pulse. The corrected "
-    "linearised limit and the exact nonlinear limit are lower, so a pulse of the operating "
-    "amplitude overturns the block up to a higher frequency than the paper's boundary."
-)
-
-
-def _rocking_block(
-    model,
-    configuration: str,
-    block_name: str,
-    pivot: str | None,
-    vertical: bool,
-    restitution: float | None = None,
-):
-    stack = model.configuration(configuration)
-    try:
-        index = stack.block_index(block_name)
-    except KeyError:
-        names = ", ".join(repr(b.name) for b in stack.blocks)
-        raise FreestandError(
-            f"no block named {block_name!r} in configuration {configuration!r}; "
-            f"choose one of {names}",
-            source="--block",
-        ) from None
-    if index != len(stack.blocks) - 1:
-        above = stack.blocks[index + 1].name
-        raise FreestandError(
-            f"block {block_name!r} carries {above!r}; the overturning check is for a block with "
-            "nothing on top, resting on a steady body (the paper's cart on the steady bridge)",
-            source="--block",
-        )
-    if pivot is not None and pivot not in ("left", "right"):
-        raise FreestandError(f"{pivot!r} is not a pivot; use 'left' or 'right'", source="--pivot")
-    block = stack.blocks[index]
-    if not block.base_left < block.centre[0] < block.base_right:
-        raise FreestandError(
-            f"the centre of gravity of {block_name!r} (x = {block.centre[0]:g} m) does not lie "
-            f"between its contacts ({block.base_left:g} .. {block.base_right:g} m): it cannot "
-            "stand, let alone rock about one contact; check its centre and base in "
-            f"{model.source}",
-            source="--block",
-        )
-    vertical_acceleration = vertical_for_overturning(model) if vertical else 0.0
-    if pivot is None:
-        pivot = _default_pivot(model, stack, block)
-    if restitution is not None and not 0 <= restitution <= 1:
-        raise FreestandError(
-            f"{restitution} is not an angular-velocity ratio; give a value in [0, 1] "
-            "(Housner's energy ratio r is its square)",
-            source="--restitution",
-        )
-    rocking = RockingBlock.from_block(
-        block,
-        pivot,
-        gravity=model.gravity,
-        vertical_acceleration=vertical_acceleration,
-        restitution_override=restitution,
-    )
-    return stack, block, pivot, rocking
-
-
-def vertical_for_overturning(model) -> float:
-    """The largest downward vertical support acceleration of the model [m/s^2], 0 if none.
-
-    The weight m (g - a_v) is smallest, and overturning easiest, under it.
-    """
-    return max([0.0] + [max(e.verticals()) for e in model.excitations])
-
-
-def _default_pivot(model, stack, block) -> str:
-    """The pivot the block rocks about under the model's excitations, else the easier one."""
-    for excitation in sorted(model.excitations, key=lambda e: -e.horizontal):
-        for sense in (1, -1):
-            case = initial_motion(
-                stack, excitation.horizontal, excitation.vertical, sense, model.gravity
-            )
-            if case.blocks:
-                state = case.block(block.name)
-                if state.motion in (Motion.ROCK, Motion.SLIDE_ROCK):
-                    return state.pivot
-    thresholds = {
-        side: RockingBlock.from_block(block, side, gravity=model.gravity).uplift_threshold
-        for side in ("left", "right")
-    }
-    return min(thresholds, key=thresholds.get)
-
-
-def _finite(value: float) -> float | None:
-    return float(value) if math.isfinite(value) else None
 
 
 def overturn(
@@ -186,50 +78,39 @@ def overturn(
     model = load(model_file)
     check_folder(plot, "--plot")
     names = list(dict.fromkeys(configuration))
-    blocks = {
-        name: _rocking_block(model, name, block, pivot, include_vertical, restitution)
-        for name in names
-    }
+    for name in names:
+        check_block(subject(model), model.configuration(name), block, pivot)
     amplitude_values = parse_numbers(
         amplitudes, "--amplitudes", "m/s^2", "acceleration", model.gravity
-    ) or sorted({e.horizontal for e in model.excitations})
-    frequency_values = parse_numbers(frequencies, "--frequencies", "Hz", "frequency") or list(
-        TABLE_FREQUENCIES
     )
-    for value in amplitude_values:
-        if not value > 0:
-            raise FreestandError(
-                f"{value:g} m/s^2 is not a positive amplitude; e.g. --amplitudes 0.5g,1g",
-                source="--amplitudes",
-            )
-    for value in frequency_values:
-        if not MIN_FREQUENCY <= value <= MAX_FREQUENCY:
-            raise FreestandError(
-                f"{value:g} Hz is not a pulse frequency; give frequencies between "
-                f"{MIN_FREQUENCY:g} and {MAX_FREQUENCY:g} Hz, e.g. --frequencies 0.5,1,2",
-                source="--frequencies",
-            )
+    frequency_values = parse_numbers(frequencies, "--frequencies", "Hz", "frequency")
     horizontal = resolve_spectrum(spectrum, model, "horizontal")
+    results = [
+        overturning(
+            model,
+            configuration=name,
+            block=block,
+            pivot=pivot,
+            spectrum=horizontal,
+            amplitudes=amplitude_values,
+            frequencies=frequency_values,
+            restitution=restitution,
+            include_vertical=include_vertical,
+        )  # fmt: skip
+        for name in names
+    ]
     documents = []
     with staging() as stage:
-        for name in names:
-            folder = None
+        for result in results:
             if plot is not None:
-                folder = stage.folder(plot if len(names) == 1 else plot / _folder_name(name))
-            documents.append(
-                _check_one(
-                    model,
-                    name,
-                    block,
-                    blocks[name],
-                    amplitude_values,
-                    frequency_values,
-                    horizontal,
-                    include_vertical,
-                    folder,
-                    as_json,
-                )  # fmt: skip
-            )
+                folder = stage.folder(
+                    plot if len(names) == 1 else plot / _folder_name(result.configuration)
+                )
+                _save_figures(result, folder)
+            if as_json:
+                documents.append(result.to_dict())
+            else:
+                _print(model, result)
         written = stage.commit()
     if as_json:
         for document in documents:
@@ -251,115 +132,31 @@ def _folder_name(configuration: str) -> str:
     )
 
 
-def _check_one(
-    model, configuration, block, rocking_block, amplitude_values, frequency_values,
-    horizontal, include_vertical, plot, as_json,
-) -> dict | None:  # fmt: skip
-    """Compute (and print, unless ``as_json``) the check of one configuration.
+def _save_figures(result, folder: Path) -> None:
+    """The Figs. 6-8 analogues of one configuration into ``folder`` (PNG and SVG)."""
+    from freestand.plot.figures import save_figure
 
-    ``plot`` is the (staged) folder to write the figures into, or None. Returns
-    the JSON document (without its ``figures``) when ``as_json``.
-    """
-    _, _, pivot, rocking = rocking_block
-    weight = (
-        f"weight m (g - a_v) with a_v = {vertical_for_overturning(model):.2f} m/s^2 downward"
-        if include_vertical
-        else "weight m g (the vertical support acceleration not included; see --include-vertical)"
-    )
-    operating = max(e.horizontal for e in model.excitations)
-    rectangular = rectangular_pulse_limits(
-        rocking, np.array(amplitude_values), operating_amplitude=operating
-    )
-    requested = np.array(sorted(set(frequency_values)))
-    half_sine = overturning_limits(rocking, requested, kind="half-sine")
-    curves = overturning_limits(
-        rocking, CURVE_FREQUENCIES, kind="half-sine", operating_amplitude=operating
-    )
-    one_sine = overturning_limits(rocking, requested, kind="one-sine")
-    one_cosine = overturning_limits(rocking, requested, kind="one-cosine")
-    checks = check_spectrum(curves, horizontal) if horizontal is not None else {}
+    for figure, name in FIGURES.items():
+        if figure != "spectrum" or result.spectrum is not None:
+            save_figure(result.plot(figure=figure), folder / name)
 
-    if plot is not None:
-        from freestand.plot.overturning import (
-            plot_pulse_limits,
-            plot_rectangular_pulse,
-            plot_spectrum_check,
-            save_figure,
-        )
 
-        amplitude_grid = rectangular_amplitude_grid(rocking, operating)
-        curve = rectangular_pulse_limits(rocking, amplitude_grid, operating_amplitude=operating)
-        save_figure(plot_rectangular_pulse(curve), plot / "fig6_rectangular_pulse")
-        save_figure(plot_pulse_limits(curves), plot / "fig7_half_sine_pulse")
-        if horizontal is not None:
-            figure = plot_spectrum_check(curves, horizontal, checks)
-            save_figure(figure, plot / "fig8_spectrum_check")
+def _print(model, result) -> None:
+    """The tables of one configuration's check."""
+    from freestand.api.overturning import CONCLUSION
 
+    rocking, pivot = result.rocking, result.pivot
     properties = {side: rocking.about(side) for side in ("pivot", "other")}
-    if as_json:
-        first = properties["pivot"]
-        document = {
-            "block": block,
-            "configuration": configuration,
-            "pivot": pivot,
-            "R": first.R,
-            "alpha": first.alpha,
-            "p": first.p,
-            "inertia_about_pivot": first.inertia_about_pivot,
-            "uplift_threshold": first.uplift_threshold,
-            "restitution": rocking.restitution,
-            "other_pivot": {
-                "R": properties["other"].R,
-                "alpha": properties["other"].alpha,
-                "p": properties["other"].p,
-                "uplift_threshold": properties["other"].uplift_threshold,
-            },
-            "rectangular": [
-                {"amplitude": float(a), "housner": _finite(h), "exact": _finite(e)}
-                for a, h, e in zip(
-                    rectangular.amplitude, rectangular.housner, rectangular.exact, strict=True
-                )
-            ],
-            "half_sine": [
-                {
-                    "frequency": float(f),
-                    "housner": _finite(half_sine.limits["housner"][k]),
-                    "linear": _finite(half_sine.limits["makris-roussos"][k]),
-                    "exact": _finite(half_sine.limits["exact"][k]),
-                }
-                for k, f in enumerate(half_sine.frequency)
-            ],
-            "one_sine": [
-                {"frequency": float(f), "exact": _finite(one_sine.limits["exact"][k])}
-                for k, f in enumerate(one_sine.frequency)
-            ],
-            "one_cosine": [
-                {"frequency": float(f), "exact": _finite(one_cosine.limits["exact"][k])}
-                for k, f in enumerate(one_cosine.frequency)
-            ],
-            "operating_amplitude": operating,
-            "overturns_below_frequency": {
-                k: _finite(v) for k, v in curves.operating_frequency.items()
-            },
-            "spectrum_check": {
-                name: {
-                    "verdict": check.verdict,
-                    "min_ratio": _finite(check.min_ratio),
-                    "frequency": _finite(check.frequency_at_min),
-                    "spectrum": check.spectrum_label,
-                }
-                for name, check in checks.items()
-            },
-            "weight": "m (g - a_v)" if include_vertical else "m g",
-            "vertical_acceleration": vertical_for_overturning(model) if include_vertical else 0.0,
-            "conclusion": CONCLUSION,
-        }
-        return document
-
+    rectangular, half_sine = result.rectangular, result.half_sine
+    one_sine, one_cosine = result.one_sine, result.one_cosine
+    operating, curves, checks = result.operating_amplitude, result.curves, result.checks
     out = console()
     out.print(
         f"[bold]{escape(model.name)}[/]: "
-        + escape(f"overturning of {block!r} in {configuration!r} (paper section 5); {weight}")
+        + escape(
+            f"overturning of {result.block!r} in {result.configuration!r} (paper section 5); "
+            f"{result.weight}"
+        )
     )
     table = Table(title="Rocking properties (Housner 1963)")
     for header in (
@@ -432,7 +229,7 @@ def _check_one(
         out.print(f"  {name:15s} {text}")
     out.print(CONCLUSION)
     if checks:
-        table = Table(title=escape(f"Spectrum check (paper Fig. 8): {horizontal.label}"))
+        table = Table(title=escape(f"Spectrum check (paper Fig. 8): {result.spectrum.label}"))
         for header in ("limit", "verdict", "min. limit / spectrum [-]", "at [Hz]"):
             table.add_column(escape(header))
         for name, check in checks.items():
@@ -440,7 +237,6 @@ def _check_one(
                 name, check.verdict, f"{check.min_ratio:.2f}", f"{check.frequency_at_min:.2f}"
             )
         out.print(table)
-    return None
 
 
 def register(app: typer.Typer) -> None:

@@ -16,7 +16,7 @@ from rich.markup import escape
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from freestand.cli.common import _check_parent, console
+from freestand.cli.common import check_file, console
 from freestand.errors import FreestandError
 
 records_app = typer.Typer(
@@ -46,21 +46,6 @@ def _call(function, options: dict[str, str], *args, **kwargs):
         return function(*args, **kwargs)
     except FreestandError as error:
         raise _as_option(error, options) from None
-
-
-def _check_output_file(path: Path | None, option: str, suffixes: tuple[str, ...]) -> None:
-    """Refuse, before computing, an output file of the wrong type or in a non-folder."""
-    if path is None:
-        return
-    if path.suffix.lower() not in suffixes:
-        raise FreestandError(
-            f"{str(path)!r} has no {' or '.join(suffixes)} suffix; e.g. {option} "
-            f"{path.with_suffix(suffixes[0]).name}",
-            source=option,
-        )
-    if path.is_dir():
-        raise FreestandError(f"{str(path)!r} is a folder; give a file name", source=option)
-    _check_parent(path, option)
 
 
 def _save_figure(figure, path: Path) -> None:
@@ -123,8 +108,8 @@ def spectrum(
     from freestand.api.records import response_spectrum, write_atomic
     from freestand.core.motion.spectrum_matching import AcceptanceCriteria
 
-    _check_output_file(plot, "--plot", _FIGURE_SUFFIXES)
-    _check_output_file(csv_file, "--csv", (".csv",))
+    check_file(plot, "--plot", _FIGURE_SUFFIXES)
+    check_file(csv_file, "--csv", (".csv",))
     options = {"damping": "--damping", "target": "--target", "vertical_target": "--vertical-target"}
     result = _call(
         response_spectrum, options, records, damping=damping, target=target,
@@ -251,7 +236,7 @@ def generate(
     """Generate a suite of spectrum-compatible records, with acceptance checks and a suite file."""
     from freestand.api.records import generate_suite
 
-    _check_output_file(plot, "--plot", _FIGURE_SUFFIXES)
+    check_file(plot, "--plot", _FIGURE_SUFFIXES)
     total = count * (1 + (vertical is not None) + (horizontal_y is not None))
     progress = _progress(quiet or as_json)
     arguments = dict(
@@ -392,7 +377,7 @@ def floor(
             "a vertical mode filters a vertical record; give it with --vertical FILE",
             source="--vertical-frequency",
         )
-    _check_output_file(plot, "--plot", _FIGURE_SUFFIXES)
+    check_file(plot, "--plot", _FIGURE_SUFFIXES)
     result = _call(
         floor_motion, _FLOOR_OPTIONS, record, frequency, damping, vertical=vertical,
         vertical_frequency=vertical_frequency, output=output, dt=dt, unit=unit, gravity=GRAVITY,

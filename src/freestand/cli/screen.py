@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 from dataclasses import replace
 from importlib import resources
 from pathlib import Path
@@ -13,11 +12,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from freestand.cli.common import load
-from freestand.core.contact.screening import force_envelope
-from freestand.core.contact.screening import screen as screen_stack
-from freestand.core.model import VERTICAL_SENSES
 from freestand.errors import FreestandError
-from freestand.io.results import envelope_document, screening_document
 from freestand.report.tables import (
     FORCE_HEADERS,
     MOTION_HEADERS,
@@ -53,29 +48,15 @@ def screen(
     ),
 ) -> None:
     """Initial motion and contact forces of every configuration, excitation and sense."""
+    from freestand.api.screening import screen as screen_model
+
     model = load(model_file)
-    if vertical_senses is not None and vertical_senses not in VERTICAL_SENSES:
-        raise FreestandError(
-            f"{vertical_senses!r} is not a choice; use "
-            + " or ".join(repr(sense) for sense in VERTICAL_SENSES)
-            + ", e.g. --vertical-senses both",
-            source="--vertical-senses",
-        )
-    stacks = (
-        [model.configuration(name) for name in dict.fromkeys(configuration)]
-        if configuration
-        else list(model.configurations)
+    result = screen_model(
+        model, configurations=configuration or None, vertical_senses=vertical_senses
     )
-    cases = [
-        case
-        for stack in stacks
-        for case in screen_stack(stack, model.excitations, model.gravity, vertical_senses)
-    ]
-    envelope = force_envelope(cases)
+    cases, envelope, stacks = result.cases, result.envelope, result.configurations
     if as_json:
-        document = screening_document(model.name, cases, model.gravity)
-        document["force_envelope"] = [envelope_document(item) for item in envelope]
-        typer.echo(json.dumps(document, indent=2))
+        typer.echo(result.to_json())
         return
     console = Console(emoji=False)
     if not console.is_terminal:
@@ -159,7 +140,7 @@ def screen(
             *[escape(str(c)) for c in row.cells], style="yellow" if row.flag else None
         )
     console.print(cases_table)
-    flagged = [case for case in cases if case.status in ("ambiguous", "inconsistent")]
+    flagged = result.flagged
     for case in flagged:
         console.print(
             "[yellow]"

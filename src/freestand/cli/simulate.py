@@ -7,13 +7,14 @@ import json
 import math
 from pathlib import Path
 
-import numpy as np
 import typer
 from rich.console import Console
 from rich.markup import escape
 from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
+from freestand.api.simulation import check_options, support_motion
+from freestand.api.simulation import simulate as simulate_model
 from freestand.cli.common import (
     Staging,
     check_file,
@@ -24,19 +25,8 @@ from freestand.cli.common import (
     staging,
     warn,
 )
-from freestand.core.dynamics.timehistory import METHODS, SupportMotion
-from freestand.core.dynamics.timehistory import simulate as simulate_stack
 from freestand.errors import FreestandError
 from freestand.io.records import check_record_values, load_record, parse_spectral_target
-
-#: Most integration steps a given --step may ask for (duration / step): beyond, a run lasts
-#: minutes; a typo such as --step 1e-7 is refused instead of running for hours. Without
-#: --step the engine chooses its own steps and a record of any length is taken.
-MAX_STEPS = 20_000_000
-
-
-def _number(value: float) -> float | None:
-    return float(value) if math.isfinite(value) else None
 
 
 def simulate(
@@ -132,31 +122,10 @@ def simulate(
         raise FreestandError(
             f"{peak} is not a positive peak; e.g. --peak 0.3g or --peak 2.9", source="--peak"
         )
-    if step is not None and not (math.isfinite(step) and step > 0):
-        raise FreestandError(
-            f"{step} is not a positive step [s]; e.g. --step 0.001", source="--step"
-        )
-    if duration is not None and not (math.isfinite(duration) and duration > 0):
-        raise FreestandError(
-            f"{duration} is not a positive duration [s]; give the simulated time, e.g. "
-            "--duration 10, or leave it out to simulate the whole record",
-            source="--duration",
-        )
     if dt is not None and not (math.isfinite(dt) and dt > 0):
         raise FreestandError(
             f"{dt} is not a positive time step [s]; e.g. --dt 0.005", source="--dt"
         )
-    if method not in METHODS:
-        raise FreestandError(
-            f"{method!r} is not a solver; use " + ", ".join(METHODS), source="--method"
-        )
-    for stack in stacks:
-        if method == "single-block" and len(stack.blocks) != 1:
-            raise FreestandError(
-                f"--method {method} does not apply to {stack.name!r} ({len(stack.blocks)} "
-                "blocks); use auto, general, or single-block for a one-block configuration",
-                source="--method",
-            )
     check_drawing_options(plot, animate, exaggerate)
     motion = load_record(record, dt=dt, unit=unit, gravity=model.gravity, vertical=vertical)
     try:
@@ -173,26 +142,15 @@ def simulate(
     check_record_values(motion.horizontal, str(record), model.gravity, "scaled horizontal")
     if motion.vertical is not None:
         check_record_values(motion.vertical, str(record), model.gravity, "scaled vertical")
-    end = motion.duration if duration is None else duration
-    if step is not None and end / step > MAX_STEPS:
-        raise FreestandError(
-            f"{end:g} s in steps of {step:g} s is {end / step:.3g} integration steps, beyond "
-            f"the {MAX_STEPS:.0e} freestand takes on in one run; give a larger --step (e.g. "
-            f"--step {10 * end / MAX_STEPS:g}), a shorter --duration, or no --step at all",
-            source="--step",
-        )
-    support = SupportMotion(
-        motion.dt,
-        np.asarray(motion.horizontal),
-        None if motion.vertical is None else np.asarray(motion.vertical),
-    )
+    support = support_motion(motion)
+    for stack in stacks:
+        check_options(stack, support, duration, method, step)
     documents = []
     results = []
     for stack in stacks:
-        result, document, written = _simulate_one(
-            model, stack, motion, support, duration, method, step, plot, animate, exaggerate,
-            as_json,
-        )  # fmt: skip
+        result, document = _simulate_one(
+            model, stack, motion, duration, method, step, plot, animate, exaggerate, as_json
+        )
         results.append(result)
         documents.append(document)
     if as_json:
@@ -200,67 +158,31 @@ def simulate(
     _exit_if_failed(results)
 
 
-def _simulate_one(
-    model, stack, motion, support, duration, method, step, plot, animate, exaggerate, as_json
-):
+def _simulate_one(model, stack, motion, duration, method, step, plot, animate, exaggerate,
+                  as_json):  # fmt: skip
     """Simulate one configuration; print its tables unless ``as_json``.
 
-    Returns (result, JSON document, paths written).
+    Returns (result, JSON document or None).
     """
-    configuration = stack.name
     with _progress_bar(as_json) as progress:
-        result = simulate_stack(
-            stack, support, duration, method=method, max_step=step, gravity=model.gravity,
+        result = simulate_model(
+            model, motion, duration, configuration=stack.name, method=method, max_step=step,
             progress=progress,
         )  # fmt: skip
-    title = (
-        f"{model.name} / {configuration}: {motion.name}, peak {motion.peak_horizontal:.2f} m/s^2"
-    )
     with staging() as stage:
-        draw(result, stack, support, plot, animate, exaggerate, title, stage)
+        draw(result, plot, animate, exaggerate, stage)
         written = stage.commit()
-    kinds = sorted({event.kind for event in result.events})
-    counts = {kind: sum(event.kind == kind for event in result.events) for kind in kinds}
-    blocks = []
-    for index, name in enumerate(result.block_names):
-        blocks.append(
-            {
-                "name": name,
-                "max_rotation": _number(result.max_rotation[index]),
-                "max_slide": _number(result.max_slide[index]),
-                "uplift": bool(result.uplift[index]),
-                "free_flight": bool(result.free_flight[index]),
-                "overturned": bool(result.overturned[index]),
-                "overturn_time": _number(result.overturn_time[index]),
-            }
-        )
     if as_json:
-        document = {
-            "model": model.name,
-            "configuration": configuration,
-            "record": motion.name,
-            "dt": motion.dt,
-            "peak_horizontal": motion.peak_horizontal,
-            "scale_factor": motion.metadata.get("scale_factor", 1.0),
-            "status": result.status,
-            "message": result.message,
-            "method": result.diagnostics.method,
-            "fallback": result.diagnostics.fallback,
-            "blocks": blocks,
-            "events": counts,
-            "figures": [str(path) for path in written],
-            "first_events": [
-                {"time": event.time, "kind": event.kind, "interface": event.interface}
-                for event in result.events[:50]
-            ],
-        }
-        return result, document, written
+        document = result.to_dict()
+        document["figures"] = [str(path) for path in written]
+        return result, document
+    blocks = result.blocks()
     out = console()
     out.print(
         f"[bold]{escape(model.name)}[/] / "
         + escape(
-            f"{configuration}: {motion.name}, {motion.duration:.2f} s, "
-            f"peak {motion.peak_horizontal:.2f} m/s^2; status {result.status}"
+            f"{result.configuration}: {result.record}, {motion.duration:.2f} s, "
+            f"peak {result.peak_horizontal:.2f} m/s^2; status {result.status}"
             + (f" ({result.message})" if result.message else "")
         )
     )
@@ -290,12 +212,13 @@ def _simulate_one(
         + (f" (single-block path not used: {result.diagnostics.fallback})"
            if result.diagnostics.fallback else "")
     ))  # fmt: skip
+    counts = result.event_counts()
     out.print(
         "Events: " + (", ".join(f"{kind} x{count}" for kind, count in counts.items()) or "none")
     )
     for path in written:
         out.print(escape(f"wrote {path}"), highlight=False)
-    return result, None, written
+    return result, None
 
 
 def _exit_if_failed(results) -> None:
@@ -342,21 +265,14 @@ def check_drawing_options(plot: Path | None, animate: Path | None, exaggerate: f
         )
 
 
-def draw(result, stack, support, plot, animate, exaggerate, title, stage: Staging) -> None:
+def draw(result, plot, animate, exaggerate, stage: Staging) -> None:
     """Write the figure into ``plot`` and the GIF to ``animate`` (each if given), staged."""
     if plot is not None:
-        from freestand.plot.timehistory import time_history_figures
+        from freestand.plot.figures import save_figure
 
-        time_history_figures(
-            result, stage.folder(plot), support_motion=support, stack=stack, title=title
-        )
+        save_figure(result.plot(), stage.folder(plot) / "time-history")
     if animate is not None:
-        from freestand.plot.timehistory import animate_time_history
-
-        animate_time_history(
-            result, stack, stage.file(animate), support_motion=support,
-            exaggeration=exaggerate, title=title,
-        )  # fmt: skip
+        result.animate(stage.file(animate), exaggeration=exaggerate)
 
 
 def register(app: typer.Typer) -> None:

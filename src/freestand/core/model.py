@@ -37,6 +37,12 @@ class Sliding(StrEnum):
     ``free``: both ways; ``none``: never (wheel flanges, pins); ``no-right``: an
     end stop, the block cannot slide further to the right (+x) relative to the
     body below; ``no-left``: likewise to the left.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> fs.Sliding("no-right").allows(+1), fs.Sliding("no-right").allows(-1)
+    (False, True)
     """
 
     FREE = "free"
@@ -67,6 +73,12 @@ class Friction:
     kinetic : float
         Kinetic coefficient mu [-]: while sliding, ``|T| = kinetic * N``
         against the sliding. Not above ``static``.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> fs.Friction(static=0.8, kinetic=0.7)
+    Friction(static=0.8, kinetic=0.7)
     """
 
     static: float
@@ -100,6 +112,17 @@ class Block:
     contact_names : tuple of str
         Names of the left and right lower contacts, for tables (the paper's
         G/H, C/D, E/F, A/B); ``("left", "right")`` by default.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> cabinet = fs.Block.rectangle("cabinet", 0.6, 2.0, 1200.0, fs.Friction(0.8, 0.7))
+    >>> cabinet.centre, cabinet.base_left, cabinet.base_right  # [m]
+    ((0.0, 1.0), -0.3, 0.3)
+    >>> cabinet.inertia  # m (b^2 + h^2) / 12 [kg m^2]
+    436.0
+    >>> frame = fs.Block("frame", mass=150.0, inertia=14.0, centre=(0.0, 0.15), base_left=-0.5,
+    ...                  base_right=0.5, base_level=0.0, friction=fs.Friction(0.5, 0.4))
     """
 
     name: str
@@ -201,6 +224,16 @@ class Stack:
         Configuration name (``"y-z"``, ``"x-z cart right"``).
     blocks : tuple of Block
         Bottom to top; block 0 rests on the support.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> frame = fs.Block.rectangle("frame", 1.0, 0.3, 150.0, fs.Friction(0.5, 0.4))
+    >>> cabinet = fs.Block.rectangle("cabinet", 0.8, 2.2, 600.0, fs.Friction(0.4, 0.35),
+    ...                              level=0.3)
+    >>> stack = fs.Stack("cabinet on frame", (frame, cabinet))  # bottom first
+    >>> stack.block_index("cabinet"), stack.unsupported()
+    (1, ())
     """
 
     name: str
@@ -260,6 +293,13 @@ class Excitation:
         ``"given"``: analyse ``vertical`` as given; ``"both"``: analyse
         ``+|a_ver|`` (downward) and ``-|a_ver|`` (upward), for the envelope of
         the contact forces.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> level = fs.Excitation("SL-2", horizontal=3.5, vertical=2.3, vertical_senses="both")
+    >>> level.verticals()  # a_v downward, then upward [m/s^2]
+    (2.3, -2.3)
     """
 
     name: str

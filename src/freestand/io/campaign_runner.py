@@ -191,3 +191,63 @@ def run_campaign(
     if store is not None:
         return store.read()
     return _merge(parts)
+
+
+def run_fragility(
+    campaign: Campaign,
+    *,
+    model_name: str,
+    model_source: str,
+    model_sha256: str,
+    suite_name: str,
+    suite_source: str,
+    chunk_size: int | None = None,
+    workers: int | None = None,
+    scheduler=None,
+    store=None,
+    progress: Callable[[int], None] | None = None,
+    bootstrap: int = 1000,
+    confidence: float = 0.95,
+    seed: int = 0,
+):
+    """Run a campaign (or what its store lacks) and fit every outcome.
+
+    Parameters
+    ----------
+    campaign : Campaign
+    model_name, model_source, model_sha256, suite_name, suite_source : str
+        What the definition (and the store's fingerprint) records of the inputs.
+    chunk_size, workers, scheduler, progress
+        As for :func:`run_campaign`.
+    store : str or pathlib.Path, optional
+        A store folder: opened (created, or checked to hold this campaign)
+        and resumed.
+    bootstrap, confidence, seed
+        As for :func:`freestand.core.sweeps.fragility.analysis.analyse`.
+
+    Returns
+    -------
+    tuple
+        (definition dict, FragilityResult).
+    """
+    from freestand.core.sweeps.fragility.analysis import analyse
+    from freestand.io.fragility_results import campaign_definition
+
+    size = chunk_size or default_chunk_size(campaign)
+    definition = campaign_definition(
+        campaign, model_name=model_name, model_source=model_source, model_sha256=model_sha256,
+        suite_name=suite_name, suite_source=suite_source, chunk_size=size,
+    )  # fmt: skip
+    target = None
+    if store is not None:
+        target = CampaignStore(store)
+        target.open(definition)
+    rows = run_campaign(
+        campaign, chunk_size=size, workers=workers, scheduler=scheduler, store=target,
+        progress=progress,
+    )  # fmt: skip
+    result = analyse(
+        rows, campaign.outcomes, campaign.levels, unit=campaign.measure.unit,
+        bootstrap=bootstrap, confidence=confidence, seed=seed,
+    )  # fmt: skip
+    return definition, result

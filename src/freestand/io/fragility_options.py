@@ -26,10 +26,32 @@ from freestand.core.sweeps.fragility.intensity import KINDS, IntensityMeasure
 from freestand.core.sweeps.fragility.outcomes import KINDS as OUTCOME_KINDS
 from freestand.core.sweeps.fragility.outcomes import Outcome
 from freestand.errors import FreestandError
+from freestand.io.table_keys import TableKey
 from freestand.io.units import to_si
 
 _QUANTITY = {"m/s^2": "acceleration", "-": "dimensionless"}
 
+
+#: The keys of a model file's ``[fragility]`` table (the options of ``freestand fragility``).
+FRAGILITY_KEYS = {
+    "suite": TableKey("the record suite file, relative to the model file", required=True),
+    "configuration": TableKey("the configuration", shown_default="the first"),
+    "im": TableKey("the intensity measure, as --im", default="pga"),
+    "levels": TableKey(
+        'the levels, as --levels, e.g. "1:8:15" (IM unit); or cloud = true',
+        shown_default="required without cloud",
+    ),
+    "cloud": TableKey("run the records unscaled (cloud analysis)", default=False),
+    "outcomes": TableKey(
+        "the outcomes, as --outcome", default=(), shown_default="per configuration"
+    ),
+    "vary": TableKey("uncertain inputs, as --vary", default=(), shown_default="none"),
+    "samples": TableKey("samples per record and level", "-", shown_default="1; 10 with vary"),
+    "both_polarities": TableKey("also run every record negated", default=False),
+    "seed": TableKey("seed of the inputs and of the bootstrap", "-", default=0),
+    "bootstrap": TableKey("bootstrap replicates", "-", default=1000),
+    "free_time": TableKey("cap on the time simulated after a record", "s", default=10.0),
+}
 
 #: Most samples per record and level: with 1000 levels and a suite of 30 records, 3e8
 #: simulations already; beyond, a typo (--samples 100000000) would not finish.
@@ -127,9 +149,16 @@ def parse_levels(
         raise FreestandError(
             f"{text!r} is not A:B:N or a list; e.g. 0.5:10:20 or 1,2,4", source=option
         )
+    return check_levels(levels, option, text)
+
+
+def check_levels(levels, option: str = "--levels", text: str | None = None) -> np.ndarray:
+    """The levels [IM unit] as an array; a FreestandError unless positive and increasing."""
+    levels = np.atleast_1d(np.asarray(levels, dtype=float))
     if levels.size == 0 or np.any(~(levels > 0)) or np.any(np.diff(levels) <= 0):
+        given = text if text is not None else ", ".join(f"{x:g}" for x in levels)
         raise FreestandError(
-            f"{text!r}: the levels must be positive and increasing; e.g. 0.5:10:20",
+            f"{given!r}: the levels must be positive and increasing; e.g. 0.5:10:20",
             source=option,
         )
     return levels
@@ -218,15 +247,18 @@ def build_campaign(
     model : ModelFile
     configuration : str or None
         Configuration name (None: the first).
-    suite : str or Path
-        Record suite file.
-    im, levels : str
-        ``--im`` and ``--levels`` (None for a cloud analysis).
-    vary : list of str or None
+    suite : str, Path or RecordSuite
+        Record suite file (or the suite, loaded).
+    im : str or IntensityMeasure
+        ``--im``.
+    levels : str, sequence of float or None
+        ``--levels`` (``"A:B:N"`` or a list) or the levels [IM unit]; None for
+        a cloud analysis.
+    vary : list of str or Variation, or None
         ``--vary`` options.
     samples : int or None
         Samples per record and level (None: 1, or 10 with variations).
-    outcome : list of str or None
+    outcome : list of str or Outcome, or None
         ``--outcome`` options (None: the configuration's defaults).
     both_polarities : bool
     seed : int
@@ -242,18 +274,30 @@ def build_campaign(
     """
     from freestand.core.sweeps.fragility.campaign import Campaign
     from freestand.core.sweeps.fragility.outcomes import default_outcomes
+    from freestand.core.sweeps.sampling import Variation
     from freestand.io.parameters import check_parameters, parse_variation
-    from freestand.io.suites import load_suite
+    from freestand.io.suites import RecordSuite, load_suite
 
     cloud = levels is None
     stack = model.configuration(configuration) if configuration else model.configurations[0]
-    measure = parse_intensity(im, stack, source + "--im")
-    level_values = (
-        [] if cloud else parse_levels(levels, measure, model.gravity, source + "--levels")
+    measure = (
+        im if isinstance(im, IntensityMeasure) else parse_intensity(im, stack, source + "--im")
     )
-    variations = [parse_variation(text, "--vary", model.gravity) for text in vary or []]
+    level_values = (
+        []
+        if cloud
+        else parse_levels(levels, measure, model.gravity, source + "--levels")
+        if isinstance(levels, str)
+        else check_levels(levels, source + "--levels")
+    )
+    variations = [
+        text if isinstance(text, Variation) else parse_variation(text, "--vary", model.gravity)
+        for text in vary or []
+    ]
     check_parameters(
-        [(v.parameter, t) for v, t in zip(variations, vary or [], strict=True)], [stack], "--vary"
+        [(v.parameter, str(t)) for v, t in zip(variations, vary or [], strict=True)],
+        [stack],
+        "--vary",
     )
     for variation, text in zip(variations, vary or [], strict=True):
         if variation.parameter.field in ("horizontal", "vertical"):
@@ -277,7 +321,10 @@ def build_campaign(
         )
     names = [b.name for b in stack.blocks]
     outcomes = (
-        tuple(parse_outcome(text, names, source + "--outcome") for text in outcome)
+        tuple(
+            text if isinstance(text, Outcome) else parse_outcome(text, names, source + "--outcome")
+            for text in outcome
+        )
         if outcome
         else default_outcomes(stack)
     )
@@ -286,7 +333,7 @@ def build_campaign(
         raise FreestandError(
             f"an outcome repeats in {keys}; give each once", source=source + "--outcome"
         )
-    records = load_suite(suite, gravity=model.gravity)
+    records = suite if isinstance(suite, RecordSuite) else load_suite(suite, gravity=model.gravity)
     try:
         campaign = Campaign(
             stack=stack,
@@ -302,7 +349,7 @@ def build_campaign(
             free_time=free_time,
         )
     except ValueError as error:
-        raise FreestandError(f"{error}", source=str(suite)) from None
+        raise FreestandError(f"{error}", source=records.source) from None
     if campaign.cloud and (campaign.record_intensity <= 0).any():
-        raise FreestandError("a record has zero intensity; remove it", source=str(suite))
+        raise FreestandError("a record has zero intensity; remove it", source=records.source)
     return campaign, records

@@ -733,6 +733,17 @@ def load_model(path: str | Path) -> ModelFile:
     ------
     FreestandError
         If the file cannot be read, is not TOML or has an invalid field.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> model = fs.load_model("examples/crane.toml")
+    >>> model.name, [stack.name for stack in model.configurations]
+    ('Bridge crane', ['y-z', 'x-z cart right', 'x-z cart left'])
+    >>> [(level.name, level.horizontal, level.vertical) for level in model.excitations]
+    [('rigid', 2.7, 2.35), ('elastic', 10.31, 2.35)]
+    >>> model.configuration("y-z").blocks[1].mass  # [kg]
+    25600.0
     """
     path = Path(path)
     try:

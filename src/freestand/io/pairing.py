@@ -455,6 +455,14 @@ def load_station(paths, *, dt=None, unit=None, gravity: float = 9.81, name=None)
     ------
     FreestandError
         The files are not the components of one station.
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> station = fs.load_station(["examples/records/synthetic_H.AT2",
+    ...                            "examples/records/synthetic_UP.AT2"])
+    >>> station.name, station.components
+    ('synthetic', ('horizontal', 'vertical'))
     """
     paths = [paths] if isinstance(paths, str | Path) else list(paths)
     for path in paths:

@@ -886,6 +886,18 @@ def load_record(
         lengths are combined by
         :func:`freestand.core.motion.ground_motion.combine_components` (finer
         step, linear interpolation, zeros after the shorter one).
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> record = fs.load_record("examples/records/synthetic_H.AT2",
+    ...                         vertical="examples/records/synthetic_UP.AT2")
+    >>> record.dt, record.n_samples, record.components  # [s], [-]
+    (0.005, 3001, ('horizontal', 'vertical'))
+    >>> round(record.peak_horizontal, 3)  # [m/s^2]
+    2.453
+    >>> record.scaled_to_peak(8.0).peak_horizontal
+    8.0
     """
     path = Path(path)
     sign = _vertical_sign(vertical_positive)

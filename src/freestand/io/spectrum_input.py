@@ -41,6 +41,7 @@ from freestand.core.motion.design_spectra import (
 )
 from freestand.core.motion.spectra import Spectrum
 from freestand.errors import FreestandError
+from freestand.io.table_keys import TableKey
 from freestand.io.units import damping_fraction, to_si
 
 KINDS = ("csv", "rg1.60", "en1998", "table", "record")
@@ -173,35 +174,92 @@ def read_spectrum_csv(
     )
 
 
+#: The keys every spectrum takes (a model file's ``[[spectrum]]`` table; ``--spectrum``
+#: takes ``direction`` and ``damping``).
+COMMON_SPECTRUM_KEYS = {
+    "name": TableKey("the spectrum's name, by which checks and --spectrum take it", required=True),
+    "kind": TableKey('"csv", "rg1.60", "en1998", "table" or "record"', required=True),
+    "direction": TableKey('"horizontal" or "vertical"', default="horizontal"),
+    "damping": TableKey('damping ratio (0.05 or "5 %")', "-", default=0.05),
+}
+
+#: The keys each kind of spectrum takes besides the common ones.
+SPECTRUM_KEYS = {
+    "csv": {
+        "file": TableKey(
+            "CSV file with a header frequency [Hz], acceleration [m/s^2] (or [g]), relative "
+            "to the model file",
+            required=True,
+        ),
+    },
+    "rg1.60": {
+        "pga": TableKey(
+            "peak ground acceleration the US NRC RG 1.60 shape is anchored to",
+            "m/s^2",
+            required=True,
+        ),
+    },
+    "en1998": {
+        "ag": TableKey(
+            "design ground acceleration on type A ground a_g (EN 1998-1)", "m/s^2", required=True
+        ),
+        "ground": TableKey("ground type, A to E", default="A"),
+        "type": TableKey("spectrum type, 1 or 2", "-", default=1),
+        "importance": TableKey("importance factor gamma_I", "-", default=1.0),
+    },
+    "table": {
+        "frequency": TableKey("frequencies, increasing", "Hz", required=True),
+        "acceleration": TableKey(
+            "pseudo-accelerations at those frequencies (bare numbers in unit, or texts with units)",
+            "m/s^2",
+            required=True,
+        ),
+        "unit": TableKey("unit of the bare numbers of acceleration", default="m/s^2"),
+        "label": TableKey("label in outputs", shown_default="the spectrum's name"),
+    },
+    "record": {
+        "file": TableKey(
+            "record file (.AT2, .V2, CSV, one column), relative to the model file", required=True
+        ),
+        "dt": TableKey("time step of a single-column file", "s"),
+        "unit": TableKey("acceleration unit of a single-column file (g, m/s^2, cm/s^2)"),
+        "scale": TableKey("factor on the record (instead of peak)", "-"),
+        "peak": TableKey("scale the record to this peak acceleration (instead of scale)", "m/s^2"),
+        "label": TableKey(
+            "label in outputs", shown_default="the file's name, direction and damping"
+        ),
+    },
+}
+
+
 def spectrum_from_settings(
     kind: str, settings: dict, *, source: str, field: str, base_dir: Path, gravity: float
 ) -> Spectrum:
     """Build a spectrum of ``kind`` from a dict of settings (model section or option)."""
     settings = dict(settings)
+    common = COMMON_SPECTRUM_KEYS
     direction = _direction(
-        settings.pop("direction", "horizontal"), field=f"{field}.direction", source=source
+        settings.pop("direction", common["direction"].default),
+        field=f"{field}.direction",
+        source=source,
     )
     damping = damping_fraction(
-        settings.pop("damping", 0.05), field=f"{field}.damping", source=source
+        settings.pop("damping", common["damping"].default),
+        field=f"{field}.damping",
+        source=source,
     )
-    allowed = {
-        "csv": {"file"},
-        "rg1.60": {"pga"},
-        "en1998": {"ag", "ground", "type", "importance"},
-        "table": {"frequency", "acceleration", "unit", "label"},
-        "record": {"file", "dt", "unit", "scale", "peak", "label"},
-    }
+    allowed = SPECTRUM_KEYS
     if kind not in allowed:
         raise FreestandError(
             f"{kind!r} is not a kind of spectrum; use one of {', '.join(KINDS)}",
             source=source,
             field=f"{field}.kind",
         )
-    unknown = sorted(set(settings) - allowed[kind])
+    unknown = sorted(set(settings) - set(allowed[kind]))
     if unknown:
         raise FreestandError(
             f"{', '.join(unknown)} not known for a {kind} spectrum; it takes "
-            f"{', '.join(sorted(allowed[kind] | {'direction', 'damping'}))}",
+            f"{', '.join(sorted(set(allowed[kind]) | {'direction', 'damping'}))}",
             source=source,
             field=field,
         )
@@ -242,22 +300,23 @@ def spectrum_from_settings(
             ag = to_si(
                 need("ag"), "acceleration", field=f"{field}.ag", source=source, gravity=gravity
             )
-            spectrum_type = int(settings.get("type", 1))
+            keys = SPECTRUM_KEYS["en1998"]
+            spectrum_type = int(settings.get("type", keys["type"].default))
             importance = to_si(
-                settings.get("importance", 1.0),
+                settings.get("importance", keys["importance"].default),
                 "dimensionless",
                 field=f"{field}.importance",
                 source=source,
             )
             return en1998_spectrum(
                 ag,
-                str(settings.get("ground", "A")).upper(),
+                str(settings.get("ground", keys["ground"].default)).upper(),
                 spectrum_type,
                 damping,
                 direction,
                 importance,
             )
-        unit = settings.get("unit", "m/s^2")
+        unit = settings.get("unit", SPECTRUM_KEYS["table"]["unit"].default)
         factor = to_si(
             f"1 {unit}", "acceleration", field=f"{field}.unit", source=source, gravity=gravity
         )

@@ -110,6 +110,22 @@ def load_suite(path: str | Path, *, gravity: float = 9.81) -> RecordSuite:
     -------
     RecordSuite
         The records in file order, each scaled by its ``scale``.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile, freestand as fs
+    >>> record = pathlib.Path("examples/records/synthetic_H.AT2").resolve()
+    >>> suite_file = pathlib.Path(tempfile.mkdtemp()) / "suite.toml"
+    >>> _ = suite_file.write_text(f'''name = "two records"
+    ... [[record]]
+    ... horizontal = "{record}"
+    ... [[record]]
+    ... horizontal = "{record}"
+    ... scale = 2.0
+    ... ''')
+    >>> suite = fs.load_suite(suite_file)
+    >>> suite.name, suite.scales, round(suite.motions[1].peak_horizontal, 3)
+    ('two records', (1.0, 2.0), 4.905)
     """
     path = Path(path)
     source = str(path)

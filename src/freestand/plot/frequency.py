@@ -17,6 +17,7 @@ def plot_frequency_sweep(
     jump: JumpCheck | None = None,
     vertical_spectrum: Spectrum | None = None,
     title: str | None = None,
+    ax=None,
 ):
     """Draw the lowest vertical frequency against the cart's position (paper Fig. 9).
 
@@ -36,18 +37,23 @@ def plot_frequency_sweep(
         reaches ``g`` (``jump.gravity``, else 9.81 m/s^2) are shaded.
     title : str, optional
         The axes' title.
+    ax : matplotlib.axes.Axes, optional
+        Draw into these axes (default: a new figure).
 
     Returns
     -------
     matplotlib.figure.Figure
-        A new figure (not shown, not saved).
+        A new figure (not shown, not saved), or the figure of ``ax``.
     """
     from matplotlib.figure import Figure
 
     if parking is None and jump is not None:
         parking = jump.parking
-    figure = Figure(figsize=(7.0, 4.5), layout="constrained")
-    axes = figure.add_subplot()
+    if ax is None:
+        figure = Figure(figsize=(7.0, 4.5), layout="constrained")
+        axes = figure.add_subplot()
+    else:
+        figure, axes = ax.figure, ax
     axes.plot(sweep.position, sweep.exact, color="C0", lw=2.0, label="exact (continuous beam)")
     axes.plot(
         sweep.position,

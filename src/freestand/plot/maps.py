@@ -48,20 +48,17 @@ def _colours(labels: Sequence[str]) -> dict[str, str]:
     return colours
 
 
-def plot_mode_maps(
+def mode_map_figure(
     maps: Sequence[ModeMap],
-    path: str | Path,
     points: Sequence[Sequence[tuple[str, float, float]]] = (),
     title: str | None = None,
-) -> Path:
-    """Draw mode maps side by side and save the figure.
+):
+    """Mode maps side by side, one panel each, with a legend of the regions below.
 
     Parameters
     ----------
     maps : sequence of ModeMap
         One panel each (same axes), e.g. sense + and sense -.
-    path : str or pathlib.Path
-        Output file (the format follows the suffix: .png, .pdf, .svg).
     points : sequence of sequence of (str, float, float[, str])
         For each map, the model's points (name, x, y) to mark, with the
         region name solved at the point (else the nearest node's).
@@ -70,24 +67,18 @@ def plot_mode_maps(
 
     Returns
     -------
-    pathlib.Path
-        The file written.
+    matplotlib.figure.Figure
     """
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     from matplotlib.colors import ListedColormap
+    from matplotlib.figure import Figure
     from matplotlib.patches import Patch
 
-    path = Path(path)
     labels = sorted({label for m in maps for label in m.labels.values()})
     colours = _colours(labels)
     index = {label: i for i, label in enumerate(labels)}
     cmap = ListedColormap([colours[label] for label in labels])
-    figure, axes = plt.subplots(
-        1, len(maps), figsize=(5.2 * len(maps) + 0.5, 5.6), squeeze=False, sharey=True
-    )
+    figure = Figure(figsize=(5.2 * len(maps) + 0.5, 5.6))
+    axes = figure.subplots(1, len(maps), squeeze=False, sharey=True)
     for panel, (ax, m) in enumerate(zip(axes[0], maps, strict=True)):
         lookup = np.vectorize(lambda code, m=m: index[m.labels[int(code)]])
         image = lookup(m.codes) if m.codes.size else m.codes
@@ -117,17 +108,25 @@ def plot_mode_maps(
                 colors="none",
                 hatches=["////"],
             )
-        for point in points[panel] if panel < len(points) else ():
+        for number, point in enumerate(points[panel] if panel < len(points) else ()):
             name, x, y = point[:3]
             label = point[3] if len(point) > 3 else m.label_at(x, y)
             ax.plot(x, y, marker="o", color="black", markersize=6, markerfacecolor="white")
+            # labels stay in the panel (to the left of a point in its right half) and apart
+            # (every other one below its point)
+            right = x > 0.5 * (m.x_values[0] + m.x_values[-1])
+            below = number % 2 == 1
             ax.annotate(
-                f"{name} ({label})",
+                f"{name}:\n{label}",
                 (x, y),
                 textcoords="offset points",
-                xytext=(6, 6),
+                xytext=(-6 if right else 6, -6 if below else 6),
+                ha="right" if right else "left",
+                va="top" if below else "bottom",
                 fontsize=7,
-            )
+                bbox={"boxstyle": "round,pad=0.15", "facecolor": "white", "alpha": 0.7,
+                      "linewidth": 0},
+            )  # fmt: skip
         sense = "+" if m.sense > 0 else "-"
         ax.set_title(f"{m.configuration}, {m.excitation}, sense {sense}", fontsize=10)
         ax.set_xlabel(m.x.title)
@@ -150,6 +149,29 @@ def plot_mode_maps(
         figure.suptitle(title)
     rows = (len(handles) + 2) // 3
     figure.tight_layout(rect=(0, 0.05 + 0.035 * rows, 1, 1))
-    figure.savefig(path, dpi=120)
-    plt.close(figure)
+    return figure
+
+
+def plot_mode_maps(
+    maps: Sequence[ModeMap],
+    path: str | Path,
+    points: Sequence[Sequence[tuple[str, float, float]]] = (),
+    title: str | None = None,
+) -> Path:
+    """Draw mode maps side by side (:func:`mode_map_figure`) and save the figure.
+
+    Parameters
+    ----------
+    maps, points, title
+        As for :func:`mode_map_figure`.
+    path : str or pathlib.Path
+        Output file (the format follows the suffix: .png, .pdf, .svg).
+
+    Returns
+    -------
+    pathlib.Path
+        The file written.
+    """
+    path = Path(path)
+    mode_map_figure(maps, points, title).savefig(path, dpi=120)
     return path

@@ -33,14 +33,28 @@ _STYLE = {
 }
 
 
-def _new_figure() -> tuple[Figure, object]:
-    fig = Figure(figsize=(7.0, 4.8), layout="constrained")
-    ax = fig.add_subplot()
+#: Short names of the limits in legends.
+_SHORT = {"housner": "Housner", "makris-roussos": "Makris & Roussos", "exact": "exact"}
+
+
+def _short(name: str) -> str:
+    return _SHORT.get(name, name)
+
+
+def _new_figure(ax=None, size: tuple[float, float] = (7.0, 4.8)) -> tuple[Figure, object]:
+    """A new figure with one grid-lined axes, or ``ax`` and its figure when given."""
+    if ax is None:
+        fig = Figure(figsize=size, layout="constrained")
+        ax = fig.add_subplot()
+    else:
+        fig = ax.figure
     ax.grid(True, which="both", alpha=0.3)
     return fig, ax
 
 
-def plot_rectangular_pulse(limits: RectangularPulseLimits, *, title: str | None = None) -> Figure:
+def plot_rectangular_pulse(
+    limits: RectangularPulseLimits, *, title: str | None = None, ax=None
+) -> Figure:
     """Shortest overturning duration against amplitude of a rectangular pulse (paper Fig. 6).
 
     Parameters
@@ -49,8 +63,10 @@ def plot_rectangular_pulse(limits: RectangularPulseLimits, *, title: str | None 
         Housner's and the exact limits.
     title : str, optional
         Figure title.
+    ax : matplotlib.axes.Axes, optional
+        Draw into these axes (default: a new figure).
     """
-    fig, ax = _new_figure()
+    fig, ax = _new_figure(ax)
     a = limits.amplitude
     for name, values in (("housner", limits.housner), ("exact", limits.exact)):
         finite = np.isfinite(values)
@@ -61,7 +77,7 @@ def plot_rectangular_pulse(limits: RectangularPulseLimits, *, title: str | None 
             if np.isfinite(t):
                 ax.plot(
                     [a0], [t], "o", color=_STYLE[name]["color"],
-                    label=f"{a0:.2f} m/s^2: {t:.2f} s ({name})",
+                    label=f"{a0:.2f} m/s^2: {t:.2f} s ({_short(name)})",
                 )  # fmt: skip
         ax.axvline(a0, color="0.4", linewidth=0.8, linestyle=":")
     ax.set_xlabel("pulse acceleration a [m/s^2]")
@@ -71,7 +87,7 @@ def plot_rectangular_pulse(limits: RectangularPulseLimits, *, title: str | None 
     return fig
 
 
-def plot_pulse_limits(limits: OverturningLimits, *, title: str | None = None) -> Figure:
+def plot_pulse_limits(limits: OverturningLimits, *, title: str | None = None, ax=None) -> Figure:
     """Minimum overturning amplitude against pulse frequency (paper Fig. 7).
 
     Parameters
@@ -80,10 +96,12 @@ def plot_pulse_limits(limits: OverturningLimits, *, title: str | None = None) ->
         The limits to draw (all on one figure, log-log axes).
     title : str, optional
         Figure title.
+    ax : matplotlib.axes.Axes, optional
+        Draw into these axes (default: a new figure).
     """
-    fig, ax = _new_figure()
+    fig, ax = _new_figure(ax)
     _draw_limits(ax, limits)
-    ax.set_title(title or f"{limits.kind} pulse: overturning above the curves")
+    ax.set_title(title or f"{limits.kind.capitalize()} pulse: overturning above the curves")
     ax.legend(loc="upper left", fontsize="small")
     return fig
 
@@ -101,7 +119,7 @@ def _draw_limits(ax, limits: OverturningLimits) -> None:
             if np.isfinite(f0):
                 ax.plot(
                     [f0], [a0], "o", color=_STYLE.get(name, {}).get("color", "k"),
-                    label=f"{a0:.2f} m/s^2 overturns up to {f0:.2f} Hz ({name})",
+                    label=f"{a0:.2f} m/s^2 overturns up to {f0:.2f} Hz ({_short(name)})",
                 )  # fmt: skip
     ax.set_xlabel("pulse frequency f [Hz]")
     ax.set_ylabel("peak acceleration of the pulse [m/s^2]")
@@ -113,6 +131,7 @@ def plot_spectrum_check(
     checks: dict | None = None,
     *,
     title: str | None = None,
+    ax=None,
 ) -> Figure:
     """A response spectrum against the overturning limits (paper Fig. 8).
 
@@ -127,10 +146,11 @@ def plot_spectrum_check(
         of smallest margin of each is marked.
     title : str, optional
         Figure title.
+    ax : matplotlib.axes.Axes, optional
+        Draw into these axes (default: a new figure); the legend goes below
+        the axes either way.
     """
-    fig = Figure(figsize=(7.0, 7.2), layout="constrained")
-    ax = fig.add_subplot()
-    ax.grid(True, which="both", alpha=0.3)
+    fig, ax = _new_figure(ax, size=(7.0, 7.2))
     _draw_limits(ax, limits)
     f = np.geomspace(limits.frequency[0], limits.frequency[-1], 300)
     ax.loglog(f, spectrum.acceleration_at(f), color="k", linewidth=2.0, label=spectrum.label)
@@ -143,8 +163,8 @@ def plot_spectrum_check(
                 [check.frequency_at_min], [check.spectrum_at_min], marker,
                 color=_STYLE.get(name, {}).get("color", "k"), markerfacecolor="none",
                 markersize=size, markeredgewidth=1.4, linestyle="none",
-                label=f"min margin {check.min_ratio:.2f} at {check.frequency_at_min:.2f} Hz "
-                f"({name}): {check.verdict}",
+                label=f"smallest limit / spectrum {check.min_ratio:.2f} at "
+                f"{check.frequency_at_min:.2f} Hz ({_short(name)}): {check.verdict}",
             )  # fmt: skip
     ax.set_ylabel("peak pulse / spectral acceleration [m/s^2]")
     ax.set_title(title or "Response spectrum against the overturning limits")

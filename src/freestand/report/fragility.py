@@ -25,11 +25,9 @@ from dataclasses import dataclass
 
 from freestand.core.sweeps.fragility.analysis import FragilityResult
 from freestand.errors import FreestandError
+from freestand.io.fragility_options import FRAGILITY_KEYS
 
-_KEYS = {
-    "suite", "configuration", "im", "levels", "cloud", "outcomes", "vary", "samples",
-    "both_polarities", "seed", "bootstrap", "free_time",
-}  # fmt: skip
+_KEYS = set(FRAGILITY_KEYS)
 
 
 @dataclass(frozen=True)
@@ -63,38 +61,30 @@ def assess_fragility(model, workers: int | None = None) -> FragilitySection | No
         )
     if not isinstance(table.get("suite"), str):
         raise FreestandError('give the record suite, e.g. suite = "suite.toml"', source=source)
-    cloud = bool(table.get("cloud", False))
+
+    def get(key: str):
+        return table.get(key, FRAGILITY_KEYS[key].default)
+
+    cloud = bool(get("cloud"))
     if cloud == ("levels" in table):
         raise FreestandError('give levels = "A:B:N" or cloud = true', source=source)
-    from freestand.core.sweeps.fragility.analysis import analyse
-    from freestand.io.campaign_runner import default_chunk_size, run_campaign
+    from freestand.io.campaign_runner import run_fragility
     from freestand.io.fragility_options import build_campaign
-    from freestand.io.fragility_results import (
-        campaign_definition,
-        fragility_document,
-        im_label,
-    )
+    from freestand.io.fragility_results import fragility_document, im_label
 
     suite = model.base_dir / table["suite"]
     campaign, records = build_campaign(
-        model, table.get("configuration"), suite, str(table.get("im", "pga")),
-        None if cloud else str(table["levels"]), list(table.get("vary", [])) or None,
-        table.get("samples"), list(table.get("outcomes", [])) or None,
-        bool(table.get("both_polarities", False)), int(table.get("seed", 0)),
-        float(table.get("free_time", 10.0)), source=source,
+        model, get("configuration"), suite, str(get("im")),
+        None if cloud else str(table["levels"]), list(get("vary")) or None,
+        get("samples"), list(get("outcomes")) or None,
+        bool(get("both_polarities")), int(get("seed")),
+        float(get("free_time")), source=source,
     )  # fmt: skip
-    size = default_chunk_size(campaign)
-    definition = campaign_definition(
-        campaign, model_name=model.name, model_source=model.source,
-        model_sha256=model.sha256, suite_name=records.name, suite_source=str(table["suite"]),
-        chunk_size=size,
-    )  # fmt: skip
-    rows = run_campaign(campaign, chunk_size=size, workers=workers)
-    bootstrap = int(table.get("bootstrap", 1000))
-    seed = int(table.get("seed", 0))
-    result = analyse(
-        rows, campaign.outcomes, campaign.levels, unit=campaign.measure.unit,
-        bootstrap=bootstrap, seed=seed,
+    bootstrap = int(get("bootstrap"))
+    definition, result = run_fragility(
+        campaign, model_name=model.name, model_source=model.source, model_sha256=model.sha256,
+        suite_name=records.name, suite_source=str(table["suite"]), workers=workers,
+        bootstrap=bootstrap, seed=int(get("seed")),
     )  # fmt: skip
     document = fragility_document(definition, result, bootstrap, 0.95)
     return FragilitySection(document, result, im_label(definition["im"]))

@@ -76,6 +76,16 @@ class GroundMotion:
     :meth:`with_trailing_zeros`, :meth:`rotated`,
     :func:`combine_components`, the floor motion) treats the three
     components alike; :meth:`rotated` turns the horizontal pair.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import freestand as fs
+    >>> motion = fs.GroundMotion(0.01, np.array([0.0, 1.0, -2.0, 0.5]), name="four samples")
+    >>> motion.peak_horizontal, motion.duration, motion.components  # [m/s^2], [s]
+    (2.0, 0.03, ('horizontal',))
+    >>> motion.scaled_to_peak(4.0).horizontal.tolist()
+    [0.0, 2.0, -4.0, 1.0]
     """
 
     dt: float
@@ -150,17 +160,17 @@ class GroundMotion:
     # ------------------------------------------------------------- peak values
     @property
     def peak_horizontal(self) -> float:
-        """Peak horizontal ground acceleration max |a_h| [m/s^2]."""
+        """Peak horizontal ground acceleration max abs(a_h) [m/s^2]."""
         return float(np.max(np.abs(self.horizontal)))
 
     @property
     def peak_horizontal_y(self) -> float | None:
-        """Peak acceleration along y, max |a_y| [m/s^2], None without a y component."""
+        """Peak acceleration along y, max abs(a_y) [m/s^2], None without a y component."""
         return None if self.horizontal_y is None else float(np.max(np.abs(self.horizontal_y)))
 
     @property
     def peak_vertical(self) -> float | None:
-        """Peak vertical ground acceleration max |a_v| [m/s^2], None without one."""
+        """Peak vertical ground acceleration max abs(a_v) [m/s^2], None without one."""
         return None if self.vertical is None else float(np.max(np.abs(self.vertical)))
 
     @property

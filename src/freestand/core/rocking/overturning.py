@@ -195,6 +195,26 @@ def overturning_limits(
         Amplitude of interest [m/s^2] (10.31 m/s^2 for the cart).
     exact : bool, optional
         Compute the exact limit (the expensive one).
+
+    Returns
+    -------
+    OverturningLimits
+        The minimum overturning amplitude [m/s^2] of each limit at each
+        frequency (``limits``), and with ``operating_amplitude`` the frequency
+        up to which that amplitude overturns the block by each limit.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import freestand as fs
+    >>> cabinet = fs.Block.rectangle("cabinet", 0.6, 2.0, 1200.0, fs.Friction(0.8, 0.7))
+    >>> limits = fs.overturning_limits(fs.RockingBlock.from_block(cabinet, "right"),
+    ...                                np.array([0.5, 1.0, 2.0]))
+    >>> for name, values in limits.limits.items():  # [m/s^2] at 0.5, 1 and 2 Hz
+    ...     print(name, np.round(values, 2).tolist())
+    housner [4.43, 7.35, 13.83]
+    makris-roussos [4.02, 5.66, 9.02]
+    exact [4.14, 5.84, 9.33]
     """
     f = np.asarray(frequency, dtype=float)
     if f.ndim != 1 or np.any(np.diff(f) <= 0):

@@ -103,9 +103,19 @@ class RockingBlock:
     Notes
     -----
     About a pivot P with centre of gravity at r = S - P = (b, h) in the rest
-    position: R = |r|, alpha = atan(b / h), I_O = I_S + m R^2 (parallel-axis
+    position: R = sqrt(b^2 + h^2), alpha = atan(b / h), I_O = I_S + m R^2 (parallel-axis
     rule), p = sqrt(m (g - a_v) R / I_O) (Housner 1963; Zhang and Makris 2001,
     eq. 3).
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> cabinet = fs.Block.rectangle("cabinet", 0.6, 2.0, 1200.0, fs.Friction(0.8, 0.7))
+    >>> rocking = fs.RockingBlock.from_block(cabinet, "right")
+    >>> round(rocking.alpha, 4), round(rocking.p, 3)  # [rad], [rad/s]
+    (0.2915, 2.655)
+    >>> round(rocking.uplift_threshold, 3), round(rocking.restitution, 3)  # [m/s^2], [-]
+    (2.943, 0.876)
     """
 
     mass: float
@@ -309,7 +319,7 @@ class RockingBlock:
             omega_after / omega_before [-]. Conservation of angular momentum
             about the new pivot Q (Housner 1963, eq. 4, generalised):
 
-            (I_S + m r_P . r_Q) omega_before = (I_S + m |r_Q|^2) omega_after,
+            (I_S + m r_P . r_Q) omega_before = (I_S + m r_Q . r_Q) omega_after,
 
             with r_P, r_Q the vectors from the old and new pivot to the centre
             of gravity. For a homogeneous rectangle this is
