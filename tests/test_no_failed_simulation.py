@@ -96,3 +96,18 @@ def test_impacts_and_tangential_impacts_never_create_energy():
             assert energy_after <= energy_before * (1.0 + 1e-9) + 1e-12, (event.kind, event.time)
             checked += 1
     assert checked > 100
+
+
+def test_the_remedy_is_in_the_public_result_and_its_json():
+    import json
+
+    import freestand as fs
+    from tests.test_until_rest import STACK, half_sine
+
+    result = fs.simulate(STACK, half_sine(3.0 * 0.3 * 9.81, length=1.0))
+    document = json.loads(json.dumps(result.to_dict()))
+    assert document["status"] == "completed"
+    stepping = document["time_stepping"]
+    assert stepping["time"] > 0.0 and 0.0 < stepping["energy_ratio"] <= 1.0 + ENERGY_ROUND_OFF
+    assert sum(stepping["stretches"].values()) >= 1
+    assert document["events"].get("time-stepping", 0) >= 1

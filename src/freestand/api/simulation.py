@@ -212,8 +212,11 @@ class SimulationResult(Result):
         ``message``, ``method``, ``fallback``, ``blocks`` (per block
         ``max_rotation`` [rad], ``max_slide`` [m], ``uplift``,
         ``free_flight``, ``overturned``, ``overturn_time`` [s]), ``events``
-        (count per kind), ``figures`` (files the command wrote) and
-        ``first_events`` (the first 50: ``time`` [s], ``kind``, ``interface``).
+        (count per kind), ``time_stepping`` (where events could not
+        continue: ``time`` [s] stepped, ``stretches`` per cause,
+        ``energy_ratio`` [-] at most 1, ``dissipative_impacts``), ``figures``
+        (files the command wrote) and ``first_events`` (the first 50:
+        ``time`` [s], ``kind``, ``interface``).
 
         Returns
         -------
@@ -235,6 +238,12 @@ class SimulationResult(Result):
             "fallback": self.diagnostics.fallback,
             "blocks": self.blocks(),
             "events": self.event_counts(),
+            "time_stepping": {
+                "time": self.diagnostics.stepped_time,
+                "stretches": dict(self.diagnostics.stretches),
+                "energy_ratio": self.diagnostics.energy_ratio,
+                "dissipative_impacts": self.diagnostics.dissipative_impacts,
+            },
             "figures": [],
             "first_events": [
                 {"time": event.time, "kind": event.kind, "interface": event.interface}
