@@ -19,10 +19,7 @@ import freestand as fs
 matplotlib.use("Agg")
 
 ROOT = Path(__file__).resolve().parents[1]
-#: Public names defined in core/dynamics, where the time-history engine is being reworked: their
-#: docstrings get their Examples with that work (their use is shown by fs.simulate's).
-LATER = {"SupportMotion", "TimeHistoryResult"}
-NAMES = sorted(name for name in fs.__all__ if name != "__version__" and name not in LATER)
+NAMES = sorted(name for name in fs.__all__ if name != "__version__")
 RESULTS = sorted(name for name in NAMES if inspect.isclass(getattr(fs, name)) and hasattr(getattr(fs, name), "to_frame"))  # fmt: skip
 
 

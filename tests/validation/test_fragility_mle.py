@@ -88,5 +88,9 @@ def test_degenerate_outcomes_are_reported_not_fitted():
     assert not always.fitted and "every simulation" in always.reason
     assert not step.fitted and "stripes separate" in step.reason
     assert np.isnan(never.median) and np.isnan(step.beta)
+    # seen only in part of the highest stripe: the median lies above every level
+    top = fit_fragility(LEVELS, np.where(LEVELS == LEVELS.max(), 3, 0), TRIALS, unit="m/s^2")
+    assert not top.fitted and "only at the highest level" in top.reason
+    assert "add higher levels" in top.reason and "above" in top.reason
     # the stripe fractions and their Wilson intervals are still given
     assert always.fraction.tolist() == [1.0] * 10 and (always.fraction_low > 0.8).all()

@@ -44,6 +44,14 @@ class SupportMotion:
     Notes
     -----
     Before the first and after the last sample the accelerations are zero.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import freestand as fs
+    >>> motion = fs.SupportMotion(0.01, np.array([0.0, 1.0, 0.0]), np.array([0.0, 0.5, 0.0]))
+    >>> motion.time_step, motion.horizontal.tolist()
+    (0.01, [0.0, 1.0, 0.0])
     """
 
     time_step: float
@@ -231,9 +239,12 @@ class TimeHistoryResult:
     block_names : tuple of str
         Bottom to top.
     status : str
-        ``"completed"`` (to the requested duration, or until every block
-        overturned) or ``"failed"`` (see ``message``; the arrays hold the
-        motion up to the failure).
+        ``"completed"`` (to the requested duration, until rest, or until
+        every block overturned; stretches of time stepping where events could
+        not continue are said in ``message`` and ``diagnostics``),
+        ``"capped"`` (still moving at the cap of ``until_rest``) or
+        ``"failed"`` (more than ``max_events`` events; see ``message``; the
+        arrays hold the motion up to there).
     message : str
         What happened, in words.
     time : numpy.ndarray
@@ -275,6 +286,24 @@ class TimeHistoryResult:
     max_lift : numpy.ndarray
         Shape (B,): largest gap [m] opened at a contact of each interface
         (the larger of the two contacts' gaps; 0 for none).
+
+    Examples
+    --------
+    A homogeneous 0.4 x 2 m block under a 1 Hz half-sine of 2 m/s^2 (its
+    uplift acceleration is g b / h = 1.96 m/s^2):
+
+    >>> import numpy as np
+    >>> import freestand as fs
+    >>> block = fs.Block("cabinet", mass=400.0, inertia=400.0 * (0.4**2 + 2.0**2) / 12,
+    ...                  centre=(0.0, 1.0), base_left=-0.2, base_right=0.2, base_level=0.0,
+    ...                  friction=fs.Friction(0.8, 0.7))
+    >>> t = np.arange(0.0, 0.5 + 1e-9, 0.005)
+    >>> motion = fs.SupportMotion(0.005, 2.0 * np.sin(2 * np.pi * t))
+    >>> result = fs.simulate(fs.Stack("cabinet", (block,)), motion, 3.0).core
+    >>> result.status, bool(result.uplift[0]), bool(result.overturned[0])
+    ('completed', True, False)
+    >>> result.position.shape[1:]
+    (1, 3)
     """
 
     configuration: str

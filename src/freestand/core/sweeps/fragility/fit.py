@@ -287,6 +287,12 @@ def _degenerate(levels, counts, totals, unit: str) -> str:
     # a non-occurrence; otherwise the data are (quasi-)separated and beta -> 0
     first_hit = x[np.flatnonzero(z > 0)[0]]
     last_miss = x[np.flatnonzero(z < n)[-1]]
+    if not first_hit < last_miss and last_miss == x[-1]:
+        top = int(z[-1]), int(n[-1])
+        return (
+            f"it occurs only at the highest level, {last_miss:.4g}{_u(unit)} ({top[0]} of "
+            f"{top[1]}): the median lies above it and beta cannot be estimated; add higher levels"
+        )
     if not first_hit < last_miss:
         return (
             f"the stripes separate (it occurs at no level below {first_hit:.4g}{_u(unit)} "
