@@ -15,6 +15,29 @@ static-friction break-away test, relaxation, choice rule and deduplication, on
 the Delassus matrix ``W = J M^-1 J^T``), the same that ``screen``, ``map`` and
 ``sample`` use.
 
+The loop
+--------
+:func:`run` is a short loop over named phases, each a compiled function that
+reads and writes the simulation's :data:`State` (kept by the caller between
+calls) and the :data:`Loop` scratch arrays of the call:
+
+- :func:`advance`: one RK4 step of the held contact mode, or a rest segment;
+- :func:`locate`: the earliest event of that step, on its interpolant, then
+  to the time tolerance on RK4 states;
+- :func:`resolve`: at the event, the impact, the next contact mode and the
+  projection onto the closed contacts, or the remedy (a stretch of
+  velocity-impulse time stepping: :func:`advance_stretch`,
+  :func:`resolve_stretch`);
+- :func:`record`: the state as a row of the history (events: :func:`_event`).
+
+Functions that allocate nothing are compiled without numba's reference
+counting (``_nrt=False``): the arrays they touch are owned by :func:`run` or
+its caller for the whole call, and counting the references of every array
+taken from a tuple (two atomic operations each) cost more than the
+arithmetic of a step. They never allocate (numba refuses to compile that) nor
+return an array. The allocating ones (the contact problem at events:
+:func:`_settle`; the time stepping; the loop's set-up) keep it.
+
 Codes used by the kernels
 -------------------------
 sliding (per block)
@@ -31,6 +54,7 @@ motions
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numba as nb
 import numpy as np
@@ -132,7 +156,7 @@ ENERGY_SLACK = 1e-9
 # --- excitation ---------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, inline="always")
+@nb.njit(cache=True, inline="always", _nrt=False)
 def _support(horizontal, vertical, dt, t):
     """(a_h, a_v) [m/s^2] at ``t`` [s]: linear between samples, zero outside the record."""
     count = horizontal.shape[0]
@@ -149,7 +173,7 @@ def _support(horizontal, vertical, dt, t):
 # --- kinematics ---------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, inline="always")
+@nb.njit(cache=True, inline="always", _nrt=False)
 def kinematics(geometry, active, q, qd, gap, gap_velocity, slip_velocity, rotation, jn, bn, jt, bt,
                slide=None, first=0):  # fmt: skip
     """Gaps, relative velocities, Jacobians and velocity terms of the first ``active`` blocks.
@@ -301,7 +325,7 @@ def _work(count):
     )
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _kin(model, active, q, qd, work):
     geometry = model[0]
     kinematics(
@@ -310,7 +334,7 @@ def _kin(model, active, q, qd, work):
     )  # fmt: skip
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _free_acceleration(model, active, a_h, a_v, gravity, out):
     for i in range(active):
         out[3 * i] = -a_h
@@ -318,7 +342,7 @@ def _free_acceleration(model, active, a_h, a_v, gravity, out):
         out[3 * i + 2] = 0.0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam, first=0):
     """Accelerations and forces of the held mode at a state; kinematics left in ``work``."""
     horizontal, vertical = exc
@@ -344,18 +368,18 @@ def _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam, first=
     )  # fmt: skip
 
 
-@nb.njit(cache=True, inline="always")
+@nb.njit(cache=True, inline="always", _nrt=False)
 def _reference(mode, i):
     return 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _slide_rate(active, mode, slip_velocity, out):
     for i in range(active):
         out[i] = slip_velocity[i, _reference(mode, i)]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _rk4(model, exc, params, active, t, q, qd, slide, h, mode, k1a, k1s, work, out_q, out_qd,
          out_slide, lam, first=0):  # fmt: skip
     """One RK4 step of the held mode from ``t`` over ``h``; False for a singular mode."""
@@ -397,7 +421,7 @@ def _rk4(model, exc, params, active, t, q, qd, slide, h, mode, k1a, k1s, work, o
     return True
 
 
-@nb.njit(cache=True, inline="always")
+@nb.njit(cache=True, inline="always", _nrt=False)
 def _engaged(sliding, slide, tolerance):
     if sliding == 2:
         return slide >= -tolerance
@@ -406,7 +430,7 @@ def _engaged(sliding, slide, tolerance):
     return True
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _fired(model, params, active, mode, directions, lam, slide, work, found):
     """The earliest-priority event that fired at a state (kind, interface, contact) or kind -1.
 
@@ -598,12 +622,12 @@ def _project(model, active, q, qd, mode, work, fstate):
         qd[col] -= correction[col]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _lower_contact(gap, i):
     return 0 if gap[i, 0] <= gap[i, 1] else 1
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _needs_impact(model, params, active, slide, work):
     sliding_codes = model[5]
     gap = work[4]
@@ -628,7 +652,7 @@ def _needs_impact(model, params, active, slide, work):
     return False
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _into_stop(model, params, active, slide, work):
     """Whether a block at its engaged end stop still slides into it (kinematics in work)."""
     sliding_codes = model[5]
@@ -858,12 +882,12 @@ def _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, m
     for i in range(active):
         closed = mode[i, 0] + mode[i, 1]
         if closed < 2:
-            uplift[i] = True
+            uplift[i] = 1.0
         if closed == 0 and i > 0:
-            free_flight[i] = True
+            free_flight[i] = 1.0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _motion_code(mode, i):
     closed = mode[i, 0] + mode[i, 1]
     sliding = mode[i, 2] >= 2
@@ -874,7 +898,7 @@ def _motion_code(mode, i):
     return 4
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _overturned_after(model, params, active, qd, work):
     """Lowest block past its overturning angle that cannot come back (-1 if none)."""
     geometry = model[0]
@@ -902,41 +926,7 @@ def _overturned_after(model, params, active, qd, work):
     return -1
 
 
-@nb.njit(cache=True)
-def _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight):
-    row = istate[S_ROWS]
-    rec_time, rec_q, rec_qd, rec_normal, rec_tangential, rec_rotation, rec_slide = rec
-    rec_time[row] = t
-    gap = work[4]
-    for i in range(count):
-        if i < active:
-            top = max(gap[i, 0], gap[i, 1])
-            low = min(gap[i, 0], gap[i, 1])
-            if top > max_lift[i]:
-                max_lift[i] = top
-            if low > max_flight[i]:
-                max_flight[i] = low
-            for c in range(3):
-                rec_q[row, i, c] = q[3 * i + c]
-                rec_qd[row, i, c] = qd[3 * i + c]
-            rec_normal[row, i, 0] = lam[i, 0]
-            rec_normal[row, i, 1] = lam[i, 1]
-            rec_tangential[row, i] = lam[i, 2]
-            rec_rotation[row, i] = work[7][i]
-            rec_slide[row, i] = slide[i]
-        else:
-            for c in range(3):
-                rec_q[row, i, c] = np.nan
-                rec_qd[row, i, c] = np.nan
-            rec_normal[row, i, 0] = np.nan
-            rec_normal[row, i, 1] = np.nan
-            rec_tangential[row, i] = np.nan
-            rec_rotation[row, i] = np.nan
-            rec_slide[row, i] = np.nan
-    istate[S_ROWS] = row + 1
-
-
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _event(t, kind, interface, contact, status, active_before, active_after, mode, qd_before,
            qd_after, count, ev, istate):  # fmt: skip
     """Append an event; motions of the first ``active_after`` blocks from ``mode``."""
@@ -957,7 +947,7 @@ def _event(t, kind, interface, contact, status, active_before, active_after, mod
     istate[S_EVENTS] = e + 1
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _next_end(t, params, breaks, istate, h_cap):
     """End of the next step: the next break point after ``t``, or ``t + h_cap``, or the end."""
     end = params[P_END]
@@ -971,7 +961,7 @@ def _next_end(t, params, breaks, istate, h_cap):
     return min(target, end)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _margin(model, params, mode, directions, lam, slide, work, kind, i, c):
     """Signed distance to an event's condition (positive: not fired), for locating it.
 
@@ -1006,7 +996,7 @@ def _margin(model, params, mode, directions, lam, slide, work, kind, i, c):
     return 0.5 * math.pi - abs(work[7][i])
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _hermite(active, q0, v0, a0, s0, r0, q1, v1, a1, s1, r1, h, s, out_q, out_v, out_s):
     """State at ``s`` (fraction of the step) on the step's Hermite interpolants.
 
@@ -1044,7 +1034,7 @@ def _hermite(active, q0, v0, a0, s0, r0, q1, v1, a1, s1, r1, h, s, out_q, out_v,
         out_s[i] = c0 * s0[i] + c1 * h * r0[i] + c2 * h * r1[i] + c3 * s1[i]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _stuck_below(active, mode, qd):
     """Number of bottom blocks that stick to the support and do not move.
 
@@ -1066,7 +1056,7 @@ def _stuck_below(active, mode, qd):
     return first
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _at_rest(active, mode, qd):
     """Whether every interface sticks with both contacts closed and nothing moves."""
     for i in range(active):
@@ -1078,7 +1068,7 @@ def _at_rest(active, mode, qd):
     return True
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _rest_prepare(model, active, q, qd, mode, work, rest, qdd):
     """Forces of the rest mode for unit support loads, for :func:`_rest_forces`.
 
@@ -1113,7 +1103,7 @@ def _rest_prepare(model, active, q, qd, mode, work, rest, qdd):
     return True
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _rest_forces(exc, params, active, t, rest, lam):
     """Forces of the rest mode at ``t`` from :func:`_rest_prepare`'s unit solutions."""
     a_h, a_v = _support(exc[0], exc[1], params[P_EXC_DT], t)
@@ -1127,7 +1117,7 @@ def _rest_forces(exc, params, active, t, rest, lam):
 # --- the remedy: a stretch of velocity-impulse time stepping ----------------------------------
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _friction_bounds(model, params, active, slide, work, low, high):
     """Bounds of each interface's tangential impulse over its normal one, for a step.
 
@@ -1219,17 +1209,6 @@ def _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, direc
 
 
 @nb.njit(cache=True)
-def _begin_stretch(cause, t, active, mode, qd, count, ev, istate):
-    """Switch to time stepping for a stretch, because of failure code ``cause``."""
-    istate[S_STEPPING] = 1
-    istate[S_STRETCH_STEPS] = 0
-    istate[S_STRETCHES] += 1
-    istate[S_REMEDY + cause] += 1
-    istate[S_STALLED] = 0
-    _event(t, TIME_STEPPING, -1, -1, 0, active, active, mode, qd, qd, count, ev, istate)
-
-
-@nb.njit(cache=True)
 def _try_resume(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
                 directions, uplift, free_flight, settle, qdd, lam):  # fmt: skip
     """End the stretch if an event-driven mode is consistent at the state; whether it did.
@@ -1257,7 +1236,7 @@ def _try_resume(model, exc, params, active, t, q, qd, slide, work, istate, fstat
     return False
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _overturn_blocks(t, index, active, flags, count):
     """Mark the blocks from ``index`` up overturned at ``t``."""
     for j in range(index, count):
@@ -1266,503 +1245,835 @@ def _overturn_blocks(t, index, active, flags, count):
             flags[3, j] = t
 
 
-@nb.njit(cache=True)
-def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, mode, directions,
-        istate, fstate, flags, rec, ev):  # fmt: skip
-    """Advance the simulation until the end, a failure, full buffers or ``chunk_end``.
+# --- the loop's state ---------------------------------------------------------------------------
 
-    Resumable: every piece of the loop's state lives in the arguments
-    (``q``, ``qd`` (3 B), ``slide`` (B), the held ``mode`` (B, 3) and
-    slide ``directions`` (B), ``istate``/``fstate`` counters, ``flags``
-    (uplift, free flight, overturned as floats, overturn time, max lift,
-    max flight: (6, B))). Returns the outcome code.
+
+@nb.njit(cache=True, _nrt=False)
+def _copy(destination, source, size):
+    """``destination[:size] = source[:size]`` for 1-D arrays."""
+    for k in range(size):
+        destination[k] = source[k]
+
+
+@nb.njit(cache=True, _nrt=False)
+def _copy_rows(destination, source, rows):
+    """``destination[:rows] = source[:rows]`` for 2-D arrays of the same width."""
+    for i in range(rows):
+        for c in range(destination.shape[1]):
+            destination[i, c] = source[i, c]
+
+
+@nb.njit(cache=True, _nrt=False)
+def _copy_state(q, qd, slide, q_from, qd_from, slide_from, active):
+    """Coordinates, rates (3 per block) and slides of the first ``active`` blocks."""
+    _copy(q, q_from, 3 * active)
+    _copy(qd, qd_from, 3 * active)
+    _copy(slide, slide_from, active)
+
+
+#: The simulation's state, kept by the caller between calls of :func:`run`:
+#: ``q``, ``qd`` (3 B) coordinates and rates, ``slide`` (B) each interface's
+#: slide, the held ``mode`` (B, 3) (left, right contact closed; tangential
+#: state) and slide ``directions`` (B), the ``istate`` (``S_*``) and ``fstate``
+#: (``F_*``, the time among them) vectors, and ``flags`` (6, B): uplift, free
+#: flight, overturned (0 or 1), overturning time [s], largest lift and
+#: largest flight gap [m].
+State = namedtuple("State", ("q", "qd", "slide", "mode", "directions", "istate", "fstate", "flags"))
+
+#: Scratch arrays of one call of :func:`run`, made by :func:`_loop_arrays`:
+#:
+#: - at the current time ``t``: ``lam`` (B, 3) the held mode's forces (normal at
+#:   the left and right contact, tangential) [N], ``qdd`` (3 B) its
+#:   accelerations, ``rates`` (B) the slide rates;
+#: - ``q1``, ``qd1``, ``slide1``, ``lam1``, ``qdd1``: the end of the trial step
+#:   (:func:`advance`), then the state at the located event (:func:`locate`);
+#: - ``qm``, ``qdm``, ``slide_m``: a trial state inside the step;
+#: - ``q_end``, ``qd_end``, ``a_end``, ``slide_end``, ``rate_end``: the step's end
+#:   for its interpolant;
+#: - ``rest`` (3, B, 3): the rest mode's forces for unit support loads
+#:   (:func:`_rest_prepare`), ``lam_lo``, ``lam_hi``, ``lam_sample`` (B, 3)
+#:   forces of a rest segment at its sample times;
+#: - ``found``, ``found_m`` (4,) int: an event (kind, interface, contact, number of
+#:   event conditions that hold), at the step's end and at a trial state;
+#: - ``settle`` (3,) int: the outcome of :func:`_settle`;
+#: - ``velocity_before`` (3 B): the rates before an event;
+#: - ``step`` (3,) int: ``L_REST_READY`` (``rest`` holds the current rest's
+#:   forces), ``L_RESTING`` (the step is a rest segment), ``L_FIRST`` (the bottom
+#:   blocks that stick to the support and are not integrated).
+Loop = namedtuple(
+    "Loop",
+    (
+        "lam", "qdd", "rates", "q1", "qd1", "slide1", "lam1", "qdd1", "qm", "qdm", "slide_m",
+        "q_end", "qd_end", "a_end", "slide_end", "rate_end", "rest", "lam_lo", "lam_hi",
+        "lam_sample", "found", "found_m", "settle", "velocity_before", "step",
+    ),
+)  # fmt: skip
+L_REST_READY, L_RESTING, L_FIRST = range(3)
+
+
+@nb.njit(cache=True)
+def _loop_arrays(count):
+    """The :data:`Loop` scratch arrays for a stack of ``count`` blocks."""
+    n = 3 * count
+    return Loop(
+        np.zeros((count, 3)), np.zeros(n), np.zeros(count),
+        np.zeros(n), np.zeros(n), np.zeros(count), np.zeros((count, 3)), np.zeros(n),
+        np.zeros(n), np.zeros(n), np.zeros(count),
+        np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(count), np.zeros(count),
+        np.zeros((3, count, 3)), np.zeros((count, 3)), np.zeros((count, 3)), np.zeros((count, 3)),
+        np.zeros(4, dtype=np.int64), np.zeros(4, dtype=np.int64), np.zeros(3, dtype=np.int64),
+        np.zeros(n), np.zeros(3, dtype=np.int64),
+    )  # fmt: skip
+
+
+# --- record -------------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True, _nrt=False)
+def record(state, lam, work, rec):
+    """Store the state at its time as the next row of the history.
+
+    Reads ``state`` (time, coordinates, rates, slides, active blocks), the
+    forces ``lam`` (B, 3) and the relative rotations and gaps in ``work``
+    (kinematics of the state). Writes row ``istate[S_ROWS]`` of ``rec``
+    (time, q, qd, normal and tangential forces, relative rotation, slide;
+    NaN for overturned blocks), raises the largest lift and flight gaps in
+    ``flags[4]``, ``flags[5]`` and counts the row.
     """
-    count = model[0].shape[0]
-    work = _work(count)
-    n_full = 3 * count
-    lam = np.zeros((count, 3))
-    qdd = np.zeros(n_full)
-    qdd1 = np.zeros(n_full)
-    q1 = np.zeros(n_full)
-    qd1 = np.zeros(n_full)
-    slide1 = np.zeros(count)
-    qm = np.zeros(n_full)
-    qdm = np.zeros(n_full)
-    slide_m = np.zeros(count)
-    lam1 = np.zeros((count, 3))
-    lam2 = np.zeros((count, 3))
-    lam_lo = np.zeros((count, 3))
-    lam_hi = np.zeros((count, 3))
-    rates_s = np.zeros(count)
-    q_end = np.zeros(n_full)
-    qd_end = np.zeros(n_full)
-    a_end = np.zeros(n_full)
-    slide_end = np.zeros(count)
-    rate_end = np.zeros(count)
-    rest = np.zeros((3, count, 3))
-    rest_ready = False
-    found = np.zeros(4, dtype=np.int64)
-    found_m = np.zeros(4, dtype=np.int64)
-    settle = np.zeros(3, dtype=np.int64)
-    velocity_before = np.zeros(n_full)
-    uplift = np.zeros(count, dtype=np.bool_)
-    free_flight = np.zeros(count, dtype=np.bool_)
+    istate = state.istate
+    row = istate[S_ROWS]
+    active = istate[S_ACTIVE]
+    count = state.flags.shape[1]
+    max_lift = state.flags[4]
+    max_flight = state.flags[5]
+    rec_time, rec_q, rec_qd, rec_normal, rec_tangential, rec_rotation, rec_slide = rec
+    rec_time[row] = state.fstate[F_TIME]
+    gap = work[4]
     for i in range(count):
-        uplift[i] = flags[0, i] > 0.5
-        free_flight[i] = flags[1, i] > 0.5
-    max_lift = flags[4]
-    max_flight = flags[5]
-    rows_capacity = rec[0].shape[0]
-    events_capacity = ev[0].shape[0]
-    end = params[P_END]
-    time_tol = params[P_TIME_TOL]
-    exc_end = params[P_EXC_END]
+        if i < active:
+            top = max(gap[i, 0], gap[i, 1])
+            low = min(gap[i, 0], gap[i, 1])
+            if top > max_lift[i]:
+                max_lift[i] = top
+            if low > max_flight[i]:
+                max_flight[i] = low
+            for c in range(3):
+                rec_q[row, i, c] = state.q[3 * i + c]
+                rec_qd[row, i, c] = state.qd[3 * i + c]
+            rec_normal[row, i, 0] = lam[i, 0]
+            rec_normal[row, i, 1] = lam[i, 1]
+            rec_tangential[row, i] = lam[i, 2]
+            rec_rotation[row, i] = work[7][i]
+            rec_slide[row, i] = state.slide[i]
+        else:
+            for c in range(3):
+                rec_q[row, i, c] = np.nan
+                rec_qd[row, i, c] = np.nan
+            rec_normal[row, i, 0] = np.nan
+            rec_normal[row, i, 1] = np.nan
+            rec_tangential[row, i] = np.nan
+            rec_rotation[row, i] = np.nan
+            rec_slide[row, i] = np.nan
+    istate[S_ROWS] = row + 1
+
+
+@nb.njit(cache=True, _nrt=False)
+def _record_event(state, kind, interface, contact, status, active_before, qd_before, ev):
+    """Append an event at the state's time (:func:`_event`) with the held mode and rates."""
+    _event(state.fstate[F_TIME], kind, interface, contact, status, active_before,
+           state.istate[S_ACTIVE], state.mode, qd_before, state.qd, state.flags.shape[1], ev,
+           state.istate)  # fmt: skip
+
+
+@nb.njit(cache=True, _nrt=False)
+def _begin_stretch(cause, state, ev):
+    """Switch to time stepping for a stretch, because of failure code ``cause``.
+
+    Sets the stepping flags and counters of ``istate`` and records a
+    ``time-stepping`` event.
+    """
+    istate = state.istate
+    istate[S_STEPPING] = 1
+    istate[S_STRETCH_STEPS] = 0
+    istate[S_STRETCHES] += 1
+    istate[S_REMEDY + cause] += 1
+    istate[S_STALLED] = 0
+    active = istate[S_ACTIVE]
+    _record_event(state, TIME_STEPPING, -1, -1, 0, active, state.qd, ev)
+
+
+# --- start and stop -----------------------------------------------------------------------------
+
+
+@nb.njit(cache=True)
+def _start(model, exc, params, state, work, loop, rec, ev):
+    """Start the simulation (first call) or pick it up where the last call stopped.
+
+    First call: the contact problem at the initial state (impact if needed,
+    the mode to hold, projection: :func:`_settle`), its forces, the first row
+    and the ``start`` event (and the impact's), or a stretch of time stepping
+    when no mode is consistent. Later calls: the kinematics (while time
+    stepping) or the held mode's forces and accelerations at the state.
+    Writes ``loop.lam``, ``loop.qdd``, ``loop.rates``; returns
+    :data:`BUFFER_FULL` when the buffers cannot take the first rows, else
+    :data:`RUNNING`.
+    """
+    q, qd, slide, mode, directions, istate, fstate, flags = state
+    count = flags.shape[1]
     active = istate[S_ACTIVE]
     t = fstate[F_TIME]
     for i in range(count):
         work[17][i, 0] = model[4][i]
         work[17][i, 1] = 0.0
     if istate[S_STARTED] == 0:
-        if rows_capacity < 4 or events_capacity < 4:
+        if rec[0].shape[0] < 4 or ev[0].shape[0] < 4:
             return BUFFER_FULL
         istate[S_STARTED] = 1
-        velocity_before[:] = qd
+        _copy(loop.velocity_before, qd, qd.shape[0])
+        settle = loop.settle
         _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
-                directions, uplift, free_flight, settle)  # fmt: skip
+                directions, flags[0], flags[1], settle)  # fmt: skip
         cause = settle[0]
         status = 1 if settle[2] > 1 else 0
         if cause == NO_FAILURE and not _evaluate(model, exc, params, active, t, q, qd, mode,
-                                                 work, qdd, lam):  # fmt: skip
+                                                 work, loop.qdd, loop.lam):  # fmt: skip
             cause = SINGULAR_MODE
         if cause != NO_FAILURE:
             _kin(model, active, q, qd, work)
-            lam[:] = 0.0
-        _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
-        _event(t, START, -1, -1, status, active, active, mode, velocity_before, qd, count, ev,
-               istate)  # fmt: skip
+            loop.lam[:] = 0.0
+        record(state, loop.lam, work, rec)
+        _record_event(state, START, -1, -1, status, active, loop.velocity_before, ev)
         if settle[1] != 0:
-            _event(t, settle[1], -1, -1, status, active, active, mode, velocity_before, qd,
-                   count, ev, istate)  # fmt: skip
+            _record_event(state, settle[1], -1, -1, status, active, loop.velocity_before, ev)
         if cause != NO_FAILURE:
-            _begin_stretch(cause, t, active, mode, qd, count, ev, istate)
+            _begin_stretch(cause, state, ev)
     elif istate[S_STEPPING] == 1:
         _kin(model, active, q, qd, work)
-    elif not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-        _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-    _slide_rate(active, mode, work[6], rates_s)
-    outcome = RUNNING
-    until_rest = params[P_UNTIL_REST] > 0.0
-    while active > 0 and t < end - 1e-12 * max(end, 1.0):
-        stepping = istate[S_STEPPING] == 1
-        if until_rest and not stepping and t >= exc_end and _at_rest(active, mode, qd):
-            # the excitation is over and every interface sticks closed with nothing
-            # moving: the stack stays at rest from here on
-            istate[S_AT_REST] = 1
-            break
-        if t >= chunk_end:
-            outcome = CHUNK_DONE
-            break
-        if istate[S_ROWS] + 4 > rows_capacity or istate[S_EVENTS] + 4 > events_capacity:
-            outcome = BUFFER_FULL
-            break
-        if stepping:
-            h = min(STEPPING_STEP, h_cap, end - t)
-            _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, directions,
-                       lam, fstate)  # fmt: skip
-            t += h
-            istate[S_STEPS] += 1
-            istate[S_STRETCH_STEPS] += 1
-            istate[S_STEPPED] += 1
-            fstate[F_STEPPED_TIME] += h
-            _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
-            for i in range(active):
-                if abs(work[7][i]) >= 0.5 * math.pi:
-                    velocity_before[: 3 * active] = qd[: 3 * active]
-                    _overturn_blocks(t, i, active, flags, count)
-                    _event(t, OVERTURN, i, -1, 0, active, i, mode, velocity_before, qd, count,
-                           ev, istate)  # fmt: skip
-                    active = i
-                    istate[S_ACTIVE] = active
-                    break
-            if active > 0 and istate[S_STRETCH_STEPS] >= STRETCH_STEPS:
-                velocity_before[: 3 * active] = qd[: 3 * active]
-                if _try_resume(model, exc, params, active, t, q, qd, slide, work, istate,
-                               fstate, mode, directions, uplift, free_flight, settle, qdd,
-                               lam):  # fmt: skip
-                    rest_ready = False
-                    _event(t, RESUME, -1, -1, 1 if settle[2] > 1 else 0, active, active, mode,
-                           velocity_before, qd, count, ev, istate)  # fmt: skip
-                    _slide_rate(active, mode, work[6], rates_s)
-                    _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift,
-                            max_flight)  # fmt: skip
-            continue
-        n = 3 * active
-        h = _next_end(t, params, breaks, istate, h_cap) - t
-        if h <= 1e-3 * time_tol:
-            h = h_cap
-        resting = _at_rest(active, mode, qd)
-        first = _stuck_below(active, mode, qd)
-        if resting:
-            # the whole stack moves with the support: nothing moves in its frame and the
-            # forces are affine in the support accelerations (_rest_prepare, once per
-            # rest), hence linear in time between two break points; only the end of
-            # the segment is evaluated
-            q1[:n] = q[:n]
-            qd1[:n] = qd[:n]
-            slide1[:active] = slide[:active]
-            if not rest_ready:
-                if not _rest_prepare(model, active, q, qd, mode, work, rest, qdd1):
-                    _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-                    continue
-                rest_ready = True
-            _rest_forces(exc, params, active, t + h, rest, lam1)
-            qdd1[:n] = 0.0
-        else:
-            rest_ready = False
-            if not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, qdd, rates_s,
-                        work, q1, qd1, slide1, lam1, first):  # fmt: skip
-                _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-                continue
-            if not _evaluate(model, exc, params, active, t + h, q1, qd1, mode, work, qdd1, lam1):
-                _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-                continue
-        if not _fired(model, params, active, mode, directions, lam1, slide1, work, found):
-            t += h
-            qdd[:n] = qdd1[:n]
-            q[:n] = q1[:n]
-            qd[:n] = qd1[:n]
-            slide[:active] = slide1[:active]
-            lam[:active] = lam1[:active]
-            _slide_rate(active, mode, work[6], rates_s)
-            istate[S_STEPS] += 1
-            drift = 0.0
-            for i in range(active):
-                for c in range(2):
-                    if mode[i, c] == 1:
-                        drift = max(drift, abs(work[4][i, c]))
-            if drift > 1e-3 * params[P_TOL_GAP]:
-                rest_ready = False
-                _project(model, active, q, qd, mode, work, fstate)
-                if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-                    _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-                    continue
-                _slide_rate(active, mode, work[6], rates_s)
-            _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
-            if t >= exc_end:
-                index = _overturned_after(model, params, active, qd, work)
-                if index >= 0:
-                    rest_ready = False
-                    velocity_before[:n] = qd[:n]
-                    _overturn_blocks(t, index, active, flags, count)
-                    _event(t, OVERTURN, index, -1, 0, active, index, mode, velocity_before,
-                           qd, count, ev, istate)  # fmt: skip
-                    active = index
-                    istate[S_ACTIVE] = active
-                    if active == 0:
-                        break
-                    velocity_before[: 3 * active] = qd[: 3 * active]
-                    _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate,
-                            mode, directions, uplift, free_flight, settle)  # fmt: skip
-                    if settle[0] != NO_FAILURE:
-                        _begin_stretch(settle[0], t, active, mode, qd, count, ev, istate)
-                        continue
-                    if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-                        _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-                        continue
-                    _slide_rate(active, mode, work[6], rates_s)
-            continue
-        # locate the earliest event to time_tol: a bracket [low, high] (not fired,
-        # fired) cut by the Illinois variant of regula falsi on the event's
-        # function (bisection while that function is not known on both sides)
-        low = 0.0
-        high = h
-        failed = False
-        if resting:
-            # the earliest crossing of a force margin: linear between the excitation's
-            # samples, so the segment is first narrowed to the samples around it
-            seg_lo = 0.0
-            seg_hi = h
-            lam_lo[:active] = lam[:active]
-            lam_hi[:active] = lam1[:active]
-            dt_exc = params[P_EXC_DT]
-            k_sample = math.floor(t / dt_exc + 1e-9) + 1
-            while k_sample * dt_exc < t + h - 1e-6 * time_tol:
-                tm = k_sample * dt_exc - t
-                _rest_forces(exc, params, active, t + tm, rest, lam2)
-                if _fired(model, params, active, mode, directions, lam2, slide, work, found_m):
-                    seg_hi = tm
-                    lam_hi[:active] = lam2[:active]
-                    break
-                seg_lo = tm
-                lam_lo[:active] = lam2[:active]
-                k_sample += 1
-            earliest = seg_hi
-            for i in range(active):
-                for kind in (LIFT_OFF, SLIP):
-                    for c in range(2 if kind == LIFT_OFF else 1):
-                        g1 = _margin(model, params, mode, directions, lam_hi, slide, work, kind,
-                                     i, c if kind == LIFT_OFF else -1)  # fmt: skip
-                        if g1 >= 0.0:
-                            continue
-                        g0 = _margin(model, params, mode, directions, lam_lo, slide, work, kind,
-                                     i, c if kind == LIFT_OFF else -1)  # fmt: skip
-                        crossing = seg_lo
-                        if g0 > 0.0:
-                            crossing = seg_lo + (seg_hi - seg_lo) * g0 / (g0 - g1)
-                        earliest = min(earliest, crossing)
-            low = max(0.0, earliest - time_tol)
-            high = min(h, earliest + time_tol)
-            located = False
-            if low > 0.0:
-                _rest_forces(exc, params, active, t + low, rest, lam1)
-                if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
-                    # the margins were not linear over the segment: search [0, low]
-                    high = low
-                    low = 0.0
-                    found[:] = found_m
-                    located = True
-            if not located and high < h:
-                _rest_forces(exc, params, active, t + high, rest, lam1)
-                if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
-                    # located to the tolerance; events crossing within it are taken as
-                    # simultaneous (reported by priority, as at a jump of the excitation)
-                    found[:] = found_m
-                    low = max(0.0, high - 0.5 * time_tol)
-                else:
-                    low = high
-                    high = h
-        if resting:
-            # a bracket of at most twice the tolerance: bisection
-            g_high = -1.0
-            g_low = math.nan
-        else:
-            g_high = _margin(model, params, mode, directions, lam1, slide1, work, found[0],
-                             found[1], found[2])  # fmt: skip
-            # the step's end, for the interpolant below
-            q_end[:n] = q1[:n]
-            qd_end[:n] = qd1[:n]
-            a_end[:n] = qdd1[:n]
-            slide_end[:active] = slide1[:active]
-            _slide_rate(active, mode, work[6], rate_end)
-            _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd1, lam1)
-            g_low = _margin(model, params, mode, directions, lam1, slide, work, found[0],
-                            found[1], found[2])  # fmt: skip
-            if g_low > 0.0 and g_high < 0.0:
-                # the event's time on the step's quintic Hermite interpolant (positions,
-                # velocities and accelerations at both ends): one evaluation per trial;
-                # then a bracket of true RK4 states around it, checked
-                a = 0.0
-                b = h
-                ga = g_low
-                gb = g_high
-                last = 0
-                # the margins of impacts, slip stops, stop impacts and overturning are
-                # kinematic: the held mode's forces are not needed to evaluate them,
-                # and an impact's gap has its rate at hand (Newton's step)
-                kinematic = found[0] != LIFT_OFF and found[0] != SLIP
-                impact = found[0] == IMPACT
-                newton = math.nan
-                # an open contact that still rises at the step's start comes down within
-                # it: bisection while the left end rises (regula falsi creeps there)
-                rising = impact and work[5][found[1], found[2]] >= 0.0
-                for _ in range(60):
-                    if b - a <= 0.1 * time_tol:
-                        break
-                    x = newton
-                    if not (x > a and x < b):
-                        if rising:
-                            x = 0.5 * (a + b)
-                        else:
-                            x = a + ga * (b - a) / (ga - gb)
-                    x = min(max(x, a + 0.01 * time_tol), b - 0.01 * time_tol)
-                    _hermite(active, q, qd, qdd, slide, rates_s, q_end, qd_end, a_end,
-                             slide_end, rate_end, h, x / h, qm, qdm, slide_m)  # fmt: skip
-                    if kinematic:
-                        _kin(model, active, qm, qdm, work)
-                    else:
-                        _evaluate(model, exc, params, active, t + x, qm, qdm, mode, work,
-                                  qdd1, lam1)  # fmt: skip
-                    gx = _margin(model, params, mode, directions, lam1, slide_m, work,
-                                 found[0], found[1], found[2])  # fmt: skip
-                    newton = math.nan
-                    if impact:
-                        rate = work[5][found[1], found[2]]
-                        if gx >= 0.0:
-                            rising = rate >= 0.0
-                        if rate < 0.0:
-                            newton = x - gx / rate
-                            if abs(newton - x) <= 0.01 * time_tol:
-                                # converged: the root within a hundredth of the tolerance
-                                a = max(a, newton - 0.05 * time_tol)
-                                b = min(b, newton + 0.05 * time_tol)
-                                break
-                    if gx < 0.0:
-                        b = x
-                        gb = gx
-                        if last == 1:
-                            ga *= 0.5
-                        last = 1
-                    else:
-                        a = x
-                        ga = gx
-                        if last == -1:
-                            gb *= 0.5
-                        last = -1
-                upper = min(h, b + 0.45 * time_tol)
-                lower = max(0.0, upper - 0.9 * time_tol)
-                if upper < high and lower > low:
-                    ok = _rk4(model, exc, params, active, t, q, qd, slide, upper, mode, qdd,
-                              rates_s, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
-                    ok = ok and _evaluate(model, exc, params, active, t + upper, qm, qdm,
-                                          mode, work, qdd1, lam1)  # fmt: skip
-                    if ok and _fired(model, params, active, mode, directions, lam1, slide_m,
-                                     work, found_m):  # fmt: skip
-                        high = upper
-                        q1[:n] = qm[:n]
-                        qd1[:n] = qdm[:n]
-                        slide1[:active] = slide_m[:active]
-                        if (found_m[0] != found[0] or found_m[1] != found[1]
-                                or found_m[2] != found[2]):  # fmt: skip
-                            g_low = math.nan
-                        found[:] = found_m
-                        g_high = _margin(model, params, mode, directions, lam1, slide_m, work,
-                                         found[0], found[1], found[2])  # fmt: skip
-                        rate = work[5][found[1], found[2]] if found[0] == IMPACT else 0.0
-                        if (
-                            found[3] == 1
-                            and rate < 0.0
-                            and (upper - g_high / rate >= lower + 0.05 * time_tol)
-                        ):
-                            # the impact alone fired, and its gap, closing at this rate, was
-                            # still open at ``lower`` (linear over the tolerance)
-                            low = lower
-                            g_low = g_high - rate * (upper - lower)
-                            ok = False
-                        else:
-                            ok = _rk4(model, exc, params, active, t, q, qd, slide, lower,
-                                      mode, qdd, rates_s, work, qm, qdm, slide_m, lam1,
-                                      first)  # fmt: skip
-                            ok = ok and _evaluate(model, exc, params, active, t + lower, qm,
-                                                  qdm, mode, work, qdd1, lam1)  # fmt: skip
-                        if ok and not _fired(model, params, active, mode, directions, lam1,
-                                             slide_m, work, found_m):  # fmt: skip
-                            low = lower
-                            g_low = _margin(model, params, mode, directions, lam1, slide_m,
-                                            work, found[0], found[1], found[2])  # fmt: skip
-                        elif ok:
-                            high = lower
-                            q1[:n] = qm[:n]
-                            qd1[:n] = qdm[:n]
-                            slide1[:active] = slide_m[:active]
-                            found[:] = found_m
-                            g_low = math.nan
-                    elif ok:
-                        low = upper
-                        g_low = _margin(model, params, mode, directions, lam1, slide_m, work,
-                                        found[0], found[1], found[2])  # fmt: skip
-        # what follows (RK4 states, the event's settling) leaves other kinematics in work
-        rest_ready = False
-        side = 0
-        while high - low > time_tol:
-            width = high - low
-            if g_low > 0.0 and g_high < 0.0:
-                middle = low + g_low * width / (g_low - g_high)
-                middle = min(max(middle, low + 0.01 * time_tol), high - 0.01 * time_tol)
-            else:
-                middle = 0.5 * (low + high)
-            if not _rk4(model, exc, params, active, t, q, qd, slide, middle, mode, qdd, rates_s,
-                        work, qm, qdm, slide_m, lam1, first):  # fmt: skip
-                failed = True
-                break
-            if not _evaluate(model, exc, params, active, t + middle, qm, qdm, mode, work, qdd1,
-                             lam1):  # fmt: skip
-                failed = True
-                break
-            if _fired(model, params, active, mode, directions, lam1, slide_m, work, found_m):
-                high = middle
-                q1[:n] = qm[:n]
-                qd1[:n] = qdm[:n]
-                slide1[:active] = slide_m[:active]
-                if found_m[0] != found[0] or found_m[1] != found[1] or found_m[2] != found[2]:
-                    g_low = math.nan  # another event: its function is not known at low
-                    side = 0
-                found[:] = found_m
-                g_high = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
-                                 found[1], found[2])  # fmt: skip
-                if side == 1:
-                    g_low *= 0.5
-                side = 1
-            else:
-                low = middle
-                g_low = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
-                                found[1], found[2])  # fmt: skip
-                if side == -1:
-                    g_high *= 0.5
-                side = -1
-        if failed:
-            _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-            continue
-        q[:n] = q1[:n]
-        qd[:n] = qd1[:n]
-        slide[:active] = slide1[:active]
-        t += high
-        istate[S_STEPS] += 1
-        if high <= 2.0 * time_tol:
-            istate[S_STALLED] += 1
-        else:
-            istate[S_STALLED] = 0
-        if istate[S_STALLED] > 50:
-            _begin_stretch(STALLED, t, active, mode, qd, count, ev, istate)
-            continue
-        # state at the event (kinematics and forces of the held mode)
-        _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam)
-        _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
-        kind = found[0]
-        interface = found[1]
-        contact = found[2]
-        velocity_before[:n] = qd[:n]
-        before = active
-        if kind == OVERTURN:
-            _overturn_blocks(t, interface, active, flags, count)
-            active = interface
-            istate[S_ACTIVE] = active
-            if active == 0:
-                _event(t, kind, interface, contact, 0, before, 0, mode, velocity_before, qd,
-                       count, ev, istate)  # fmt: skip
-                break
-        _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
-                directions, uplift, free_flight, settle)  # fmt: skip
-        if settle[0] != NO_FAILURE:
-            _begin_stretch(settle[0], t, active, mode, qd, count, ev, istate)
-            continue
-        impacted = settle[1]
-        if impacted == TANGENTIAL_IMPACT or (
-            impacted != 0 and kind != IMPACT and kind != STOP_IMPACT and kind != OVERTURN
-        ):
-            kind = impacted
-        _event(t, kind, interface, contact, 1 if settle[2] > 1 else 0, before, active, mode,
-               velocity_before, qd, count, ev, istate)  # fmt: skip
-        if istate[S_EVENTS] > max_events:
-            istate[S_FAILURE] = TOO_MANY_EVENTS
-            outcome = FAILED
-            break
-        if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-            _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-            continue
-        _slide_rate(active, mode, work[6], rates_s)
-        _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
+    elif not _evaluate(model, exc, params, active, t, q, qd, mode, work, loop.qdd, loop.lam):
+        _begin_stretch(SINGULAR_MODE, state, ev)
+    _slide_rate(active, mode, work[6], loop.rates)
+    return RUNNING
+
+
+@nb.njit(cache=True, _nrt=False)
+def _stop(params, chunk_end, state, rec, ev):
+    """Why the loop stops before its next step, or :data:`RUNNING` to go on.
+
+    :data:`COMPLETED` at the end time or once every block has overturned, and
+    with ``P_UNTIL_REST`` once the stack rests after the excitation (sets
+    ``S_AT_REST``); :data:`CHUNK_DONE` at ``chunk_end``; :data:`BUFFER_FULL`
+    when the history or event buffers cannot take the rows of one more step.
+    """
+    istate = state.istate
+    t = state.fstate[F_TIME]
+    active = istate[S_ACTIVE]
+    end = params[P_END]
+    if not (active > 0 and t < end - 1e-12 * max(end, 1.0)):
+        return COMPLETED
+    if (
+        params[P_UNTIL_REST] > 0.0
+        and istate[S_STEPPING] == 0
+        and t >= params[P_EXC_END]
+        and _at_rest(active, state.mode, state.qd)
+    ):
+        # the excitation is over and every interface sticks closed with nothing
+        # moving: the stack stays at rest from here on
+        istate[S_AT_REST] = 1
+        return COMPLETED
+    if t >= chunk_end:
+        return CHUNK_DONE
+    if istate[S_ROWS] + 4 > rec[0].shape[0] or istate[S_EVENTS] + 4 > ev[0].shape[0]:
+        return BUFFER_FULL
+    return RUNNING
+
+
+# --- advance ------------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True, _nrt=False)
+def advance(model, exc, params, breaks, h_cap, state, work, loop):
+    """One step of the held mode from the state's time ``t``: its length ``h`` [s], or -1.
+
+    The step ends at the next break point of the record, ``t + h_cap`` or
+    the end. At rest (every interface sticks closed, nothing moves) the step
+    is a rest segment: the state does not change in the support's frame and
+    the forces at its end come from the rest mode's unit solutions
+    (:func:`_rest_prepare`, once per rest; :func:`_rest_forces`). Otherwise one
+    RK4 step of the held mode (bottom blocks stuck to the support not
+    integrated: :func:`_stuck_below`) and the held mode's forces at its end.
+
+    Reads ``state`` and ``loop.qdd``, ``loop.rates`` (accelerations and slide
+    rates at ``t``); writes the step's end to ``loop.q1``, ``qd1``,
+    ``slide1``, ``lam1``, ``qdd1`` (kinematics of the end in ``work``) and
+    ``loop.step`` (resting, first integrated block, rest forces ready). The
+    state is not changed. Returns -1 when the held mode is singular.
+    """
+    q, qd, slide, mode, _, istate, fstate, _ = state
+    t = fstate[F_TIME]
+    active = istate[S_ACTIVE]
+    n = 3 * active
+    h = _next_end(t, params, breaks, istate, h_cap) - t
+    if h <= 1e-3 * params[P_TIME_TOL]:
+        h = h_cap
+    resting = _at_rest(active, mode, qd)
+    first = _stuck_below(active, mode, qd)
+    loop.step[L_RESTING] = 1 if resting else 0
+    loop.step[L_FIRST] = first
+    if resting:
+        # the whole stack moves with the support: nothing moves in its frame and the
+        # forces are affine in the support accelerations (_rest_prepare, once per
+        # rest), hence linear in time between two break points; only the end of
+        # the segment is evaluated
+        _copy_state(loop.q1, loop.qd1, loop.slide1, q, qd, slide, active)
+        if loop.step[L_REST_READY] == 0:
+            if not _rest_prepare(model, active, q, qd, mode, work, loop.rest, loop.qdd1):
+                return -1.0
+            loop.step[L_REST_READY] = 1
+        _rest_forces(exc, params, active, t + h, loop.rest, loop.lam1)
+        loop.qdd1[:n] = 0.0
+        return h
+    loop.step[L_REST_READY] = 0
+    if not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, loop.qdd, loop.rates,
+                work, loop.q1, loop.qd1, loop.slide1, loop.lam1, first):  # fmt: skip
+        return -1.0
+    if not _evaluate(model, exc, params, active, t + h, loop.q1, loop.qd1, mode, work, loop.qdd1,
+                     loop.lam1):  # fmt: skip
+        return -1.0
+    return h
+
+
+@nb.njit(cache=True)
+def _take_step(model, exc, params, h, state, work, loop, rec, ev):
+    """Accept a step in which no event fired; an outcome code.
+
+    Moves the state to the step's end (``loop.q1``, ...), puts the closed
+    contacts back on their surfaces when they drifted (:func:`_project`), records
+    the row and, after the excitation, lets a block past its overturning
+    angle fall (:func:`_overturn_after_excitation`).
+    """
+    q, qd, slide, mode, _, istate, fstate, _ = state
+    active = istate[S_ACTIVE]
+    n = 3 * active
+    t = fstate[F_TIME] + h
     fstate[F_TIME] = t
-    istate[S_ACTIVE] = active
-    for i in range(count):
-        flags[0, i] = 1.0 if uplift[i] else 0.0
-        flags[1, i] = 1.0 if free_flight[i] else 0.0
-    if outcome == RUNNING:
-        outcome = COMPLETED
+    _copy(loop.qdd, loop.qdd1, n)
+    _copy_state(q, qd, slide, loop.q1, loop.qd1, loop.slide1, active)
+    _copy_rows(loop.lam, loop.lam1, active)
+    _slide_rate(active, mode, work[6], loop.rates)
+    istate[S_STEPS] += 1
+    drift = 0.0
+    for i in range(active):
+        for c in range(2):
+            if mode[i, c] == 1:
+                drift = max(drift, abs(work[4][i, c]))
+    if drift > 1e-3 * params[P_TOL_GAP]:
+        loop.step[L_REST_READY] = 0
+        _project(model, active, q, qd, mode, work, fstate)
+        if not _evaluate(model, exc, params, active, t, q, qd, mode, work, loop.qdd, loop.lam):
+            _begin_stretch(SINGULAR_MODE, state, ev)
+            return RUNNING
+        _slide_rate(active, mode, work[6], loop.rates)
+    record(state, loop.lam, work, rec)
+    if t >= params[P_EXC_END]:
+        return _overturn_after_excitation(model, exc, params, state, work, loop, ev)
+    return RUNNING
+
+
+@nb.njit(cache=True)
+def advance_stretch(model, exc, params, h_cap, state, work, loop):
+    """One step of the time-stepping remedy (:func:`_time_step`, ``STEPPING_STEP``).
+
+    Advances the state (time, coordinates, rates, slides; the mode and
+    directions of the contacts that carried an impulse) and the stepping
+    counters; ``loop.lam`` receives the step's mean contact forces, ``work``
+    the kinematics at its end.
+    """
+    q, qd, slide, mode, directions, istate, fstate, _ = state
+    t = fstate[F_TIME]
+    h = min(STEPPING_STEP, h_cap, params[P_END] - t)
+    _time_step(model, exc, params, istate[S_ACTIVE], t, h, q, qd, slide, work, mode, directions,
+               loop.lam, fstate)  # fmt: skip
+    fstate[F_TIME] = t + h
+    istate[S_STEPS] += 1
+    istate[S_STRETCH_STEPS] += 1
+    istate[S_STEPPED] += 1
+    fstate[F_STEPPED_TIME] += h
+
+
+# --- locate -------------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True, _nrt=False)
+def _bracket_at_rest(model, exc, params, h, state, work, loop):
+    """Bracket (low, high) [s from t] of the earliest event of a rest segment.
+
+    At rest only force margins can cross (lift-off, slip); they are linear
+    between the excitation's samples, so the segment is first narrowed to
+    the samples around the first that fires, then the crossing interpolated
+    and checked on both sides within the time tolerance. Writes the event
+    that fires to ``loop.found`` when a check finds it.
+    """
+    _, _, slide, mode, directions, istate, fstate, _ = state
+    t = fstate[F_TIME]
+    active = istate[S_ACTIVE]
+    time_tol = params[P_TIME_TOL]
+    rest = loop.rest
+    lam_lo = loop.lam_lo
+    lam_hi = loop.lam_hi
+    lam_sample = loop.lam_sample
+    found = loop.found
+    found_m = loop.found_m
+    seg_lo = 0.0
+    seg_hi = h
+    _copy_rows(lam_lo, loop.lam, active)
+    _copy_rows(lam_hi, loop.lam1, active)
+    dt_exc = params[P_EXC_DT]
+    k_sample = math.floor(t / dt_exc + 1e-9) + 1
+    while k_sample * dt_exc < t + h - 1e-6 * time_tol:
+        tm = k_sample * dt_exc - t
+        _rest_forces(exc, params, active, t + tm, rest, lam_sample)
+        if _fired(model, params, active, mode, directions, lam_sample, slide, work, found_m):
+            seg_hi = tm
+            _copy_rows(lam_hi, lam_sample, active)
+            break
+        seg_lo = tm
+        _copy_rows(lam_lo, lam_sample, active)
+        k_sample += 1
+    earliest = seg_hi
+    for i in range(active):
+        for kind in (LIFT_OFF, SLIP):
+            for c in range(2 if kind == LIFT_OFF else 1):
+                g1 = _margin(model, params, mode, directions, lam_hi, slide, work, kind, i,
+                             c if kind == LIFT_OFF else -1)  # fmt: skip
+                if g1 >= 0.0:
+                    continue
+                g0 = _margin(model, params, mode, directions, lam_lo, slide, work, kind, i,
+                             c if kind == LIFT_OFF else -1)  # fmt: skip
+                crossing = seg_lo
+                if g0 > 0.0:
+                    crossing = seg_lo + (seg_hi - seg_lo) * g0 / (g0 - g1)
+                earliest = min(earliest, crossing)
+    low = max(0.0, earliest - time_tol)
+    high = min(h, earliest + time_tol)
+    if low > 0.0:
+        _rest_forces(exc, params, active, t + low, rest, loop.lam1)
+        if _fired(model, params, active, mode, directions, loop.lam1, slide, work, found_m):
+            # the margins were not linear over the segment: search [0, low]
+            _copy(found, found_m, 4)
+            return 0.0, low
+    if high < h:
+        _rest_forces(exc, params, active, t + high, rest, loop.lam1)
+        if _fired(model, params, active, mode, directions, loop.lam1, slide, work, found_m):
+            # located to the tolerance; events crossing within it are taken as
+            # simultaneous (reported by priority, as at a jump of the excitation)
+            _copy(found, found_m, 4)
+            return max(0.0, high - 0.5 * time_tol), high
+        return high, h
+    return low, high
+
+
+@nb.njit(cache=True, _nrt=False)
+def _bracket_on_interpolant(model, exc, params, h, state, work, loop):
+    """Bracket (low, high, g_low, g_high) of the earliest event of an RK4 step.
+
+    The event's function (:func:`_margin`) is followed on the step's quintic
+    Hermite interpolant (positions, velocities and accelerations at both
+    ends; one evaluation per trial) by the Illinois variant of regula falsi,
+    with Newton steps on an impact's gap and bisection while an open contact
+    still rises; then a bracket of true RK4 states around the root, checked.
+    ``g_low``, ``g_high``: the function at the bracket's ends (NaN where not
+    known). Reads the step's end in ``loop.q1``, ... and the event in
+    ``loop.found``; a checked RK4 state that fires replaces them.
+    """
+    q, qd, slide, mode, directions, istate, fstate, _ = state
+    t = fstate[F_TIME]
+    active = istate[S_ACTIVE]
+    n = 3 * active
+    time_tol = params[P_TIME_TOL]
+    first = loop.step[L_FIRST]
+    found = loop.found
+    found_m = loop.found_m
+    q1, qd1, slide1, lam1, qdd1 = loop.q1, loop.qd1, loop.slide1, loop.lam1, loop.qdd1
+    qm, qdm, slide_m = loop.qm, loop.qdm, loop.slide_m
+    low = 0.0
+    high = h
+    g_high = _margin(model, params, mode, directions, lam1, slide1, work, found[0], found[1],
+                     found[2])  # fmt: skip
+    # the step's end, for the interpolant below
+    _copy_state(loop.q_end, loop.qd_end, loop.slide_end, q1, qd1, slide1, active)
+    _copy(loop.a_end, qdd1, n)
+    _slide_rate(active, mode, work[6], loop.rate_end)
+    _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd1, lam1)
+    g_low = _margin(model, params, mode, directions, lam1, slide, work, found[0], found[1],
+                    found[2])  # fmt: skip
+    if not (g_low > 0.0 and g_high < 0.0):
+        return low, high, g_low, g_high
+    # the event's time on the step's quintic Hermite interpolant (positions,
+    # velocities and accelerations at both ends): one evaluation per trial;
+    # then a bracket of true RK4 states around it, checked
+    a = 0.0
+    b = h
+    ga = g_low
+    gb = g_high
+    last = 0
+    # the margins of impacts, slip stops, stop impacts and overturning are
+    # kinematic: the held mode's forces are not needed to evaluate them,
+    # and an impact's gap has its rate at hand (Newton's step)
+    kinematic = found[0] != LIFT_OFF and found[0] != SLIP
+    impact = found[0] == IMPACT
+    newton = math.nan
+    # an open contact that still rises at the step's start comes down within
+    # it: bisection while the left end rises (regula falsi creeps there)
+    rising = impact and work[5][found[1], found[2]] >= 0.0
+    for _ in range(60):
+        if b - a <= 0.1 * time_tol:
+            break
+        x = newton
+        if not (x > a and x < b):
+            if rising:
+                x = 0.5 * (a + b)
+            else:
+                x = a + ga * (b - a) / (ga - gb)
+        x = min(max(x, a + 0.01 * time_tol), b - 0.01 * time_tol)
+        _hermite(active, q, qd, loop.qdd, slide, loop.rates, loop.q_end, loop.qd_end, loop.a_end,
+                 loop.slide_end, loop.rate_end, h, x / h, qm, qdm, slide_m)  # fmt: skip
+        if kinematic:
+            _kin(model, active, qm, qdm, work)
+        else:
+            _evaluate(model, exc, params, active, t + x, qm, qdm, mode, work, qdd1, lam1)
+        gx = _margin(model, params, mode, directions, lam1, slide_m, work, found[0], found[1],
+                     found[2])  # fmt: skip
+        newton = math.nan
+        if impact:
+            rate = work[5][found[1], found[2]]
+            if gx >= 0.0:
+                rising = rate >= 0.0
+            if rate < 0.0:
+                newton = x - gx / rate
+                if abs(newton - x) <= 0.01 * time_tol:
+                    # converged: the root within a hundredth of the tolerance
+                    a = max(a, newton - 0.05 * time_tol)
+                    b = min(b, newton + 0.05 * time_tol)
+                    break
+        if gx < 0.0:
+            b = x
+            gb = gx
+            if last == 1:
+                ga *= 0.5
+            last = 1
+        else:
+            a = x
+            ga = gx
+            if last == -1:
+                gb *= 0.5
+            last = -1
+    upper = min(h, b + 0.45 * time_tol)
+    lower = max(0.0, upper - 0.9 * time_tol)
+    if not (upper < high and lower > low):
+        return low, high, g_low, g_high
+    ok = _rk4(model, exc, params, active, t, q, qd, slide, upper, mode, loop.qdd, loop.rates,
+              work, qm, qdm, slide_m, lam1, first)  # fmt: skip
+    ok = ok and _evaluate(model, exc, params, active, t + upper, qm, qdm, mode, work, qdd1, lam1)
+    if ok and _fired(model, params, active, mode, directions, lam1, slide_m, work, found_m):
+        high = upper
+        _copy_state(q1, qd1, slide1, qm, qdm, slide_m, active)
+        if found_m[0] != found[0] or found_m[1] != found[1] or found_m[2] != found[2]:
+            g_low = math.nan
+        _copy(found, found_m, 4)
+        g_high = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
+                         found[1], found[2])  # fmt: skip
+        rate = work[5][found[1], found[2]] if found[0] == IMPACT else 0.0
+        if found[3] == 1 and rate < 0.0 and (upper - g_high / rate >= lower + 0.05 * time_tol):
+            # the impact alone fired, and its gap, closing at this rate, was
+            # still open at ``lower`` (linear over the tolerance)
+            low = lower
+            g_low = g_high - rate * (upper - lower)
+            ok = False
+        else:
+            ok = _rk4(model, exc, params, active, t, q, qd, slide, lower, mode, loop.qdd,
+                      loop.rates, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
+            ok = ok and _evaluate(model, exc, params, active, t + lower, qm, qdm, mode, work,
+                                  qdd1, lam1)  # fmt: skip
+        if ok and not _fired(model, params, active, mode, directions, lam1, slide_m, work,
+                             found_m):  # fmt: skip
+            low = lower
+            g_low = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
+                            found[1], found[2])  # fmt: skip
+        elif ok:
+            high = lower
+            _copy_state(q1, qd1, slide1, qm, qdm, slide_m, active)
+            _copy(found, found_m, 4)
+            g_low = math.nan
+    elif ok:
+        low = upper
+        g_low = _margin(model, params, mode, directions, lam1, slide_m, work, found[0], found[1],
+                        found[2])  # fmt: skip
+    return low, high, g_low, g_high
+
+
+@nb.njit(cache=True, _nrt=False)
+def locate(model, exc, params, h, state, work, loop):
+    """Time [s from t] of the earliest event of the step, to the time tolerance; -1 if singular.
+
+    An event fired at the step's end (``loop.found``). A bracket [low, high]
+    (not fired, fired) is found on the step's interpolant
+    (:func:`_bracket_on_interpolant`) or, for a rest segment, between the
+    excitation's samples (:func:`_bracket_at_rest`), then cut to the time
+    tolerance on true RK4 states by the Illinois variant of regula falsi on the
+    event's function (bisection while that function is not known on both
+    sides). Writes the state at the event (the first RK4 state found to fire,
+    at ``high``) to ``loop.q1``, ``qd1``, ``slide1`` and the event to
+    ``loop.found``; the state itself is not changed.
+    """
+    if loop.step[L_RESTING] == 1:
+        low, high = _bracket_at_rest(model, exc, params, h, state, work, loop)
+        # a bracket of at most twice the tolerance: bisection
+        g_high = -1.0
+        g_low = math.nan
+    else:
+        low, high, g_low, g_high = _bracket_on_interpolant(model, exc, params, h, state, work,
+                                                           loop)  # fmt: skip
+    # what follows (RK4 states, the event's settling) leaves other kinematics in work
+    loop.step[L_REST_READY] = 0
+    q, qd, slide, mode, directions, istate, fstate, _ = state
+    t = fstate[F_TIME]
+    active = istate[S_ACTIVE]
+    time_tol = params[P_TIME_TOL]
+    found = loop.found
+    trial = loop.found_m
+    side = 0
+    while high - low > time_tol:
+        width = high - low
+        if g_low > 0.0 and g_high < 0.0:
+            middle = low + g_low * width / (g_low - g_high)
+            middle = min(max(middle, low + 0.01 * time_tol), high - 0.01 * time_tol)
+        else:
+            middle = 0.5 * (low + high)
+        if not _rk4(model, exc, params, active, t, q, qd, slide, middle, mode, loop.qdd,
+                    loop.rates, work, loop.qm, loop.qdm, loop.slide_m, loop.lam1,
+                    loop.step[L_FIRST]):  # fmt: skip
+            return -1.0
+        if not _evaluate(model, exc, params, active, t + middle, loop.qm, loop.qdm, mode, work,
+                         loop.qdd1, loop.lam1):  # fmt: skip
+            return -1.0
+        if _fired(model, params, active, mode, directions, loop.lam1, loop.slide_m, work, trial):
+            high = middle
+            _copy_state(loop.q1, loop.qd1, loop.slide1, loop.qm, loop.qdm, loop.slide_m, active)
+            if trial[0] != found[0] or trial[1] != found[1] or trial[2] != found[2]:
+                g_low = math.nan  # another event: its function is not known at low
+                side = 0
+            _copy(found, trial, 4)
+            g_high = _margin(model, params, mode, directions, loop.lam1, loop.slide_m, work,
+                             found[0], found[1], found[2])  # fmt: skip
+            if side == 1:
+                g_low *= 0.5
+            side = 1
+        else:
+            low = middle
+            g_low = _margin(model, params, mode, directions, loop.lam1, loop.slide_m, work,
+                            found[0], found[1], found[2])  # fmt: skip
+            if side == -1:
+                g_high *= 0.5
+            side = -1
+    return high
+
+
+# --- resolve ------------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True)
+def resolve(model, exc, params, max_events, h, state, work, loop, rec, ev):
+    """Move to the located event ``h`` [s] after t and resolve it; an outcome code.
+
+    The state moves to the event (``loop.q1``, ...; :func:`locate`), which is
+    recorded; an overturned block and those above it leave the stack; then the
+    impact if one is needed, the next contact mode and the projection onto the
+    closed contacts (:func:`_settle`), the event, and the new mode's forces,
+    recorded. Remedies: where events repeat without progress (more than 50
+    steps of at most twice the time tolerance), no mode is consistent or the
+    new mode is singular, a stretch of time stepping begins
+    (:func:`_begin_stretch`). Returns :data:`COMPLETED` when every block has
+    overturned, :data:`FAILED` after more than ``max_events`` events, else
+    :data:`RUNNING`.
+    """
+    q, qd, slide, mode, directions, istate, fstate, flags = state
+    active = istate[S_ACTIVE]
+    count = flags.shape[1]
+    n = 3 * active
+    _copy_state(q, qd, slide, loop.q1, loop.qd1, loop.slide1, active)
+    t = fstate[F_TIME] + h
+    fstate[F_TIME] = t
+    istate[S_STEPS] += 1
+    if h <= 2.0 * params[P_TIME_TOL]:
+        istate[S_STALLED] += 1
+    else:
+        istate[S_STALLED] = 0
+    if istate[S_STALLED] > 50:
+        _begin_stretch(STALLED, state, ev)
+        return RUNNING
+    # state at the event (kinematics and forces of the held mode)
+    _evaluate(model, exc, params, active, t, q, qd, mode, work, loop.qdd, loop.lam)
+    record(state, loop.lam, work, rec)
+    found = loop.found
+    kind = found[0]
+    interface = found[1]
+    contact = found[2]
+    velocity_before = loop.velocity_before
+    _copy(velocity_before, qd, n)
+    before = active
+    if kind == OVERTURN:
+        _overturn_blocks(t, interface, active, flags, count)
+        active = interface
+        istate[S_ACTIVE] = active
+        if active == 0:
+            _record_event(state, kind, interface, contact, 0, before, velocity_before, ev)
+            return COMPLETED
+    settle = loop.settle
+    _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode, directions,
+            flags[0], flags[1], settle)  # fmt: skip
+    if settle[0] != NO_FAILURE:
+        _begin_stretch(settle[0], state, ev)
+        return RUNNING
+    impacted = settle[1]
+    if impacted == TANGENTIAL_IMPACT or (
+        impacted != 0 and kind != IMPACT and kind != STOP_IMPACT and kind != OVERTURN
+    ):
+        kind = impacted
+    _record_event(state, kind, interface, contact, 1 if settle[2] > 1 else 0, before,
+                  velocity_before, ev)  # fmt: skip
+    if istate[S_EVENTS] > max_events:
+        istate[S_FAILURE] = TOO_MANY_EVENTS
+        return FAILED
+    if not _evaluate(model, exc, params, active, t, q, qd, mode, work, loop.qdd, loop.lam):
+        _begin_stretch(SINGULAR_MODE, state, ev)
+        return RUNNING
+    _slide_rate(active, mode, work[6], loop.rates)
+    record(state, loop.lam, work, rec)
+    return RUNNING
+
+
+@nb.njit(cache=True)
+def _overturn_after_excitation(model, exc, params, state, work, loop, ev):
+    """After the excitation, a block past its overturning angle that cannot come back falls.
+
+    The block and those above it leave the stack (an ``overturn`` event), the
+    rest settles into its next mode (:func:`_settle`; a stretch of time
+    stepping if none is consistent). Returns :data:`COMPLETED` when no block
+    is left, else :data:`RUNNING`.
+    """
+    q, qd, slide, mode, directions, istate, fstate, flags = state
+    active = istate[S_ACTIVE]
+    index = _overturned_after(model, params, active, qd, work)
+    if index < 0:
+        return RUNNING
+    t = fstate[F_TIME]
+    n = 3 * active
+    velocity_before = loop.velocity_before
+    loop.step[L_REST_READY] = 0
+    _copy(velocity_before, qd, n)
+    _overturn_blocks(t, index, active, flags, flags.shape[1])
+    istate[S_ACTIVE] = index
+    _record_event(state, OVERTURN, index, -1, 0, active, velocity_before, ev)
+    active = index
+    if active == 0:
+        return COMPLETED
+    _copy(velocity_before, qd, 3 * active)
+    _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode, directions,
+            flags[0], flags[1], loop.settle)  # fmt: skip
+    if loop.settle[0] != NO_FAILURE:
+        _begin_stretch(loop.settle[0], state, ev)
+        return RUNNING
+    if not _evaluate(model, exc, params, active, t, q, qd, mode, work, loop.qdd, loop.lam):
+        _begin_stretch(SINGULAR_MODE, state, ev)
+        return RUNNING
+    _slide_rate(active, mode, work[6], loop.rates)
+    return RUNNING
+
+
+@nb.njit(cache=True)
+def resolve_stretch(model, exc, params, state, work, loop, rec, ev):
+    """After a step of time stepping: overturning, and the return to events.
+
+    A block whose rotation reaches pi/2 overturns with those above it. Every
+    ``STRETCH_STEPS`` steps the event-driven contact problem is tried at the
+    state (:func:`_try_resume`); when a mode is consistent the stretch ends
+    with a ``resume`` event and the state is recorded again.
+    """
+    q, qd, slide, mode, directions, istate, fstate, flags = state
+    t = fstate[F_TIME]
+    active = istate[S_ACTIVE]
+    velocity_before = loop.velocity_before
+    for i in range(active):
+        if abs(work[7][i]) >= 0.5 * math.pi:
+            _copy(velocity_before, qd, 3 * active)
+            _overturn_blocks(t, i, active, flags, flags.shape[1])
+            istate[S_ACTIVE] = i
+            _record_event(state, OVERTURN, i, -1, 0, active, velocity_before, ev)
+            active = i
+            break
+    if active > 0 and istate[S_STRETCH_STEPS] >= STRETCH_STEPS:
+        _copy(velocity_before, qd, 3 * active)
+        if _try_resume(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
+                       directions, flags[0], flags[1], loop.settle, loop.qdd,
+                       loop.lam):  # fmt: skip
+            loop.step[L_REST_READY] = 0
+            _record_event(state, RESUME, -1, -1, 1 if loop.settle[2] > 1 else 0, active,
+                          velocity_before, ev)  # fmt: skip
+            _slide_rate(active, mode, work[6], loop.rates)
+            record(state, loop.lam, work, rec)
+
+
+# --- the loop -----------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True)
+def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, mode, directions,
+        istate, fstate, flags, rec, ev):  # fmt: skip
+    """Advance the simulation until the end, a failure, full buffers or ``chunk_end``.
+
+    Resumable: every piece of the loop's state lives in the arguments
+    (:data:`State`: ``q``, ``qd`` (3 B), ``slide`` (B), the held ``mode``
+    (B, 3) and slide ``directions`` (B), ``istate``/``fstate`` counters,
+    ``flags`` (uplift, free flight, overturned as floats, overturn time, max
+    lift, max flight: (6, B))); ``rec`` and ``ev`` receive the history and
+    the events. Each pass of the loop is one step: a step of the held mode
+    (:func:`advance`); if an event fired in it, its time (:func:`locate`) and
+    what follows it (:func:`resolve`), else the step taken; the state is
+    recorded (:func:`record`). While no event-driven mode is consistent, a
+    step of time stepping instead (:func:`advance_stretch`,
+    :func:`resolve_stretch`). Returns the outcome code.
+    """
+    count = model[0].shape[0]
+    work = _work(count)
+    loop = _loop_arrays(count)
+    state = State(q, qd, slide, mode, directions, istate, fstate, flags)
+    outcome = _start(model, exc, params, state, work, loop, rec, ev)
+    while outcome == RUNNING:
+        outcome = _stop(params, chunk_end, state, rec, ev)
+        if outcome != RUNNING:
+            break
+        if istate[S_STEPPING] == 1:
+            advance_stretch(model, exc, params, h_cap, state, work, loop)
+            record(state, loop.lam, work, rec)
+            resolve_stretch(model, exc, params, state, work, loop, rec, ev)
+            continue
+        h = advance(model, exc, params, breaks, h_cap, state, work, loop)
+        if h < 0.0:
+            _begin_stretch(SINGULAR_MODE, state, ev)
+        elif not _fired(model, params, istate[S_ACTIVE], mode, directions, loop.lam1,
+                        loop.slide1, work, loop.found):  # fmt: skip
+            outcome = _take_step(model, exc, params, h, state, work, loop, rec, ev)
+        else:
+            h = locate(model, exc, params, h, state, work, loop)
+            if h < 0.0:
+                _begin_stretch(SINGULAR_MODE, state, ev)
+            else:
+                outcome = resolve(model, exc, params, max_events, h, state, work, loop, rec, ev)
     istate[S_STATUS] = outcome
     return outcome
 
 
-@nb.njit(cache=True, inline="always")
+@nb.njit(cache=True, inline="always", _nrt=False)
 def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, force_g, coeff,
                 matrix, rhs, qdd, lam, first=0):  # fmt: skip
     """Forces and accelerations of a held mode, without the contact accelerations.
