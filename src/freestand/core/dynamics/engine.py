@@ -119,6 +119,17 @@ FAILURES = (
     TOO_MANY_EVENTS,
 ) = range(7)
 
+#: The stack, made by :func:`freestand.core.dynamics.timehistory.engine_model`:
+#: ``geometry`` (B, 7) (:func:`freestand.core.dynamics.timehistory.stack_geometry`),
+#: ``masses`` (2, 3 B) rows ``MASS`` and ``INVERSE_MASS`` (the diagonal of M and of
+#: M^-1), ``properties`` (6, B) rows ``MU_S``, ``MU_K`` (friction coefficients),
+#: ``RESTITUTION`` (factor on the post-impact relative velocity), ``BASE_LEFT``,
+#: ``BASE_RIGHT``, ``BASE_LEVEL`` (the base's ends and level [m]), and ``codes`` (B)
+#: the sliding codes.
+Model = namedtuple("Model", ("geometry", "masses", "properties", "codes"))
+MASS, INVERSE_MASS = range(2)
+MU_S, MU_K, RESTITUTION, BASE_LEFT, BASE_RIGHT, BASE_LEVEL = range(6)
+
 # --- parameter vector layout (float64) ---------------------------------------------------------
 P_GRAVITY, P_TOL_GAP, P_TOL_VEL, P_TOL_SLIDE, P_TIME_TOL = range(5)
 P_FORCE_EVENT, P_GAP_EVENT, P_EXC_END, P_END, P_STEP, P_EXC_DT = range(5, 11)
@@ -144,6 +155,17 @@ F_TIME, F_MAX_PENETRATION, F_MAX_PROJECTION = range(3)
 #: Time spent time stepping [s]; the largest ratio T(v+)/T(v_f) of a step's impulses
 F_STEPPED_TIME, F_ENERGY_RATIO = 3, 4
 F_SIZE = 5
+
+# --- history and event buffers (made by the caller, grown between calls) ------------------------
+#: ``rec``: ``(time (rows,), values (rows, B, R_SIZE))``, per block the coordinates
+#: ``R_Q`` (3), rates ``R_QD`` (3), normal forces ``R_NORMAL`` (2), tangential force,
+#: relative rotation and slide.
+R_Q, R_QD, R_NORMAL, R_TANGENTIAL, R_ROTATION, R_SLIDE = 0, 3, 6, 8, 9, 10
+R_SIZE = 11
+#: ``ev``: ``(time (rows,), codes (rows, EV_MOTIONS + B) int, velocities (rows, 2, B, 3))``:
+#: kind, interface, contact, status (1: ambiguous), blocks before and after, then each
+#: block's motion code; the rates before (``[:, 0]``) and after (``[:, 1]``).
+EV_MOTIONS = 6
 
 #: Step of the time stepping remedy [s] (at most the engine's step cap).
 STEPPING_STEP = 1e-4
@@ -294,44 +316,56 @@ def kinematics(geometry, active, q, qd, gap, gap_velocity, slip_velocity, rotati
 # --- the time history ---------------------------------------------------------------------------
 
 
-@nb.njit(cache=True)
+#: Work arrays of the kernels (kinematics and the held mode's solve), made by :func:`_work`;
+#: a few packed arrays, so that a call passes few arguments:
+#:
+#: - ``jacobian`` (2, B, 2, 3 B): the gap (``[0]``) and slip (``[1]``) rows of each
+#:   interface's left and right contact (only the columns of the interface's two
+#:   blocks are written; the others stay zero);
+#: - ``contact`` (6, B, 2), rows ``GAP``, ``GAP_VELOCITY``, ``SLIP_VELOCITY``,
+#:   ``GAP_BIAS``, ``SLIP_BIAS`` (the velocity terms b_n, b_t) of each contact and
+#:   ``FRICTION`` (kinetic coefficient, 0) of each interface in the held mode;
+#: - ``blockwise`` (4, B): ``ROTATION`` (relative rotation of each interface) and the
+#:   slide rates ``K2S``, ``K3S``, ``K4S`` of the RK4 stages;
+#: - ``vectors`` (10, 3 B): ``RHS``, ``COEFF``, ``FREE`` (free accelerations) and the
+#:   RK4 stages ``QS``, ``VS``, ``K2A``, ``K3A``, ``K4A``, ``K2V``, ``K3V``;
+#: - ``matrices`` (3, 3 B, 3 B): ``MATRIX``, ``ROWS`` (the held mode's equations) and
+#:   ``FORCE_G`` (M^-1 G of its unknowns).
+Work = namedtuple("Work", ("jacobian", "contact", "blockwise", "vectors", "matrices"))
+GAP, GAP_VELOCITY, SLIP_VELOCITY, GAP_BIAS, SLIP_BIAS, FRICTION = range(6)
+ROTATION, K2S, K3S, K4S = range(4)
+RHS, COEFF, FREE, QS, VS, K2A, K3A, K4A, K2V, K3V = range(10)
+MATRIX, ROWS, FORCE_G = range(3)
+
+
+@nb.njit(cache=True, _nrt=True)
 def _work(count):
-    """Work arrays of the kernels for a stack of ``count`` blocks."""
+    """The :data:`Work` arrays for a stack of ``count`` blocks."""
     n = 3 * count
-    return (
-        np.zeros((count, 2, n)),  # 0 jn
-        np.zeros((count, 2)),  # 1 bn
-        np.zeros((count, 2, n)),  # 2 jt
-        np.zeros((count, 2)),  # 3 bt
-        np.zeros((count, 2)),  # 4 gap
-        np.zeros((count, 2)),  # 5 gap velocity
-        np.zeros((count, 2)),  # 6 slip velocity
-        np.zeros(count),  # 7 rotation
-        np.zeros((4 * count, 4 * count)),  # 8 w
-        np.zeros(4 * count),  # 9 h
-        np.zeros((n, n)),  # 10 matrix
-        np.zeros(n),  # 11 rhs
-        np.zeros(n, dtype=np.int64),  # 12 index
-        np.zeros(n),  # 13 coeff
-        np.zeros(4 * count),  # 14 full
-        np.zeros(n),  # 15 free acceleration
-        np.zeros((count, 3)),  # 16 contact accelerations
-        np.zeros((count, 2)),  # 17 mu of the held mode (kinetic, 0)
-        np.zeros(n, dtype=np.int64),  # 18 kinds of the held mode's unknowns
-        np.zeros((10, n)),  # 19 RK4 stages
-        np.zeros((4, count)),  # 20 RK4 slide rates
-        np.zeros((n, n)),  # 21 rows of the held mode's equations
-        np.zeros((n, n)),  # 22 M^-1 G of the held mode's unknowns
+    return Work(
+        np.zeros((2, count, 2, n)),
+        np.zeros((6, count, 2)),
+        np.zeros((4, count)),
+        np.zeros((10, n)),
+        np.zeros((3, n, n)),
     )
+
+
+@nb.njit(cache=True, inline="always", _nrt=False)
+def _kinematics_into(model, active, q, qd, work, first):
+    """:func:`kinematics` of the first ``active`` blocks into ``work``, from interface ``first``."""
+    contact = work.contact
+    kinematics(
+        model.geometry, active, q, qd, contact[GAP], contact[GAP_VELOCITY], contact[SLIP_VELOCITY],
+        work.blockwise[ROTATION], work.jacobian[0], contact[GAP_BIAS], work.jacobian[1],
+        contact[SLIP_BIAS], None, first,
+    )  # fmt: skip
 
 
 @nb.njit(cache=True, _nrt=False)
 def _kin(model, active, q, qd, work):
-    geometry = model[0]
-    kinematics(
-        geometry, active, q, qd, work[4], work[5], work[6], work[7], work[0], work[1], work[2],
-        work[3],
-    )  # fmt: skip
+    """:func:`kinematics` of the first ``active`` blocks into ``work``."""
+    _kinematics_into(model, active, q, qd, work, 0)
 
 
 @nb.njit(cache=True, _nrt=False)
@@ -347,25 +381,14 @@ def _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam, first=
     """Accelerations and forces of the held mode at a state; kinematics left in ``work``."""
     horizontal, vertical = exc
     a_h, a_v = _support(horizontal, vertical, params[P_EXC_DT], t)
-    geometry = model[0]
-    inverse_mass = model[1]
-    jn = work[0]
-    bn = work[1]
-    jt = work[2]
-    bt = work[3]
-    free = work[15]
+    free = work.vectors[FREE]
     effective_gravity = params[P_GRAVITY] - a_v
     for i in range(active):
         free[3 * i] = -a_h
         free[3 * i + 1] = -effective_gravity
         free[3 * i + 2] = 0.0
-    kinematics(
-        geometry, active, q, qd, work[4], work[5], work[6], work[7], jn, bn, jt, bt, None, first
-    )
-    return _held_solve(
-        active, inverse_mass, free, jn, bn, jt, bt, mode, work[17], work[21], work[22],
-        work[13], work[10], work[11], qdd, lam, first,
-    )  # fmt: skip
+    _kinematics_into(model, active, q, qd, work, first)
+    return _held_solve(active, model.masses[INVERSE_MASS], work, mode, qdd, lam, first)
 
 
 @nb.njit(cache=True, inline="always", _nrt=False)
@@ -384,35 +407,34 @@ def _rk4(model, exc, params, active, t, q, qd, slide, h, mode, k1a, k1s, work, o
          out_slide, lam, first=0):  # fmt: skip
     """One RK4 step of the held mode from ``t`` over ``h``; False for a singular mode."""
     n = 3 * active
-    stages = work[19]
-    qs = stages[0]
-    vs = stages[1]
-    k2a = stages[2]
-    k3a = stages[3]
-    k4a = stages[4]
-    k2v = stages[5]
-    k3v = stages[6]
-    k2s = work[20][0]
-    k3s = work[20][1]
-    k4s = work[20][2]
+    qs = work.vectors[QS]
+    vs = work.vectors[VS]
+    k2a = work.vectors[K2A]
+    k3a = work.vectors[K3A]
+    k4a = work.vectors[K4A]
+    k2v = work.vectors[K2V]
+    k3v = work.vectors[K3V]
+    k2s = work.blockwise[K2S]
+    k3s = work.blockwise[K3S]
+    k4s = work.blockwise[K4S]
     for c in range(n):
         qs[c] = q[c] + 0.5 * h * qd[c]
         k2v[c] = qd[c] + 0.5 * h * k1a[c]
     if not _evaluate(model, exc, params, active, t + 0.5 * h, qs, k2v, mode, work, k2a, lam, first):
         return False
-    _slide_rate(active, mode, work[6], k2s)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], k2s)
     for c in range(n):
         qs[c] = q[c] + 0.5 * h * k2v[c]
         k3v[c] = qd[c] + 0.5 * h * k2a[c]
     if not _evaluate(model, exc, params, active, t + 0.5 * h, qs, k3v, mode, work, k3a, lam, first):
         return False
-    _slide_rate(active, mode, work[6], k3s)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], k3s)
     for c in range(n):
         qs[c] = q[c] + h * k3v[c]
         vs[c] = qd[c] + h * k3a[c]
     if not _evaluate(model, exc, params, active, t + h, qs, vs, mode, work, k4a, lam, first):
         return False
-    _slide_rate(active, mode, work[6], k4s)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], k4s)
     for c in range(n):
         out_q[c] = q[c] + h / 6.0 * (qd[c] + 2.0 * k2v[c] + 2.0 * k3v[c] + vs[c])
         out_qd[c] = qd[c] + h / 6.0 * (k1a[c] + 2.0 * k2a[c] + 2.0 * k3a[c] + k4a[c])
@@ -436,12 +458,12 @@ def _fired(model, params, active, mode, directions, lam, slide, work, found):
 
     ``found`` (4,) int receives it, and the number of event conditions that hold.
     """
-    mu_s = model[3]
-    sliding_codes = model[5]
-    gap = work[4]
-    gap_velocity = work[5]
-    slip_velocity = work[6]
-    rotation = work[7]
+    mu_s = model.properties[MU_S]
+    sliding_codes = model.codes
+    gap = work.contact[GAP]
+    gap_velocity = work.contact[GAP_VELOCITY]
+    slip_velocity = work.contact[SLIP_VELOCITY]
+    rotation = work.blockwise[ROTATION]
     force_event = params[P_FORCE_EVENT]
     gap_event = params[P_GAP_EVENT]
     tol_slide = params[P_TOL_SLIDE]
@@ -498,7 +520,7 @@ def _fired(model, params, active, mode, directions, lam, slide, work, found):
     return found[0] >= 0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
 def _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, out):
     """``out = M^-1 J^T (J M^-1 J^T)^-1 values``: the smallest correction in the mass metric.
 
@@ -560,7 +582,7 @@ def _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, out):
         out[col] = inverse_mass[col] * total
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _project(model, active, q, qd, mode, work, fstate):
     """Put the closed contacts back on their surfaces (positions, then velocities).
 
@@ -568,12 +590,12 @@ def _project(model, active, q, qd, mode, work, fstate):
     velocities projected onto the closed normals and the sticking tangents.
     """
     n = 3 * active
-    inverse_mass = model[1]
-    rows = work[21]
-    values = work[11]
-    system = work[10]
-    rhs = work[13]
-    correction = work[15]
+    inverse_mass = model.masses[INVERSE_MASS]
+    rows = work.matrices[ROWS]
+    values = work.vectors[RHS]
+    system = work.matrices[MATRIX]
+    rhs = work.vectors[COEFF]
+    correction = work.vectors[FREE]
     for _ in range(3):
         _kin(model, active, q, qd, work)
         m = 0
@@ -582,8 +604,8 @@ def _project(model, active, q, qd, mode, work, fstate):
             for c in range(2):
                 if mode[i, c] == 1:
                     for col in range(n):
-                        rows[m, col] = work[0][i, c, col]
-                    values[m] = work[4][i, c]
+                        rows[m, col] = work.jacobian[0][i, c, col]
+                    values[m] = work.contact[GAP][i, c]
                     if -values[m] > fstate[F_MAX_PENETRATION]:
                         fstate[F_MAX_PENETRATION] = -values[m]
                     largest = max(largest, abs(values[m]))
@@ -603,12 +625,12 @@ def _project(model, active, q, qd, mode, work, fstate):
         for c in range(2):
             if mode[i, c] == 1:
                 for col in range(n):
-                    rows[m, col] = work[0][i, c, col]
+                    rows[m, col] = work.jacobian[0][i, c, col]
                 m += 1
         if mode[i, 2] == 1 and mode[i, 0] + mode[i, 1] > 0:
             reference = _reference(mode, i)
             for col in range(n):
-                rows[m, col] = work[2][i, reference, col]
+                rows[m, col] = work.jacobian[1][i, reference, col]
             m += 1
     if m == 0:
         return
@@ -629,10 +651,10 @@ def _lower_contact(gap, i):
 
 @nb.njit(cache=True, _nrt=False)
 def _needs_impact(model, params, active, slide, work):
-    sliding_codes = model[5]
-    gap = work[4]
-    gap_velocity = work[5]
-    slip_velocity = work[6]
+    sliding_codes = model.codes
+    gap = work.contact[GAP]
+    gap_velocity = work.contact[GAP_VELOCITY]
+    slip_velocity = work.contact[SLIP_VELOCITY]
     tol_gap = params[P_TOL_GAP]
     tol_vel = params[P_TOL_VEL]
     gap_event = params[P_GAP_EVENT]
@@ -655,7 +677,7 @@ def _needs_impact(model, params, active, slide, work):
 @nb.njit(cache=True, _nrt=False)
 def _into_stop(model, params, active, slide, work):
     """Whether a block at its engaged end stop still slides into it (kinematics in work)."""
-    sliding_codes = model[5]
+    sliding_codes = model.codes
     tol_vel = params[P_TOL_VEL]
     for i in range(active):
         code = sliding_codes[i]
@@ -663,13 +685,13 @@ def _into_stop(model, params, active, slide, work):
             continue
         if not _engaged(code, slide[i], params[P_TOL_SLIDE]):
             continue
-        slip = work[6][i, _lower_contact(work[4], i)]
+        slip = work.contact[SLIP_VELOCITY][i, _lower_contact(work.contact[GAP], i)]
         if (code == 2 and slip > tol_vel) or (code == 3 and slip < -tol_vel):
             return True
     return False
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
 def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_qd):
     """Velocity jump of an impact (the contact problem at velocity level); count or 0.
 
@@ -679,15 +701,15 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
     body below multiplied by its restitution factor (1: the plastic law).
     """
     n = 3 * active
-    mass = model[2]
-    mu_s = model[3]
-    mu_k = model[4]
-    sliding_codes = model[5]
-    restitution = model[6]
+    mass = model.masses[MASS]
+    mu_s = model.properties[MU_S]
+    mu_k = model.properties[MU_K]
+    sliding_codes = model.codes
+    restitution = model.properties[RESTITUTION]
     _kin(model, active, q, qd, work)
-    gap = work[4]
-    jn = work[0]
-    jt = work[2]
+    gap = work.contact[GAP]
+    jn = work.jacobian[0]
+    jt = work.jacobian[1]
     tol_gap = params[P_TOL_GAP]
     tol_vel = params[P_TOL_VEL]
     bn = np.empty((active, 2))
@@ -717,7 +739,7 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
         if (code == 2 or code == 3) and not engaged:
             effective = 0
         sliding[i] = effective
-        s = work[6][i, _lower_contact(gap, i)]
+        s = work.contact[SLIP_VELOCITY][i, _lower_contact(gap, i)]
         direction = 1 if s > 0.0 else (-1 if s < 0.0 else 0)
         allows = (
             effective == 0
@@ -735,8 +757,8 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
     jumps = np.empty((MAX_DISTINCT, n))
     impulses = np.empty((MAX_DISTINCT, active, 3))
     count = solve_contact_problem(
-        active, model[1], zero, jn, bn, jt, bt, contact_active, slip, sliding, mu_s,
-        mu_k, force_tol, accel_tol, modes, jumps, impulses,
+        active, model.masses[INVERSE_MASS], zero, jn, bn, jt, bt, contact_active, slip, sliding,
+        mu_s, mu_k, force_tol, accel_tol, modes, jumps, impulses,
     )  # fmt: skip
     istate[S_IMPACT_SOLVES] += 1
     if count == 0:
@@ -753,7 +775,7 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
             break
     for c in range(n):
         out_qd[c] = qd[c] + jumps[chosen, c]
-    inverse_mass = model[1]
+    inverse_mass = model.masses[INVERSE_MASS]
     if kinetic_energy(inverse_mass, out_qd, n) > (1.0 + ENERGY_SLACK) * kinetic_energy(
         inverse_mass, qd, n
     ):
@@ -786,18 +808,18 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
     return count
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
 def _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, directions):
     """Solve the contact problem at a state and set the mode to hold; count (0: none)."""
     n = 3 * active
-    mass = model[2]
-    mu_s = model[3]
-    mu_k = model[4]
-    sliding_codes = model[5]
+    mass = model.masses[MASS]
+    mu_s = model.properties[MU_S]
+    mu_k = model.properties[MU_K]
+    sliding_codes = model.codes
     a_h, a_v = _support(exc[0], exc[1], params[P_EXC_DT], t)
     gravity = params[P_GRAVITY]
     _kin(model, active, q, qd, work)
-    gap = work[4]
+    gap = work.contact[GAP]
     tol_gap = params[P_TOL_GAP]
     tol_vel = params[P_TOL_VEL]
     contact_active = np.empty((active, 2), dtype=np.bool_)
@@ -807,9 +829,10 @@ def _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, dir
     for i in range(active):
         total_mass += mass[3 * i]
         for c in range(2):
-            contact_active[i, c] = gap[i, c] <= tol_gap and work[5][i, c] <= tol_vel
+            closing = work.contact[GAP_VELOCITY][i, c]
+            contact_active[i, c] = gap[i, c] <= tol_gap and closing <= tol_vel
         code = sliding_codes[i]
-        s = work[6][i, _lower_contact(gap, i)]
+        s = work.contact[SLIP_VELOCITY][i, _lower_contact(gap, i)]
         if abs(s) <= tol_vel or code == 1:
             s = 0.0
         slip[i] = s
@@ -825,8 +848,9 @@ def _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, dir
     qdds = np.empty((MAX_DISTINCT, n))
     forces = np.empty((MAX_DISTINCT, active, 3))
     count = solve_contact_problem(
-        active, model[1], free, work[0], work[1], work[2], work[3], contact_active, slip,
-        sliding, mu_s, mu_k, force_tol, accel_tol, modes, qdds, forces,
+        active, model.masses[INVERSE_MASS], free, work.jacobian[0], work.contact[GAP_BIAS],
+        work.jacobian[1], work.contact[SLIP_BIAS], contact_active, slip, sliding, mu_s, mu_k,
+        force_tol, accel_tol, modes, qdds, forces,
     )  # fmt: skip
     istate[S_CONTACT_SOLVES] += 1
     if count == 0:
@@ -844,7 +868,7 @@ def _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, dir
     return count
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
 def _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode, directions,
             uplift, free_flight, result):  # fmt: skip
     """Impact if needed, then the mode to hold, then the projection.
@@ -901,25 +925,25 @@ def _motion_code(mode, i):
 @nb.njit(cache=True, _nrt=False)
 def _overturned_after(model, params, active, qd, work):
     """Lowest block past its overturning angle that cannot come back (-1 if none)."""
-    geometry = model[0]
-    mass = model[2]
-    base = model[7]
+    geometry = model.geometry
+    mass = model.masses[MASS]
+    properties = model.properties
     gravity = params[P_GRAVITY]
     for i in range(active):
-        rotation = work[7][i]
+        rotation = work.blockwise[ROTATION][i]
         omega = qd[3 * i + 2] - (qd[3 * i - 1] if i else 0.0)
-        height = geometry[i, 1] - base[i, 2]
+        height = geometry[i, 1] - properties[BASE_LEVEL, i]
         if rotation > 0.0:
-            lever = geometry[i, 0] - base[i, 0]
+            lever = geometry[i, 0] - properties[BASE_LEFT, i]
             away = omega >= 0.0
         else:
-            lever = base[i, 1] - geometry[i, 0]
+            lever = properties[BASE_RIGHT, i] - geometry[i, 0]
             away = omega <= 0.0
         critical = math.atan2(lever, height)
         if abs(rotation) <= critical:
             continue
         radius = math.hypot(lever, height)
-        inertia = 1.0 / model[1][3 * i + 2] + mass[3 * i] * radius**2
+        inertia = 1.0 / model.masses[INVERSE_MASS][3 * i + 2] + mass[3 * i] * radius**2
         barrier = mass[3 * i] * gravity * radius * (1.0 - math.cos(abs(rotation) - critical))
         if away or 0.5 * inertia * omega**2 < barrier:
             return i
@@ -931,7 +955,7 @@ def _event(t, kind, interface, contact, status, active_before, active_after, mod
            qd_after, count, ev, istate):  # fmt: skip
     """Append an event; motions of the first ``active_after`` blocks from ``mode``."""
     e = istate[S_EVENTS]
-    ev_time, ev_code, ev_motion, ev_before, ev_after = ev
+    ev_time, ev_code, ev_velocity = ev
     ev_time[e] = t
     ev_code[e, 0] = kind
     ev_code[e, 1] = interface
@@ -940,10 +964,10 @@ def _event(t, kind, interface, contact, status, active_before, active_after, mod
     ev_code[e, 4] = active_before
     ev_code[e, 5] = active_after
     for i in range(count):
-        ev_motion[e, i] = _motion_code(mode, i) if i < active_after else 5
+        ev_code[e, EV_MOTIONS + i] = _motion_code(mode, i) if i < active_after else 5
         for c in range(3):
-            ev_before[e, i, c] = qd_before[3 * i + c] if i < active_before else np.nan
-            ev_after[e, i, c] = qd_after[3 * i + c] if i < active_after else np.nan
+            ev_velocity[e, 0, i, c] = qd_before[3 * i + c] if i < active_before else np.nan
+            ev_velocity[e, 1, i, c] = qd_after[3 * i + c] if i < active_after else np.nan
     istate[S_EVENTS] = e + 1
 
 
@@ -973,12 +997,12 @@ def _margin(model, params, mode, directions, lam, slide, work, kind, i, c):
     if kind == LIFT_OFF:
         return lam[i, c] + params[P_FORCE_EVENT]
     if kind == IMPACT:
-        return work[4][i, c] + params[P_GAP_EVENT]
+        return work.contact[GAP][i, c] + params[P_GAP_EVENT]
     if kind == SLIP:
-        sliding = model[5][i]
+        sliding = model.codes[i]
         if (sliding == 2 or sliding == 3) and not _engaged(sliding, slide[i], params[P_TOL_SLIDE]):
             sliding = 0
-        limit = model[3][i] * (lam[i, 0] + lam[i, 1]) + params[P_FORCE_EVENT]
+        limit = model.properties[MU_S][i] * (lam[i, 0] + lam[i, 1]) + params[P_FORCE_EVENT]
         tangential = lam[i, 2]
         worst = -math.inf
         if sliding != 2:
@@ -987,13 +1011,13 @@ def _margin(model, params, mode, directions, lam, slide, work, kind, i, c):
             worst = max(worst, tangential)
         return limit - worst
     if kind == SLIP_STOP:
-        slip = work[6][i, _reference(mode, i)]
+        slip = work.contact[SLIP_VELOCITY][i, _reference(mode, i)]
         return directions[i] * slip + 1e-3 * params[P_TOL_VEL]
     if kind == STOP_IMPACT:
-        if model[5][i] == 2:
+        if model.codes[i] == 2:
             return params[P_TOL_SLIDE] - slide[i]
         return slide[i] + params[P_TOL_SLIDE]
-    return 0.5 * math.pi - abs(work[7][i])
+    return 0.5 * math.pi - abs(work.blockwise[ROTATION][i])
 
 
 @nb.njit(cache=True, _nrt=False)
@@ -1080,21 +1104,14 @@ def _rest_prepare(model, active, q, qd, mode, work, rest, qdd):
     ``lam_0`` and the two differences; the kinematics stay in ``work``. Returns
     False for a singular mode.
     """
-    geometry = model[0]
-    kinematics(
-        geometry, active, q, qd, work[4], work[5], work[6], work[7], work[0], work[1], work[2],
-        work[3], None, 0,
-    )  # fmt: skip
-    free = work[15]
+    _kin(model, active, q, qd, work)
+    free = work.vectors[FREE]
     for load in range(3):
         for i in range(active):
             free[3 * i] = 1.0 if load == 1 else 0.0
             free[3 * i + 1] = 1.0 if load == 2 else 0.0
             free[3 * i + 2] = 0.0
-        if not _held_solve(
-            active, model[1], free, work[0], work[1], work[2], work[3], mode, work[17],
-            work[21], work[22], work[13], work[10], work[11], qdd, rest[load], 0,
-        ):  # fmt: skip
+        if not _held_solve(active, model.masses[INVERSE_MASS], work, mode, qdd, rest[load], 0):
             return False
     for load in (1, 2):
         for i in range(active):
@@ -1125,11 +1142,11 @@ def _friction_bounds(model, params, active, slide, work, low, high):
     kinetic while it does; unbounded for ``sliding = "none"`` and, one way,
     at an engaged end stop (see :func:`time_stepping.impulse_step`).
     """
-    mu_s = model[3]
-    mu_k = model[4]
-    codes = model[5]
+    mu_s = model.properties[MU_S]
+    mu_k = model.properties[MU_K]
+    codes = model.codes
     for i in range(active):
-        slip = work[6][i, _lower_contact(work[4], i)]
+        slip = work.contact[SLIP_VELOCITY][i, _lower_contact(work.contact[GAP], i)]
         mu = mu_s[i] if abs(slip) <= params[P_TOL_VEL] else mu_k[i]
         low[i] = mu
         high[i] = mu
@@ -1143,7 +1160,7 @@ def _friction_bounds(model, params, active, slide, work, low, high):
             high[i] = UNBOUNDED_FRICTION
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
 def _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, directions, lam,
                fstate):  # fmt: skip
     """One Moreau-Jean step of ``h`` [s] (:mod:`freestand.core.dynamics.time_stepping`).
@@ -1154,7 +1171,7 @@ def _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, direc
     interface moves. Kinematics at the step's end are left in ``work``.
     """
     n = 3 * active
-    inverse_mass = model[1]
+    inverse_mass = model.masses[INVERSE_MASS]
     midpoint = np.empty(n)
     for k in range(n):
         midpoint[k] = q[k] + 0.5 * h * qd[k]
@@ -1173,18 +1190,18 @@ def _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, direc
         for c in range(2):
             approach = 0.0
             for k in range(n):
-                approach += work[0][i, c, k] * velocity[k]
-            closed[i, c] = work[4][i, c] + 0.5 * h * approach <= params[P_TOL_GAP]
+                approach += work.jacobian[0][i, c, k] * velocity[k]
+            closed[i, c] = work.contact[GAP][i, c] + 0.5 * h * approach <= params[P_TOL_GAP]
     normal = np.empty((active, 2))
     tangential = np.empty((active, 2))
-    ratio = impulse_step(active, inverse_mass, work[0], work[2], closed, low, high, velocity,
-                         normal, tangential)  # fmt: skip
+    ratio = impulse_step(active, inverse_mass, work.jacobian[0], work.jacobian[1], closed, low,
+                         high, velocity, normal, tangential)  # fmt: skip
     fstate[F_ENERGY_RATIO] = max(fstate[F_ENERGY_RATIO], ratio)
     for i in range(active):
-        reference = _lower_contact(work[4], i)
+        reference = _lower_contact(work.contact[GAP], i)
         slip = 0.0
         for k in range(n):
-            slip += work[2][i, reference, k] * velocity[k]
+            slip += work.jacobian[1][i, reference, k] * velocity[k]
         slide[i] += h * slip
         carried = 0
         for c in range(2):
@@ -1208,7 +1225,7 @@ def _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, direc
     _kin(model, active, q, qd, work)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
 def _try_resume(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
                 directions, uplift, free_flight, settle, qdd, lam):  # fmt: skip
     """End the stretch if an event-driven mode is consistent at the state; whether it did.
@@ -1280,50 +1297,45 @@ def _copy_state(q, qd, slide, q_from, qd_from, slide_from, active):
 #: largest flight gap [m].
 State = namedtuple("State", ("q", "qd", "slide", "mode", "directions", "istate", "fstate", "flags"))
 
-#: Scratch arrays of one call of :func:`run`, made by :func:`_loop_arrays`:
+#: Scratch arrays of one call of :func:`run`, made by :func:`_loop_arrays`; a few
+#: packed arrays, so that a call passes few arguments:
 #:
-#: - at the current time ``t``: ``lam`` (B, 3) the held mode's forces (normal at
-#:   the left and right contact, tangential) [N], ``qdd`` (3 B) its
-#:   accelerations, ``rates`` (B) the slide rates;
-#: - ``q1``, ``qd1``, ``slide1``, ``lam1``, ``qdd1``: the end of the trial step
-#:   (:func:`advance`), then the state at the located event (:func:`locate`);
-#: - ``qm``, ``qdm``, ``slide_m``: a trial state inside the step;
-#: - ``q_end``, ``qd_end``, ``a_end``, ``slide_end``, ``rate_end``: the step's end
-#:   for its interpolant;
-#: - ``rest`` (3, B, 3): the rest mode's forces for unit support loads
-#:   (:func:`_rest_prepare`), ``lam_lo``, ``lam_hi``, ``lam_sample`` (B, 3)
-#:   forces of a rest segment at its sample times;
-#: - ``found``, ``found_m`` (4,) int: an event (kind, interface, contact, number of
-#:   event conditions that hold), at the step's end and at a trial state;
-#: - ``settle`` (3,) int: the outcome of :func:`_settle`;
-#: - ``velocity_before`` (3 B): the rates before an event;
-#: - ``step`` (3,) int: ``L_REST_READY`` (``rest`` holds the current rest's
-#:   forces), ``L_RESTING`` (the step is a rest segment), ``L_FIRST`` (the bottom
-#:   blocks that stick to the support and are not integrated).
-Loop = namedtuple(
-    "Loop",
-    (
-        "lam", "qdd", "rates", "q1", "qd1", "slide1", "lam1", "qdd1", "qm", "qdm", "slide_m",
-        "q_end", "qd_end", "a_end", "slide_end", "rate_end", "rest", "lam_lo", "lam_hi",
-        "lam_sample", "found", "found_m", "settle", "velocity_before", "step",
-    ),
-)  # fmt: skip
+#: - ``vectors`` (10, 3 B): ``QDD`` the held mode's accelerations at the current
+#:   time; ``Q1``, ``QD1``, ``QDD1`` the end of the trial step (:func:`advance`),
+#:   then the state at the located event (:func:`locate`); ``QM``, ``QDM`` a trial
+#:   state inside the step; ``Q_END``, ``QD_END``, ``A_END`` the step's end for its
+#:   interpolant; ``BEFORE`` the rates before an event;
+#: - ``blockwise`` (5, B): ``RATES`` the slide rates at the current time, ``SLIDE1``,
+#:   ``SLIDE_M``, ``SLIDE_END``, ``RATE_END`` as the vectors above;
+#: - ``forces`` (8, B, 3) (normal at the left and right contact, tangential) [N]:
+#:   ``LAM`` the held mode's forces at the current time, ``LAM1`` at the trial step's
+#:   end, ``LAM_LO``, ``LAM_HI``, ``LAM_SAMPLE`` those of a rest segment at its sample
+#:   times, and from ``REST`` three rows: the rest mode's forces for unit support
+#:   loads (:func:`_rest_prepare`);
+#: - ``codes`` (4, 4) int: ``FOUND``, ``FOUND_M`` an event (kind, interface,
+#:   contact, number of event conditions that hold) at the step's end and at a trial
+#:   state; ``SETTLE`` the outcome of :func:`_settle`; ``STEP``: ``L_REST_READY``
+#:   (``REST`` holds the current rest's forces), ``L_RESTING`` (the step is a rest
+#:   segment), ``L_FIRST`` (the bottom blocks that stick to the support and are not
+#:   integrated).
+Loop = namedtuple("Loop", ("vectors", "blockwise", "forces", "codes"))
+QDD, Q1, QD1, QDD1, QM, QDM, Q_END, QD_END, A_END, BEFORE = range(10)
+RATES, SLIDE1, SLIDE_M, SLIDE_END, RATE_END = range(5)
+LAM, LAM1, LAM_LO, LAM_HI, LAM_SAMPLE, REST = range(6)
+FOUND, FOUND_M, SETTLE, STEP = range(4)
 L_REST_READY, L_RESTING, L_FIRST = range(3)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
 def _loop_arrays(count):
     """The :data:`Loop` scratch arrays for a stack of ``count`` blocks."""
     n = 3 * count
     return Loop(
-        np.zeros((count, 3)), np.zeros(n), np.zeros(count),
-        np.zeros(n), np.zeros(n), np.zeros(count), np.zeros((count, 3)), np.zeros(n),
-        np.zeros(n), np.zeros(n), np.zeros(count),
-        np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(count), np.zeros(count),
-        np.zeros((3, count, 3)), np.zeros((count, 3)), np.zeros((count, 3)), np.zeros((count, 3)),
-        np.zeros(4, dtype=np.int64), np.zeros(4, dtype=np.int64), np.zeros(3, dtype=np.int64),
-        np.zeros(n), np.zeros(3, dtype=np.int64),
-    )  # fmt: skip
+        np.zeros((10, n)),
+        np.zeros((5, count)),
+        np.zeros((8, count, 3)),
+        np.zeros((4, 4), dtype=np.int64),
+    )
 
 
 # --- record -------------------------------------------------------------------------------------
@@ -1346,9 +1358,9 @@ def record(state, lam, work, rec):
     count = state.flags.shape[1]
     max_lift = state.flags[4]
     max_flight = state.flags[5]
-    rec_time, rec_q, rec_qd, rec_normal, rec_tangential, rec_rotation, rec_slide = rec
+    rec_time, values = rec
     rec_time[row] = state.fstate[F_TIME]
-    gap = work[4]
+    gap = work.contact[GAP]
     for i in range(count):
         if i < active:
             top = max(gap[i, 0], gap[i, 1])
@@ -1358,22 +1370,16 @@ def record(state, lam, work, rec):
             if low > max_flight[i]:
                 max_flight[i] = low
             for c in range(3):
-                rec_q[row, i, c] = state.q[3 * i + c]
-                rec_qd[row, i, c] = state.qd[3 * i + c]
-            rec_normal[row, i, 0] = lam[i, 0]
-            rec_normal[row, i, 1] = lam[i, 1]
-            rec_tangential[row, i] = lam[i, 2]
-            rec_rotation[row, i] = work[7][i]
-            rec_slide[row, i] = state.slide[i]
+                values[row, i, R_Q + c] = state.q[3 * i + c]
+                values[row, i, R_QD + c] = state.qd[3 * i + c]
+            values[row, i, R_NORMAL] = lam[i, 0]
+            values[row, i, R_NORMAL + 1] = lam[i, 1]
+            values[row, i, R_TANGENTIAL] = lam[i, 2]
+            values[row, i, R_ROTATION] = work.blockwise[ROTATION][i]
+            values[row, i, R_SLIDE] = state.slide[i]
         else:
-            for c in range(3):
-                rec_q[row, i, c] = np.nan
-                rec_qd[row, i, c] = np.nan
-            rec_normal[row, i, 0] = np.nan
-            rec_normal[row, i, 1] = np.nan
-            rec_tangential[row, i] = np.nan
-            rec_rotation[row, i] = np.nan
-            rec_slide[row, i] = np.nan
+            for column in range(R_SIZE):
+                values[row, i, column] = np.nan
     istate[S_ROWS] = row + 1
 
 
@@ -1405,7 +1411,7 @@ def _begin_stretch(cause, state, ev):
 # --- start and stop -----------------------------------------------------------------------------
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _start(model, exc, params, state, work, loop, rec, ev):
     """Start the simulation (first call) or pick it up where the last call stopped.
 
@@ -1414,49 +1420,53 @@ def _start(model, exc, params, state, work, loop, rec, ev):
     and the ``start`` event (and the impact's), or a stretch of time stepping
     when no mode is consistent. Later calls: the kinematics (while time
     stepping) or the held mode's forces and accelerations at the state.
-    Writes ``loop.lam``, ``loop.qdd``, ``loop.rates``; returns
-    :data:`BUFFER_FULL` when the buffers cannot take the first rows, else
-    :data:`RUNNING`.
+    Writes the forces ``LAM``, accelerations ``QDD`` and slide rates ``RATES`` of
+    :data:`Loop`; returns :data:`BUFFER_FULL` when the buffers cannot take the
+    first rows, else :data:`RUNNING`.
     """
+    qdd = loop.vectors[QDD]
+    velocity_before = loop.vectors[BEFORE]
+    rates = loop.blockwise[RATES]
+    lam = loop.forces[LAM]
+    settle = loop.codes[SETTLE]
     q, qd, slide, mode, directions, istate, fstate, flags = state
     count = flags.shape[1]
     active = istate[S_ACTIVE]
     t = fstate[F_TIME]
     for i in range(count):
-        work[17][i, 0] = model[4][i]
-        work[17][i, 1] = 0.0
+        work.contact[FRICTION][i, 0] = model.properties[MU_K][i]
+        work.contact[FRICTION][i, 1] = 0.0
     if istate[S_STARTED] == 0:
         if rec[0].shape[0] < 4 or ev[0].shape[0] < 4:
             return BUFFER_FULL
         istate[S_STARTED] = 1
-        _copy(loop.velocity_before, qd, qd.shape[0])
-        settle = loop.settle
+        _copy(velocity_before, qd, qd.shape[0])
         _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
                 directions, flags[0], flags[1], settle)  # fmt: skip
         cause = settle[0]
         status = 1 if settle[2] > 1 else 0
         if cause == NO_FAILURE and not _evaluate(model, exc, params, active, t, q, qd, mode,
-                                                 work, loop.qdd, loop.lam):  # fmt: skip
+                                                 work, qdd, lam):  # fmt: skip
             cause = SINGULAR_MODE
         if cause != NO_FAILURE:
             _kin(model, active, q, qd, work)
-            loop.lam[:] = 0.0
-        record(state, loop.lam, work, rec)
-        _record_event(state, START, -1, -1, status, active, loop.velocity_before, ev)
+            lam[:] = 0.0
+        record(state, lam, work, rec)
+        _record_event(state, START, -1, -1, status, active, velocity_before, ev)
         if settle[1] != 0:
-            _record_event(state, settle[1], -1, -1, status, active, loop.velocity_before, ev)
+            _record_event(state, settle[1], -1, -1, status, active, velocity_before, ev)
         if cause != NO_FAILURE:
             _begin_stretch(cause, state, ev)
     elif istate[S_STEPPING] == 1:
         _kin(model, active, q, qd, work)
-    elif not _evaluate(model, exc, params, active, t, q, qd, mode, work, loop.qdd, loop.lam):
+    elif not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
         _begin_stretch(SINGULAR_MODE, state, ev)
-    _slide_rate(active, mode, work[6], loop.rates)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
     return RUNNING
 
 
 @nb.njit(cache=True, _nrt=False)
-def _stop(params, chunk_end, state, rec, ev):
+def _stop(params, chunk_end, state, rows_capacity, events_capacity):
     """Why the loop stops before its next step, or :data:`RUNNING` to go on.
 
     :data:`COMPLETED` at the end time or once every block has overturned, and
@@ -1482,7 +1492,7 @@ def _stop(params, chunk_end, state, rec, ev):
         return COMPLETED
     if t >= chunk_end:
         return CHUNK_DONE
-    if istate[S_ROWS] + 4 > rec[0].shape[0] or istate[S_EVENTS] + 4 > ev[0].shape[0]:
+    if istate[S_ROWS] + 4 > rows_capacity or istate[S_EVENTS] + 4 > events_capacity:
         return BUFFER_FULL
     return RUNNING
 
@@ -1502,12 +1512,21 @@ def advance(model, exc, params, breaks, h_cap, state, work, loop):
     RK4 step of the held mode (bottom blocks stuck to the support not
     integrated: :func:`_stuck_below`) and the held mode's forces at its end.
 
-    Reads ``state`` and ``loop.qdd``, ``loop.rates`` (accelerations and slide
-    rates at ``t``); writes the step's end to ``loop.q1``, ``qd1``,
-    ``slide1``, ``lam1``, ``qdd1`` (kinematics of the end in ``work``) and
-    ``loop.step`` (resting, first integrated block, rest forces ready). The
-    state is not changed. Returns -1 when the held mode is singular.
+    Reads ``state`` and the accelerations ``QDD`` and slide rates ``RATES`` at
+    ``t`` (:data:`Loop`); writes the step's end to ``Q1``, ``QD1``, ``SLIDE1``,
+    ``LAM1``, ``QDD1`` (kinematics of the end in ``work``) and ``STEP`` (resting,
+    first integrated block, rest forces ready). The state is not changed.
+    Returns -1 when the held mode is singular.
     """
+    qdd = loop.vectors[QDD]
+    q1 = loop.vectors[Q1]
+    qd1 = loop.vectors[QD1]
+    qdd1 = loop.vectors[QDD1]
+    rates = loop.blockwise[RATES]
+    slide1 = loop.blockwise[SLIDE1]
+    lam1 = loop.forces[LAM1]
+    rest = loop.forces[REST : REST + 3]
+    step = loop.codes[STEP]
     q, qd, slide, mode, _, istate, fstate, _ = state
     t = fstate[F_TIME]
     active = istate[S_ACTIVE]
@@ -1517,82 +1536,92 @@ def advance(model, exc, params, breaks, h_cap, state, work, loop):
         h = h_cap
     resting = _at_rest(active, mode, qd)
     first = _stuck_below(active, mode, qd)
-    loop.step[L_RESTING] = 1 if resting else 0
-    loop.step[L_FIRST] = first
+    step[L_RESTING] = 1 if resting else 0
+    step[L_FIRST] = first
     if resting:
         # the whole stack moves with the support: nothing moves in its frame and the
         # forces are affine in the support accelerations (_rest_prepare, once per
         # rest), hence linear in time between two break points; only the end of
         # the segment is evaluated
-        _copy_state(loop.q1, loop.qd1, loop.slide1, q, qd, slide, active)
-        if loop.step[L_REST_READY] == 0:
-            if not _rest_prepare(model, active, q, qd, mode, work, loop.rest, loop.qdd1):
+        _copy_state(q1, qd1, slide1, q, qd, slide, active)
+        if step[L_REST_READY] == 0:
+            if not _rest_prepare(model, active, q, qd, mode, work, rest, qdd1):
                 return -1.0
-            loop.step[L_REST_READY] = 1
-        _rest_forces(exc, params, active, t + h, loop.rest, loop.lam1)
-        loop.qdd1[:n] = 0.0
+            step[L_REST_READY] = 1
+        _rest_forces(exc, params, active, t + h, rest, lam1)
+        qdd1[:n] = 0.0
         return h
-    loop.step[L_REST_READY] = 0
-    if not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, loop.qdd, loop.rates,
-                work, loop.q1, loop.qd1, loop.slide1, loop.lam1, first):  # fmt: skip
+    step[L_REST_READY] = 0
+    if not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, qdd, rates,
+                work, q1, qd1, slide1, lam1, first):  # fmt: skip
         return -1.0
-    if not _evaluate(model, exc, params, active, t + h, loop.q1, loop.qd1, mode, work, loop.qdd1,
-                     loop.lam1):  # fmt: skip
+    if not _evaluate(model, exc, params, active, t + h, q1, qd1, mode, work, qdd1,
+                     lam1):  # fmt: skip
         return -1.0
     return h
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _take_step(model, exc, params, h, state, work, loop, rec, ev):
     """Accept a step in which no event fired; an outcome code.
 
-    Moves the state to the step's end (``loop.q1``, ...), puts the closed
+    Moves the state to the step's end (``Q1``, ... of :data:`Loop`), puts the closed
     contacts back on their surfaces when they drifted (:func:`_project`), records
     the row and, after the excitation, lets a block past its overturning
     angle fall (:func:`_overturn_after_excitation`).
     """
+    qdd = loop.vectors[QDD]
+    q1 = loop.vectors[Q1]
+    qd1 = loop.vectors[QD1]
+    qdd1 = loop.vectors[QDD1]
+    rates = loop.blockwise[RATES]
+    slide1 = loop.blockwise[SLIDE1]
+    lam = loop.forces[LAM]
+    lam1 = loop.forces[LAM1]
+    step = loop.codes[STEP]
     q, qd, slide, mode, _, istate, fstate, _ = state
     active = istate[S_ACTIVE]
     n = 3 * active
     t = fstate[F_TIME] + h
     fstate[F_TIME] = t
-    _copy(loop.qdd, loop.qdd1, n)
-    _copy_state(q, qd, slide, loop.q1, loop.qd1, loop.slide1, active)
-    _copy_rows(loop.lam, loop.lam1, active)
-    _slide_rate(active, mode, work[6], loop.rates)
+    _copy(qdd, qdd1, n)
+    _copy_state(q, qd, slide, q1, qd1, slide1, active)
+    _copy_rows(lam, lam1, active)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
     istate[S_STEPS] += 1
     drift = 0.0
     for i in range(active):
         for c in range(2):
             if mode[i, c] == 1:
-                drift = max(drift, abs(work[4][i, c]))
+                drift = max(drift, abs(work.contact[GAP][i, c]))
     if drift > 1e-3 * params[P_TOL_GAP]:
-        loop.step[L_REST_READY] = 0
+        step[L_REST_READY] = 0
         _project(model, active, q, qd, mode, work, fstate)
-        if not _evaluate(model, exc, params, active, t, q, qd, mode, work, loop.qdd, loop.lam):
+        if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
             _begin_stretch(SINGULAR_MODE, state, ev)
             return RUNNING
-        _slide_rate(active, mode, work[6], loop.rates)
-    record(state, loop.lam, work, rec)
+        _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
+    record(state, lam, work, rec)
     if t >= params[P_EXC_END]:
         return _overturn_after_excitation(model, exc, params, state, work, loop, ev)
     return RUNNING
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def advance_stretch(model, exc, params, h_cap, state, work, loop):
     """One step of the time-stepping remedy (:func:`_time_step`, ``STEPPING_STEP``).
 
     Advances the state (time, coordinates, rates, slides; the mode and
     directions of the contacts that carried an impulse) and the stepping
-    counters; ``loop.lam`` receives the step's mean contact forces, ``work``
+    counters; ``LAM`` (:data:`Loop`) receives the step's mean contact forces, ``work``
     the kinematics at its end.
     """
+    lam = loop.forces[LAM]
     q, qd, slide, mode, directions, istate, fstate, _ = state
     t = fstate[F_TIME]
     h = min(STEPPING_STEP, h_cap, params[P_END] - t)
     _time_step(model, exc, params, istate[S_ACTIVE], t, h, q, qd, slide, work, mode, directions,
-               loop.lam, fstate)  # fmt: skip
+               lam, fstate)  # fmt: skip
     fstate[F_TIME] = t + h
     istate[S_STEPS] += 1
     istate[S_STRETCH_STEPS] += 1
@@ -1611,22 +1640,24 @@ def _bracket_at_rest(model, exc, params, h, state, work, loop):
     between the excitation's samples, so the segment is first narrowed to
     the samples around the first that fires, then the crossing interpolated
     and checked on both sides within the time tolerance. Writes the event
-    that fires to ``loop.found`` when a check finds it.
+    that fires to ``FOUND`` (:data:`Loop`) when a check finds it.
     """
+    lam = loop.forces[LAM]
+    lam1 = loop.forces[LAM1]
+    found = loop.codes[FOUND]
+    found_m = loop.codes[FOUND_M]
+    lam_hi = loop.forces[LAM_HI]
+    lam_lo = loop.forces[LAM_LO]
+    lam_sample = loop.forces[LAM_SAMPLE]
+    rest = loop.forces[REST : REST + 3]
     _, _, slide, mode, directions, istate, fstate, _ = state
     t = fstate[F_TIME]
     active = istate[S_ACTIVE]
     time_tol = params[P_TIME_TOL]
-    rest = loop.rest
-    lam_lo = loop.lam_lo
-    lam_hi = loop.lam_hi
-    lam_sample = loop.lam_sample
-    found = loop.found
-    found_m = loop.found_m
     seg_lo = 0.0
     seg_hi = h
-    _copy_rows(lam_lo, loop.lam, active)
-    _copy_rows(lam_hi, loop.lam1, active)
+    _copy_rows(lam_lo, lam, active)
+    _copy_rows(lam_hi, lam1, active)
     dt_exc = params[P_EXC_DT]
     k_sample = math.floor(t / dt_exc + 1e-9) + 1
     while k_sample * dt_exc < t + h - 1e-6 * time_tol:
@@ -1656,14 +1687,14 @@ def _bracket_at_rest(model, exc, params, h, state, work, loop):
     low = max(0.0, earliest - time_tol)
     high = min(h, earliest + time_tol)
     if low > 0.0:
-        _rest_forces(exc, params, active, t + low, rest, loop.lam1)
-        if _fired(model, params, active, mode, directions, loop.lam1, slide, work, found_m):
+        _rest_forces(exc, params, active, t + low, rest, lam1)
+        if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
             # the margins were not linear over the segment: search [0, low]
             _copy(found, found_m, 4)
             return 0.0, low
     if high < h:
-        _rest_forces(exc, params, active, t + high, rest, loop.lam1)
-        if _fired(model, params, active, mode, directions, loop.lam1, slide, work, found_m):
+        _rest_forces(exc, params, active, t + high, rest, lam1)
+        if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
             # located to the tolerance; events crossing within it are taken as
             # simultaneous (reported by priority, as at a jump of the excitation)
             _copy(found, found_m, 4)
@@ -1682,27 +1713,57 @@ def _bracket_on_interpolant(model, exc, params, h, state, work, loop):
     with Newton steps on an impact's gap and bisection while an open contact
     still rises; then a bracket of true RK4 states around the root, checked.
     ``g_low``, ``g_high``: the function at the bracket's ends (NaN where not
-    known). Reads the step's end in ``loop.q1``, ... and the event in
-    ``loop.found``; a checked RK4 state that fires replaces them.
+    known). Reads the step's end in ``Q1``, ... and the event in ``FOUND``
+    (:data:`Loop`); a checked RK4 state that fires replaces them.
     """
+    qdd = loop.vectors[QDD]
+    q1 = loop.vectors[Q1]
+    qd1 = loop.vectors[QD1]
+    qdd1 = loop.vectors[QDD1]
+    qm = loop.vectors[QM]
+    qdm = loop.vectors[QDM]
+    q_end = loop.vectors[Q_END]
+    qd_end = loop.vectors[QD_END]
+    a_end = loop.vectors[A_END]
+    rates = loop.blockwise[RATES]
+    slide1 = loop.blockwise[SLIDE1]
+    slide_m = loop.blockwise[SLIDE_M]
+    slide_end = loop.blockwise[SLIDE_END]
+    rate_end = loop.blockwise[RATE_END]
+    lam1 = loop.forces[LAM1]
+    step = loop.codes[STEP]
+    found = loop.codes[FOUND]
+    found_m = loop.codes[FOUND_M]
     q, qd, slide, mode, directions, istate, fstate, _ = state
     t = fstate[F_TIME]
     active = istate[S_ACTIVE]
     n = 3 * active
     time_tol = params[P_TIME_TOL]
-    first = loop.step[L_FIRST]
-    found = loop.found
-    found_m = loop.found_m
-    q1, qd1, slide1, lam1, qdd1 = loop.q1, loop.qd1, loop.slide1, loop.lam1, loop.qdd1
-    qm, qdm, slide_m = loop.qm, loop.qdm, loop.slide_m
+    first = step[L_FIRST]
+    q1, qd1, slide1, lam1, qdd1 = (
+        q1,
+        qd1,
+        slide1,
+        lam1,
+        qdd1,
+    )
+    qm, qdm, slide_m = qm, qdm, slide_m
     low = 0.0
     high = h
     g_high = _margin(model, params, mode, directions, lam1, slide1, work, found[0], found[1],
                      found[2])  # fmt: skip
     # the step's end, for the interpolant below
-    _copy_state(loop.q_end, loop.qd_end, loop.slide_end, q1, qd1, slide1, active)
-    _copy(loop.a_end, qdd1, n)
-    _slide_rate(active, mode, work[6], loop.rate_end)
+    _copy_state(
+        q_end,
+        qd_end,
+        slide_end,
+        q1,
+        qd1,
+        slide1,
+        active,
+    )
+    _copy(a_end, qdd1, n)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rate_end)
     _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd1, lam1)
     g_low = _margin(model, params, mode, directions, lam1, slide, work, found[0], found[1],
                     found[2])  # fmt: skip
@@ -1724,7 +1785,7 @@ def _bracket_on_interpolant(model, exc, params, h, state, work, loop):
     newton = math.nan
     # an open contact that still rises at the step's start comes down within
     # it: bisection while the left end rises (regula falsi creeps there)
-    rising = impact and work[5][found[1], found[2]] >= 0.0
+    rising = impact and work.contact[GAP_VELOCITY][found[1], found[2]] >= 0.0
     for _ in range(60):
         if b - a <= 0.1 * time_tol:
             break
@@ -1735,8 +1796,8 @@ def _bracket_on_interpolant(model, exc, params, h, state, work, loop):
             else:
                 x = a + ga * (b - a) / (ga - gb)
         x = min(max(x, a + 0.01 * time_tol), b - 0.01 * time_tol)
-        _hermite(active, q, qd, loop.qdd, slide, loop.rates, loop.q_end, loop.qd_end, loop.a_end,
-                 loop.slide_end, loop.rate_end, h, x / h, qm, qdm, slide_m)  # fmt: skip
+        _hermite(active, q, qd, qdd, slide, rates, q_end, qd_end, a_end,
+                 slide_end, rate_end, h, x / h, qm, qdm, slide_m)  # fmt: skip
         if kinematic:
             _kin(model, active, qm, qdm, work)
         else:
@@ -1745,7 +1806,7 @@ def _bracket_on_interpolant(model, exc, params, h, state, work, loop):
                      found[2])  # fmt: skip
         newton = math.nan
         if impact:
-            rate = work[5][found[1], found[2]]
+            rate = work.contact[GAP_VELOCITY][found[1], found[2]]
             if gx >= 0.0:
                 rising = rate >= 0.0
             if rate < 0.0:
@@ -1771,7 +1832,7 @@ def _bracket_on_interpolant(model, exc, params, h, state, work, loop):
     lower = max(0.0, upper - 0.9 * time_tol)
     if not (upper < high and lower > low):
         return low, high, g_low, g_high
-    ok = _rk4(model, exc, params, active, t, q, qd, slide, upper, mode, loop.qdd, loop.rates,
+    ok = _rk4(model, exc, params, active, t, q, qd, slide, upper, mode, qdd, rates,
               work, qm, qdm, slide_m, lam1, first)  # fmt: skip
     ok = ok and _evaluate(model, exc, params, active, t + upper, qm, qdm, mode, work, qdd1, lam1)
     if ok and _fired(model, params, active, mode, directions, lam1, slide_m, work, found_m):
@@ -1782,7 +1843,7 @@ def _bracket_on_interpolant(model, exc, params, h, state, work, loop):
         _copy(found, found_m, 4)
         g_high = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
                          found[1], found[2])  # fmt: skip
-        rate = work[5][found[1], found[2]] if found[0] == IMPACT else 0.0
+        rate = work.contact[GAP_VELOCITY][found[1], found[2]] if found[0] == IMPACT else 0.0
         if found[3] == 1 and rate < 0.0 and (upper - g_high / rate >= lower + 0.05 * time_tol):
             # the impact alone fired, and its gap, closing at this rate, was
             # still open at ``lower`` (linear over the tolerance)
@@ -1790,8 +1851,8 @@ def _bracket_on_interpolant(model, exc, params, h, state, work, loop):
             g_low = g_high - rate * (upper - lower)
             ok = False
         else:
-            ok = _rk4(model, exc, params, active, t, q, qd, slide, lower, mode, loop.qdd,
-                      loop.rates, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
+            ok = _rk4(model, exc, params, active, t, q, qd, slide, lower, mode, qdd,
+                      rates, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
             ok = ok and _evaluate(model, exc, params, active, t + lower, qm, qdm, mode, work,
                                   qdd1, lam1)  # fmt: skip
         if ok and not _fired(model, params, active, mode, directions, lam1, slide_m, work,
@@ -1815,17 +1876,30 @@ def _bracket_on_interpolant(model, exc, params, h, state, work, loop):
 def locate(model, exc, params, h, state, work, loop):
     """Time [s from t] of the earliest event of the step, to the time tolerance; -1 if singular.
 
-    An event fired at the step's end (``loop.found``). A bracket [low, high]
+    An event fired at the step's end (``FOUND`` of :data:`Loop`). A bracket [low, high]
     (not fired, fired) is found on the step's interpolant
     (:func:`_bracket_on_interpolant`) or, for a rest segment, between the
     excitation's samples (:func:`_bracket_at_rest`), then cut to the time
     tolerance on true RK4 states by the Illinois variant of regula falsi on the
     event's function (bisection while that function is not known on both
     sides). Writes the state at the event (the first RK4 state found to fire,
-    at ``high``) to ``loop.q1``, ``qd1``, ``slide1`` and the event to
-    ``loop.found``; the state itself is not changed.
+    at ``high``) to ``Q1``, ``QD1``, ``SLIDE1`` and the event to ``FOUND``; the
+    state itself is not changed.
     """
-    if loop.step[L_RESTING] == 1:
+    qdd = loop.vectors[QDD]
+    q1 = loop.vectors[Q1]
+    qd1 = loop.vectors[QD1]
+    qdd1 = loop.vectors[QDD1]
+    qm = loop.vectors[QM]
+    qdm = loop.vectors[QDM]
+    rates = loop.blockwise[RATES]
+    slide1 = loop.blockwise[SLIDE1]
+    slide_m = loop.blockwise[SLIDE_M]
+    lam1 = loop.forces[LAM1]
+    step = loop.codes[STEP]
+    found = loop.codes[FOUND]
+    trial = loop.codes[FOUND_M]
+    if step[L_RESTING] == 1:
         low, high = _bracket_at_rest(model, exc, params, h, state, work, loop)
         # a bracket of at most twice the tolerance: bisection
         g_high = -1.0
@@ -1834,13 +1908,11 @@ def locate(model, exc, params, h, state, work, loop):
         low, high, g_low, g_high = _bracket_on_interpolant(model, exc, params, h, state, work,
                                                            loop)  # fmt: skip
     # what follows (RK4 states, the event's settling) leaves other kinematics in work
-    loop.step[L_REST_READY] = 0
+    step[L_REST_READY] = 0
     q, qd, slide, mode, directions, istate, fstate, _ = state
     t = fstate[F_TIME]
     active = istate[S_ACTIVE]
     time_tol = params[P_TIME_TOL]
-    found = loop.found
-    trial = loop.found_m
     side = 0
     while high - low > time_tol:
         width = high - low
@@ -1849,28 +1921,46 @@ def locate(model, exc, params, h, state, work, loop):
             middle = min(max(middle, low + 0.01 * time_tol), high - 0.01 * time_tol)
         else:
             middle = 0.5 * (low + high)
-        if not _rk4(model, exc, params, active, t, q, qd, slide, middle, mode, loop.qdd,
-                    loop.rates, work, loop.qm, loop.qdm, loop.slide_m, loop.lam1,
-                    loop.step[L_FIRST]):  # fmt: skip
+        if not _rk4(model, exc, params, active, t, q, qd, slide, middle, mode, qdd,
+                    rates, work, qm, qdm, slide_m, lam1,
+                    step[L_FIRST]):  # fmt: skip
             return -1.0
-        if not _evaluate(model, exc, params, active, t + middle, loop.qm, loop.qdm, mode, work,
-                         loop.qdd1, loop.lam1):  # fmt: skip
+        if not _evaluate(model, exc, params, active, t + middle, qm, qdm, mode, work,
+                         qdd1, lam1):  # fmt: skip
             return -1.0
-        if _fired(model, params, active, mode, directions, loop.lam1, loop.slide_m, work, trial):
+        if _fired(
+            model,
+            params,
+            active,
+            mode,
+            directions,
+            lam1,
+            slide_m,
+            work,
+            trial,
+        ):
             high = middle
-            _copy_state(loop.q1, loop.qd1, loop.slide1, loop.qm, loop.qdm, loop.slide_m, active)
+            _copy_state(
+                q1,
+                qd1,
+                slide1,
+                qm,
+                qdm,
+                slide_m,
+                active,
+            )
             if trial[0] != found[0] or trial[1] != found[1] or trial[2] != found[2]:
                 g_low = math.nan  # another event: its function is not known at low
                 side = 0
             _copy(found, trial, 4)
-            g_high = _margin(model, params, mode, directions, loop.lam1, loop.slide_m, work,
+            g_high = _margin(model, params, mode, directions, lam1, slide_m, work,
                              found[0], found[1], found[2])  # fmt: skip
             if side == 1:
                 g_low *= 0.5
             side = 1
         else:
             low = middle
-            g_low = _margin(model, params, mode, directions, loop.lam1, loop.slide_m, work,
+            g_low = _margin(model, params, mode, directions, lam1, slide_m, work,
                             found[0], found[1], found[2])  # fmt: skip
             if side == -1:
                 g_high *= 0.5
@@ -1881,11 +1971,11 @@ def locate(model, exc, params, h, state, work, loop):
 # --- resolve ------------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def resolve(model, exc, params, max_events, h, state, work, loop, rec, ev):
     """Move to the located event ``h`` [s] after t and resolve it; an outcome code.
 
-    The state moves to the event (``loop.q1``, ...; :func:`locate`), which is
+    The state moves to the event (``Q1``, ... of :data:`Loop`; :func:`locate`), which is
     recorded; an overturned block and those above it leave the stack; then the
     impact if one is needed, the next contact mode and the projection onto the
     closed contacts (:func:`_settle`), the event, and the new mode's forces,
@@ -1896,11 +1986,20 @@ def resolve(model, exc, params, max_events, h, state, work, loop, rec, ev):
     overturned, :data:`FAILED` after more than ``max_events`` events, else
     :data:`RUNNING`.
     """
+    qdd = loop.vectors[QDD]
+    q1 = loop.vectors[Q1]
+    qd1 = loop.vectors[QD1]
+    rates = loop.blockwise[RATES]
+    slide1 = loop.blockwise[SLIDE1]
+    lam = loop.forces[LAM]
+    found = loop.codes[FOUND]
+    settle = loop.codes[SETTLE]
+    velocity_before = loop.vectors[BEFORE]
     q, qd, slide, mode, directions, istate, fstate, flags = state
     active = istate[S_ACTIVE]
     count = flags.shape[1]
     n = 3 * active
-    _copy_state(q, qd, slide, loop.q1, loop.qd1, loop.slide1, active)
+    _copy_state(q, qd, slide, q1, qd1, slide1, active)
     t = fstate[F_TIME] + h
     fstate[F_TIME] = t
     istate[S_STEPS] += 1
@@ -1912,13 +2011,11 @@ def resolve(model, exc, params, max_events, h, state, work, loop, rec, ev):
         _begin_stretch(STALLED, state, ev)
         return RUNNING
     # state at the event (kinematics and forces of the held mode)
-    _evaluate(model, exc, params, active, t, q, qd, mode, work, loop.qdd, loop.lam)
-    record(state, loop.lam, work, rec)
-    found = loop.found
+    _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam)
+    record(state, lam, work, rec)
     kind = found[0]
     interface = found[1]
     contact = found[2]
-    velocity_before = loop.velocity_before
     _copy(velocity_before, qd, n)
     before = active
     if kind == OVERTURN:
@@ -1928,7 +2025,6 @@ def resolve(model, exc, params, max_events, h, state, work, loop, rec, ev):
         if active == 0:
             _record_event(state, kind, interface, contact, 0, before, velocity_before, ev)
             return COMPLETED
-    settle = loop.settle
     _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode, directions,
             flags[0], flags[1], settle)  # fmt: skip
     if settle[0] != NO_FAILURE:
@@ -1944,15 +2040,15 @@ def resolve(model, exc, params, max_events, h, state, work, loop, rec, ev):
     if istate[S_EVENTS] > max_events:
         istate[S_FAILURE] = TOO_MANY_EVENTS
         return FAILED
-    if not _evaluate(model, exc, params, active, t, q, qd, mode, work, loop.qdd, loop.lam):
+    if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
         _begin_stretch(SINGULAR_MODE, state, ev)
         return RUNNING
-    _slide_rate(active, mode, work[6], loop.rates)
-    record(state, loop.lam, work, rec)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
+    record(state, lam, work, rec)
     return RUNNING
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _overturn_after_excitation(model, exc, params, state, work, loop, ev):
     """After the excitation, a block past its overturning angle that cannot come back falls.
 
@@ -1961,6 +2057,12 @@ def _overturn_after_excitation(model, exc, params, state, work, loop, ev):
     stepping if none is consistent). Returns :data:`COMPLETED` when no block
     is left, else :data:`RUNNING`.
     """
+    qdd = loop.vectors[QDD]
+    rates = loop.blockwise[RATES]
+    lam = loop.forces[LAM]
+    settle = loop.codes[SETTLE]
+    step = loop.codes[STEP]
+    velocity_before = loop.vectors[BEFORE]
     q, qd, slide, mode, directions, istate, fstate, flags = state
     active = istate[S_ACTIVE]
     index = _overturned_after(model, params, active, qd, work)
@@ -1968,8 +2070,7 @@ def _overturn_after_excitation(model, exc, params, state, work, loop, ev):
         return RUNNING
     t = fstate[F_TIME]
     n = 3 * active
-    velocity_before = loop.velocity_before
-    loop.step[L_REST_READY] = 0
+    step[L_REST_READY] = 0
     _copy(velocity_before, qd, n)
     _overturn_blocks(t, index, active, flags, flags.shape[1])
     istate[S_ACTIVE] = index
@@ -1979,18 +2080,18 @@ def _overturn_after_excitation(model, exc, params, state, work, loop, ev):
         return COMPLETED
     _copy(velocity_before, qd, 3 * active)
     _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode, directions,
-            flags[0], flags[1], loop.settle)  # fmt: skip
-    if loop.settle[0] != NO_FAILURE:
-        _begin_stretch(loop.settle[0], state, ev)
+            flags[0], flags[1], settle)  # fmt: skip
+    if settle[0] != NO_FAILURE:
+        _begin_stretch(settle[0], state, ev)
         return RUNNING
-    if not _evaluate(model, exc, params, active, t, q, qd, mode, work, loop.qdd, loop.lam):
+    if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
         _begin_stretch(SINGULAR_MODE, state, ev)
         return RUNNING
-    _slide_rate(active, mode, work[6], loop.rates)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
     return RUNNING
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def resolve_stretch(model, exc, params, state, work, loop, rec, ev):
     """After a step of time stepping: overturning, and the return to events.
 
@@ -1999,12 +2100,17 @@ def resolve_stretch(model, exc, params, state, work, loop, rec, ev):
     state (:func:`_try_resume`); when a mode is consistent the stretch ends
     with a ``resume`` event and the state is recorded again.
     """
+    qdd = loop.vectors[QDD]
+    rates = loop.blockwise[RATES]
+    lam = loop.forces[LAM]
+    settle = loop.codes[SETTLE]
+    step = loop.codes[STEP]
+    velocity_before = loop.vectors[BEFORE]
     q, qd, slide, mode, directions, istate, fstate, flags = state
     t = fstate[F_TIME]
     active = istate[S_ACTIVE]
-    velocity_before = loop.velocity_before
     for i in range(active):
-        if abs(work[7][i]) >= 0.5 * math.pi:
+        if abs(work.blockwise[ROTATION][i]) >= 0.5 * math.pi:
             _copy(velocity_before, qd, 3 * active)
             _overturn_blocks(t, i, active, flags, flags.shape[1])
             istate[S_ACTIVE] = i
@@ -2014,19 +2120,19 @@ def resolve_stretch(model, exc, params, state, work, loop, rec, ev):
     if active > 0 and istate[S_STRETCH_STEPS] >= STRETCH_STEPS:
         _copy(velocity_before, qd, 3 * active)
         if _try_resume(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
-                       directions, flags[0], flags[1], loop.settle, loop.qdd,
-                       loop.lam):  # fmt: skip
-            loop.step[L_REST_READY] = 0
-            _record_event(state, RESUME, -1, -1, 1 if loop.settle[2] > 1 else 0, active,
+                       directions, flags[0], flags[1], settle, qdd,
+                       lam):  # fmt: skip
+            step[L_REST_READY] = 0
+            _record_event(state, RESUME, -1, -1, 1 if settle[2] > 1 else 0, active,
                           velocity_before, ev)  # fmt: skip
-            _slide_rate(active, mode, work[6], loop.rates)
-            record(state, loop.lam, work, rec)
+            _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
+            record(state, lam, work, rec)
 
 
 # --- the loop -----------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
 def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, mode, directions,
         istate, fstate, flags, rec, ev):  # fmt: skip
     """Advance the simulation until the end, a failure, full buffers or ``chunk_end``.
@@ -2043,25 +2149,35 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
     step of time stepping instead (:func:`advance_stretch`,
     :func:`resolve_stretch`). Returns the outcome code.
     """
-    count = model[0].shape[0]
-    work = _work(count)
-    loop = _loop_arrays(count)
+    count = model.geometry.shape[0]
     state = State(q, qd, slide, mode, directions, istate, fstate, flags)
+    return _loop(model, exc, breaks, params, h_cap, max_events, chunk_end, state, _work(count),
+                 _loop_arrays(count), rec, ev)  # fmt: skip
+
+
+@nb.njit(cache=True, _nrt=False)
+def _loop(model, exc, breaks, params, h_cap, max_events, chunk_end, state, work, loop, rec, ev):
+    """The loop of :func:`run` on its :data:`State`, work and :data:`Loop` arrays."""
+    slide1 = loop.blockwise[SLIDE1]
+    lam = loop.forces[LAM]
+    lam1 = loop.forces[LAM1]
+    found = loop.codes[FOUND]
+    istate = state.istate
     outcome = _start(model, exc, params, state, work, loop, rec, ev)
     while outcome == RUNNING:
-        outcome = _stop(params, chunk_end, state, rec, ev)
+        outcome = _stop(params, chunk_end, state, rec[0].shape[0], ev[0].shape[0])
         if outcome != RUNNING:
             break
         if istate[S_STEPPING] == 1:
             advance_stretch(model, exc, params, h_cap, state, work, loop)
-            record(state, loop.lam, work, rec)
+            record(state, lam, work, rec)
             resolve_stretch(model, exc, params, state, work, loop, rec, ev)
             continue
         h = advance(model, exc, params, breaks, h_cap, state, work, loop)
         if h < 0.0:
             _begin_stretch(SINGULAR_MODE, state, ev)
-        elif not _fired(model, params, istate[S_ACTIVE], mode, directions, loop.lam1,
-                        loop.slide1, work, loop.found):  # fmt: skip
+        elif not _fired(model, params, istate[S_ACTIVE], state.mode, state.directions, lam1,
+                        slide1, work, found):  # fmt: skip
             outcome = _take_step(model, exc, params, h, state, work, loop, rec, ev)
         else:
             h = locate(model, exc, params, h, state, work, loop)
@@ -2074,8 +2190,7 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
 
 
 @nb.njit(cache=True, inline="always", _nrt=False)
-def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, force_g, coeff,
-                matrix, rhs, qdd, lam, first=0):  # fmt: skip
+def _held_solve(active, inverse_mass, work, mode, qdd, lam, first=0):
     """Forces and accelerations of a held mode, without the contact accelerations.
 
     The unknowns ``x_j`` are the closed contacts' normal forces and the
@@ -2084,14 +2199,26 @@ def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, for
     friction). Equations: zero gap acceleration at the closed contacts and
     zero slip acceleration at the sticking interfaces,
     ``sum_j (J_r M^-1 G_j^T) x_j = -(J_r M^-1 f + b_r)``; then
-    ``qdd = M^-1 (f + sum_j G_j^T x_j)``. ``row_j``, ``force_g`` (3 B, 3 B)
-    work arrays. Returns False when singular.
+    ``qdd = M^-1 (f + sum_j G_j^T x_j)``, with ``f`` the free accelerations
+    ``work.vectors[FREE]`` and the kinematics in ``work``. Returns False when
+    singular.
 
     With ``first`` > 0 the blocks below ``first`` are held fixed (they stick to
     the support, nothing moves): only the interfaces from ``first`` up and
     the coordinates of their upper blocks take part; the others get no
     acceleration and their forces are not computed (zero).
     """
+    free = work.vectors[FREE]
+    jn = work.jacobian[0]
+    jt = work.jacobian[1]
+    bn = work.contact[GAP_BIAS]
+    bt = work.contact[SLIP_BIAS]
+    mu = work.contact[FRICTION]
+    row_j = work.matrices[ROWS]
+    force_g = work.matrices[FORCE_G]
+    matrix = work.matrices[MATRIX]
+    coeff = work.vectors[COEFF]
+    rhs = work.vectors[RHS]
     n = 3 * active
     c0 = 3 * first
     k = 0
