@@ -1411,7 +1411,7 @@ def _begin_stretch(cause, state, ev):
 # --- start and stop -----------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, _nrt=False)
+@nb.njit(cache=True, inline="always", _nrt=False)
 def _start(model, exc, params, state, work, loop, rec, ev):
     """Start the simulation (first call) or pick it up where the last call stopped.
 
@@ -1465,7 +1465,7 @@ def _start(model, exc, params, state, work, loop, rec, ev):
     return RUNNING
 
 
-@nb.njit(cache=True, _nrt=False)
+@nb.njit(cache=True, inline="always", _nrt=False)
 def _stop(params, chunk_end, state, rows_capacity, events_capacity):
     """Why the loop stops before its next step, or :data:`RUNNING` to go on.
 
@@ -1500,7 +1500,7 @@ def _stop(params, chunk_end, state, rows_capacity, events_capacity):
 # --- advance ------------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, _nrt=False)
+@nb.njit(cache=True, inline="always", _nrt=False)
 def advance(model, exc, params, breaks, h_cap, state, work, loop):
     """One step of the held mode from the state's time ``t``: its length ``h`` [s], or -1.
 
@@ -1561,7 +1561,7 @@ def advance(model, exc, params, breaks, h_cap, state, work, loop):
     return h
 
 
-@nb.njit(cache=True, _nrt=False)
+@nb.njit(cache=True, inline="always", _nrt=False)
 def _take_step(model, exc, params, h, state, work, loop, rec, ev):
     """Accept a step in which no event fired; an outcome code.
 
@@ -1607,7 +1607,7 @@ def _take_step(model, exc, params, h, state, work, loop, rec, ev):
     return RUNNING
 
 
-@nb.njit(cache=True, _nrt=False)
+@nb.njit(cache=True, inline="always", _nrt=False)
 def advance_stretch(model, exc, params, h_cap, state, work, loop):
     """One step of the time-stepping remedy (:func:`_time_step`, ``STEPPING_STEP``).
 
@@ -1872,7 +1872,7 @@ def _bracket_on_interpolant(model, exc, params, h, state, work, loop):
     return low, high, g_low, g_high
 
 
-@nb.njit(cache=True, _nrt=False)
+@nb.njit(cache=True, inline="always", _nrt=False)
 def locate(model, exc, params, h, state, work, loop):
     """Time [s from t] of the earliest event of the step, to the time tolerance; -1 if singular.
 
@@ -1971,7 +1971,7 @@ def locate(model, exc, params, h, state, work, loop):
 # --- resolve ------------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, _nrt=False)
+@nb.njit(cache=True, inline="always", _nrt=False)
 def resolve(model, exc, params, max_events, h, state, work, loop, rec, ev):
     """Move to the located event ``h`` [s] after t and resolve it; an outcome code.
 
@@ -2091,7 +2091,7 @@ def _overturn_after_excitation(model, exc, params, state, work, loop, ev):
     return RUNNING
 
 
-@nb.njit(cache=True, _nrt=False)
+@nb.njit(cache=True, inline="always", _nrt=False)
 def resolve_stretch(model, exc, params, state, work, loop, rec, ev):
     """After a step of time stepping: overturning, and the return to events.
 
