@@ -60,11 +60,15 @@ import numba as nb
 import numpy as np
 
 from freestand.core.contact.engine import (  # noqa: F401  (re-exported for the callers' buffers)
+    INFO_SIZE,
     MAX_DISTINCT,
     RELATIVE_TOLERANCE,
     accelerations,
+    contact_work,
     solve_contact_problem,
+    solve_contact_states,
     solve_in_place,
+    solve_states_into,
 )
 from freestand.core.dynamics.time_stepping import (
     UNBOUNDED_FRICTION,
@@ -691,19 +695,18 @@ def _into_stop(model, params, active, slide, work):
     return False
 
 
-@nb.njit(cache=True, _nrt=True)
-def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_qd):
+@nb.njit(cache=True, _nrt=False)
+def _impact(model, params, active, q, qd, slide, allow_stick, work, problem, istate, out_qd):
     """Velocity jump of an impact (the contact problem at velocity level); count or 0.
 
     Returns the number of distinct admissible states (0: inconsistent). The
     post-impact velocity is written to ``out_qd``; then each interface that
     received an impulse has the velocity of its upper block relative to the
     body below multiplied by its restitution factor (1: the plastic law).
+    ``problem``: the :data:`Problem` work arrays.
     """
     n = 3 * active
     mass = model.masses[MASS]
-    mu_s = model.properties[MU_S]
-    mu_k = model.properties[MU_K]
     sliding_codes = model.codes
     restitution = model.properties[RESTITUTION]
     _kin(model, active, q, qd, work)
@@ -712,8 +715,8 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
     jt = work.jacobian[1]
     tol_gap = params[P_TOL_GAP]
     tol_vel = params[P_TOL_VEL]
-    bn = np.empty((active, 2))
-    bt = np.empty((active, 2))
+    bn = problem.terms[0]
+    bt = problem.terms[1]
     speed = tol_vel
     for i in range(active):
         for c in range(2):
@@ -725,9 +728,9 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
             bn[i, c] = vn
             bt[i, c] = vt
             speed = max(speed, abs(vn), abs(vt))
-    contact_active = np.empty((active, 2), dtype=np.bool_)
-    slip = np.zeros(active)
-    sliding = np.empty(active, dtype=np.int64)
+    contact_active = problem.contact_active
+    slip = problem.blockwise[P_SLIP]
+    sliding = problem.sliding
     total_mass = 0.0
     for i in range(active):
         total_mass += mass[3 * i]
@@ -749,17 +752,15 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
         if allow_stick or abs(s) <= tol_vel or not allows:
             s = 0.0
         slip[i] = s
-    zero = np.zeros(n)
+    zero = problem.vectors[P_FREE]
+    for c in range(n):
+        zero[c] = 0.0
     tiny = np.finfo(np.float64).tiny
     force_tol = RELATIVE_TOLERANCE * max(total_mass * speed, tiny)
     accel_tol = RELATIVE_TOLERANCE * max(speed, tiny)
-    modes = np.empty((MAX_DISTINCT, active, 3), dtype=np.int64)
-    jumps = np.empty((MAX_DISTINCT, n))
-    impulses = np.empty((MAX_DISTINCT, active, 3))
-    count = solve_contact_problem(
-        active, model.masses[INVERSE_MASS], zero, jn, bn, jt, bt, contact_active, slip, sliding,
-        mu_s, mu_k, force_tol, accel_tol, modes, jumps, impulses,
-    )  # fmt: skip
+    count = _solve_problem(model, active, zero, bn, bt, work, problem, force_tol, accel_tol)
+    jumps = problem.solutions
+    impulses = problem.forces
     istate[S_IMPACT_SOLVES] += 1
     if count == 0:
         return 0
@@ -783,12 +784,12 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
         # did positive work: the velocity-level problem by the dissipative solver of the
         # time stepping instead (Coulomb at velocity level, T(v+) <= T(v-))
         _kin(model, active, q, qd, work)
-        low = np.empty(active)
-        high = np.empty(active)
+        low = problem.blockwise[P_LOW]
+        high = problem.blockwise[P_HIGH]
         _friction_bounds(model, params, active, slide, work, low, high)
-        normal = np.empty((active, 2))
-        tangential = np.empty((active, 2))
-        out_qd[:n] = qd[:n]
+        normal = problem.impulses[0]
+        tangential = problem.impulses[1]
+        _copy(out_qd, qd, n)
         impulse_step(active, inverse_mass, jn, jt, contact_active, low, high, out_qd, normal,
                      tangential)  # fmt: skip
         istate[S_DISSIPATIVE_IMPACTS] += 1
@@ -808,13 +809,35 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
     return count
 
 
-@nb.njit(cache=True, _nrt=True)
-def _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, directions):
-    """Solve the contact problem at a state and set the mode to hold; count (0: none)."""
-    n = 3 * active
+@nb.njit(cache=True, _nrt=False)
+def _solve_problem(model, active, free, bn, bt, work, problem, force_tol, accel_tol):
+    """The contact kernel on the problem set up in ``problem`` (:data:`Problem`).
+
+    Free accelerations ``free``, velocity terms ``bn``, ``bt`` and the
+    kinematics in ``work``; the first :data:`MAX_DISTINCT` admissible states go
+    to ``problem.modes``, ``solutions``, ``forces``. Returns their count.
+    """
+    arguments = (
+        active, model.masses[INVERSE_MASS], free, work.jacobian[0], bn, work.jacobian[1], bt,
+        problem.contact_active, problem.blockwise[P_SLIP], problem.sliding,
+        model.properties[MU_S], model.properties[MU_K], force_tol, accel_tol, problem.modes,
+        problem.solutions, problem.forces, problem.accelerations, problem.index, problem.info,
+    )  # fmt: skip
+    count = solve_states_into(problem.contact, *arguments)
+    if count < 0:
+        # more admissible modes than the work arrays hold: the kernel's own arrays
+        count = solve_contact_states(*arguments)
+    return count
+
+
+@nb.njit(cache=True, _nrt=False)
+def _select(model, exc, params, active, t, q, qd, slide, work, problem, istate, mode,
+            directions):  # fmt: skip
+    """Solve the contact problem at a state and set the mode to hold; count (0: none).
+
+    ``problem``: the :data:`Problem` work arrays.
+    """
     mass = model.masses[MASS]
-    mu_s = model.properties[MU_S]
-    mu_k = model.properties[MU_K]
     sliding_codes = model.codes
     a_h, a_v = _support(exc[0], exc[1], params[P_EXC_DT], t)
     gravity = params[P_GRAVITY]
@@ -822,9 +845,9 @@ def _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, dir
     gap = work.contact[GAP]
     tol_gap = params[P_TOL_GAP]
     tol_vel = params[P_TOL_VEL]
-    contact_active = np.empty((active, 2), dtype=np.bool_)
-    slip = np.zeros(active)
-    sliding = np.empty(active, dtype=np.int64)
+    contact_active = problem.contact_active
+    slip = problem.blockwise[P_SLIP]
+    sliding = problem.sliding
     total_mass = 0.0
     for i in range(active):
         total_mass += mass[3 * i]
@@ -838,20 +861,15 @@ def _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, dir
         slip[i] = s
         engaged = _engaged(code, slide[i], params[P_TOL_SLIDE])
         sliding[i] = 0 if ((code == 2 or code == 3) and not engaged) else code
-    free = np.empty(n)
+    free = problem.vectors[P_FREE]
     _free_acceleration(model, active, a_h, a_v, gravity, free)
     scale = max(math.hypot(a_h, gravity - a_v), 1e-12)
     tiny = np.finfo(np.float64).tiny
     force_tol = RELATIVE_TOLERANCE * max(total_mass * scale, tiny)
     accel_tol = RELATIVE_TOLERANCE * max(scale, tiny)
-    modes = np.empty((MAX_DISTINCT, active, 3), dtype=np.int64)
-    qdds = np.empty((MAX_DISTINCT, n))
-    forces = np.empty((MAX_DISTINCT, active, 3))
-    count = solve_contact_problem(
-        active, model.masses[INVERSE_MASS], free, work.jacobian[0], work.contact[GAP_BIAS],
-        work.jacobian[1], work.contact[SLIP_BIAS], contact_active, slip, sliding, mu_s, mu_k,
-        force_tol, accel_tol, modes, qdds, forces,
-    )  # fmt: skip
+    count = _solve_problem(model, active, free, work.contact[GAP_BIAS], work.contact[SLIP_BIAS],
+                           work, problem, force_tol, accel_tol)  # fmt: skip
+    modes = problem.modes
     istate[S_CONTACT_SOLVES] += 1
     if count == 0:
         return 0
@@ -868,36 +886,41 @@ def _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, dir
     return count
 
 
-@nb.njit(cache=True, _nrt=True)
-def _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode, directions,
-            uplift, free_flight, result):  # fmt: skip
+@nb.njit(cache=True, _nrt=False)
+def _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
+            directions, uplift, free_flight, result):  # fmt: skip
     """Impact if needed, then the mode to hold, then the projection.
 
     ``result`` (3,) int: [failure code, impact kind (0 none, IMPACT,
-    TANGENTIAL_IMPACT), solve count of the selection].
+    TANGENTIAL_IMPACT), solve count of the selection]; ``problem``: the
+    :data:`Problem` work arrays.
     """
     result[0] = NO_FAILURE
     result[1] = 0
     result[2] = 0
     n = 3 * active
-    new_qd = np.empty(n)
+    new_qd = problem.vectors[P_NEW_QD]
     _kin(model, active, q, qd, work)
     if _needs_impact(model, params, active, slide, work):
-        if _impact(model, params, active, q, qd, slide, False, work, istate, new_qd) == 0:
+        if _impact(model, params, active, q, qd, slide, False, work, problem, istate, new_qd) == 0:
             result[0] = IMPACT_INCONSISTENT
             return
-        qd[:n] = new_qd
+        _copy(qd, new_qd, n)
         result[1] = IMPACT
-    count = _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, directions)
+    count = _select(
+        model, exc, params, active, t, q, qd, slide, work, problem, istate, mode, directions
+    )
     if count == 0:
         # no consistent sliding state (Painleve-type): a tangential impact at
         # velocity level, in which the sliding contacts may stick
-        if _impact(model, params, active, q, qd, slide, True, work, istate, new_qd) == 0:
+        if _impact(model, params, active, q, qd, slide, True, work, problem, istate, new_qd) == 0:
             result[0] = CONTACT_INCONSISTENT
             return
-        qd[:n] = new_qd
+        _copy(qd, new_qd, n)
         result[1] = TANGENTIAL_IMPACT
-        count = _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, directions)
+        count = _select(
+            model, exc, params, active, t, q, qd, slide, work, problem, istate, mode, directions
+        )
         if count == 0:
             result[0] = CONTACT_INCONSISTENT_AFTER
             return
@@ -1226,7 +1249,7 @@ def _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, direc
 
 
 @nb.njit(cache=True, _nrt=True)
-def _try_resume(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
+def _try_resume(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
                 directions, uplift, free_flight, settle, qdd, lam):  # fmt: skip
     """End the stretch if an event-driven mode is consistent at the state; whether it did.
 
@@ -1238,7 +1261,7 @@ def _try_resume(model, exc, params, active, t, q, qd, slide, work, istate, fstat
     slide_saved = slide[:active].copy()
     mode_saved = mode[:active].copy()
     directions_saved = directions[:active].copy()
-    _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
+    _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
             directions, uplift, free_flight, settle)  # fmt: skip
     if settle[0] == NO_FAILURE and _evaluate(model, exc, params, active, t, q, qd, mode, work,
                                              qdd, lam):  # fmt: skip
@@ -1338,6 +1361,55 @@ def _loop_arrays(count):
     )
 
 
+#: Work arrays of the contact problem at events (:func:`_settle`, :func:`_impact`,
+#: :func:`_select`), made by :func:`_problem_arrays`:
+#:
+#: - ``contact``: the contact kernel's :data:`~freestand.core.contact.engine.ContactWork`;
+#: - ``terms`` (2, B, 2): the velocity terms b_n, b_t of the impact problem (the
+#:   contacts' relative velocities);
+#: - ``blockwise`` (3, B): ``P_SLIP`` each interface's slip velocity (0: static
+#:   friction), ``P_LOW``, ``P_HIGH`` its friction bounds in a dissipative impact;
+#: - ``contact_active`` (B, 2) bool, ``sliding`` (B) int: the problem's contacts and
+#:   effective sliding codes;
+#: - ``vectors`` (2, 3 B): ``P_FREE`` the free accelerations (zero in an impact),
+#:   ``P_NEW_QD`` the rates after an impact;
+#: - ``modes``, ``solutions``, ``forces``, ``accelerations``, ``index``, ``info``: the
+#:   kernel's first :data:`MAX_DISTINCT` admissible states;
+#: - ``impulses`` (2, B, 2): normal and tangential impulses of a dissipative impact.
+Problem = namedtuple(
+    "Problem",
+    (
+        "contact", "terms", "blockwise", "contact_active", "sliding", "vectors", "modes",
+        "solutions", "forces", "accelerations", "index", "info", "impulses",
+    ),
+)  # fmt: skip
+P_SLIP, P_LOW, P_HIGH = range(3)
+P_FREE, P_NEW_QD = range(2)
+#: Admissible modes the contact problem's work arrays hold (more: the kernel's own).
+PROBLEM_CAPACITY = 64
+
+
+@nb.njit(cache=True, _nrt=True)
+def _problem_arrays(count):
+    """The :data:`Problem` work arrays for a stack of ``count`` blocks."""
+    n = 3 * count
+    return Problem(
+        contact_work(count, PROBLEM_CAPACITY),
+        np.zeros((2, count, 2)),
+        np.zeros((3, count)),
+        np.zeros((count, 2), dtype=np.bool_),
+        np.zeros(count, dtype=np.int64),
+        np.zeros((2, n)),
+        np.zeros((MAX_DISTINCT, count, 3), dtype=np.int64),
+        np.zeros((MAX_DISTINCT, n)),
+        np.zeros((MAX_DISTINCT, count, 3)),
+        np.zeros((MAX_DISTINCT, count, 3)),
+        np.zeros(MAX_DISTINCT, dtype=np.int64),
+        np.zeros(INFO_SIZE, dtype=np.int64),
+        np.zeros((2, count, 2)),
+    )
+
+
 # --- record -------------------------------------------------------------------------------------
 
 
@@ -1412,7 +1484,7 @@ def _begin_stretch(cause, state, ev):
 
 
 @nb.njit(cache=True, inline="always", _nrt=False)
-def _start(model, exc, params, state, work, loop, rec, ev):
+def _start(model, exc, params, state, work, loop, problem, rec, ev):
     """Start the simulation (first call) or pick it up where the last call stopped.
 
     First call: the contact problem at the initial state (impact if needed,
@@ -1441,7 +1513,7 @@ def _start(model, exc, params, state, work, loop, rec, ev):
             return BUFFER_FULL
         istate[S_STARTED] = 1
         _copy(velocity_before, qd, qd.shape[0])
-        _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
+        _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
                 directions, flags[0], flags[1], settle)  # fmt: skip
         cause = settle[0]
         status = 1 if settle[2] > 1 else 0
@@ -1562,7 +1634,7 @@ def advance(model, exc, params, breaks, h_cap, state, work, loop):
 
 
 @nb.njit(cache=True, inline="always", _nrt=False)
-def _take_step(model, exc, params, h, state, work, loop, rec, ev):
+def _take_step(model, exc, params, h, state, work, loop, problem, rec, ev):
     """Accept a step in which no event fired; an outcome code.
 
     Moves the state to the step's end (``Q1``, ... of :data:`Loop`), puts the closed
@@ -1603,7 +1675,7 @@ def _take_step(model, exc, params, h, state, work, loop, rec, ev):
         _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
     record(state, lam, work, rec)
     if t >= params[P_EXC_END]:
-        return _overturn_after_excitation(model, exc, params, state, work, loop, ev)
+        return _overturn_after_excitation(model, exc, params, state, work, loop, problem, ev)
     return RUNNING
 
 
@@ -1972,7 +2044,7 @@ def locate(model, exc, params, h, state, work, loop):
 
 
 @nb.njit(cache=True, inline="always", _nrt=False)
-def resolve(model, exc, params, max_events, h, state, work, loop, rec, ev):
+def resolve(model, exc, params, max_events, h, state, work, loop, problem, rec, ev):
     """Move to the located event ``h`` [s] after t and resolve it; an outcome code.
 
     The state moves to the event (``Q1``, ... of :data:`Loop`; :func:`locate`), which is
@@ -2025,8 +2097,8 @@ def resolve(model, exc, params, max_events, h, state, work, loop, rec, ev):
         if active == 0:
             _record_event(state, kind, interface, contact, 0, before, velocity_before, ev)
             return COMPLETED
-    _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode, directions,
-            flags[0], flags[1], settle)  # fmt: skip
+    _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
+            directions, flags[0], flags[1], settle)  # fmt: skip
     if settle[0] != NO_FAILURE:
         _begin_stretch(settle[0], state, ev)
         return RUNNING
@@ -2049,7 +2121,7 @@ def resolve(model, exc, params, max_events, h, state, work, loop, rec, ev):
 
 
 @nb.njit(cache=True, _nrt=False)
-def _overturn_after_excitation(model, exc, params, state, work, loop, ev):
+def _overturn_after_excitation(model, exc, params, state, work, loop, problem, ev):
     """After the excitation, a block past its overturning angle that cannot come back falls.
 
     The block and those above it leave the stack (an ``overturn`` event), the
@@ -2079,8 +2151,8 @@ def _overturn_after_excitation(model, exc, params, state, work, loop, ev):
     if active == 0:
         return COMPLETED
     _copy(velocity_before, qd, 3 * active)
-    _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode, directions,
-            flags[0], flags[1], settle)  # fmt: skip
+    _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
+            directions, flags[0], flags[1], settle)  # fmt: skip
     if settle[0] != NO_FAILURE:
         _begin_stretch(settle[0], state, ev)
         return RUNNING
@@ -2092,7 +2164,7 @@ def _overturn_after_excitation(model, exc, params, state, work, loop, ev):
 
 
 @nb.njit(cache=True, inline="always", _nrt=False)
-def resolve_stretch(model, exc, params, state, work, loop, rec, ev):
+def resolve_stretch(model, exc, params, state, work, loop, problem, rec, ev):
     """After a step of time stepping: overturning, and the return to events.
 
     A block whose rotation reaches pi/2 overturns with those above it. Every
@@ -2119,7 +2191,8 @@ def resolve_stretch(model, exc, params, state, work, loop, rec, ev):
             break
     if active > 0 and istate[S_STRETCH_STEPS] >= STRETCH_STEPS:
         _copy(velocity_before, qd, 3 * active)
-        if _try_resume(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
+        if _try_resume(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate,
+                       mode,
                        directions, flags[0], flags[1], settle, qdd,
                        lam):  # fmt: skip
             step[L_REST_READY] = 0
@@ -2152,18 +2225,20 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
     count = model.geometry.shape[0]
     state = State(q, qd, slide, mode, directions, istate, fstate, flags)
     return _loop(model, exc, breaks, params, h_cap, max_events, chunk_end, state, _work(count),
-                 _loop_arrays(count), rec, ev)  # fmt: skip
+                 _loop_arrays(count), _problem_arrays(count), rec, ev)  # fmt: skip
 
 
 @nb.njit(cache=True, _nrt=False)
-def _loop(model, exc, breaks, params, h_cap, max_events, chunk_end, state, work, loop, rec, ev):
-    """The loop of :func:`run` on its :data:`State`, work and :data:`Loop` arrays."""
+def _loop(model, exc, breaks, params, h_cap, max_events, chunk_end, state, work, loop, problem,
+          rec, ev):  # fmt: skip
+    """The loop of :func:`run` on its :data:`State` and its :data:`Work`, :data:`Loop` and
+    :data:`Problem` arrays."""
     slide1 = loop.blockwise[SLIDE1]
     lam = loop.forces[LAM]
     lam1 = loop.forces[LAM1]
     found = loop.codes[FOUND]
     istate = state.istate
-    outcome = _start(model, exc, params, state, work, loop, rec, ev)
+    outcome = _start(model, exc, params, state, work, loop, problem, rec, ev)
     while outcome == RUNNING:
         outcome = _stop(params, chunk_end, state, rec[0].shape[0], ev[0].shape[0])
         if outcome != RUNNING:
@@ -2171,20 +2246,22 @@ def _loop(model, exc, breaks, params, h_cap, max_events, chunk_end, state, work,
         if istate[S_STEPPING] == 1:
             advance_stretch(model, exc, params, h_cap, state, work, loop)
             record(state, lam, work, rec)
-            resolve_stretch(model, exc, params, state, work, loop, rec, ev)
+            resolve_stretch(model, exc, params, state, work, loop, problem, rec, ev)
             continue
         h = advance(model, exc, params, breaks, h_cap, state, work, loop)
         if h < 0.0:
             _begin_stretch(SINGULAR_MODE, state, ev)
         elif not _fired(model, params, istate[S_ACTIVE], state.mode, state.directions, lam1,
                         slide1, work, found):  # fmt: skip
-            outcome = _take_step(model, exc, params, h, state, work, loop, rec, ev)
+            outcome = _take_step(model, exc, params, h, state, work, loop, problem, rec, ev)
         else:
             h = locate(model, exc, params, h, state, work, loop)
             if h < 0.0:
                 _begin_stretch(SINGULAR_MODE, state, ev)
             else:
-                outcome = resolve(model, exc, params, max_events, h, state, work, loop, rec, ev)
+                outcome = resolve(
+                    model, exc, params, max_events, h, state, work, loop, problem, rec, ev
+                )
     istate[S_STATUS] = outcome
     return outcome
 
