@@ -139,7 +139,9 @@ P_GRAVITY, P_TOL_GAP, P_TOL_VEL, P_TOL_SLIDE, P_TIME_TOL = range(5)
 P_FORCE_EVENT, P_GAP_EVENT, P_EXC_END, P_END, P_STEP, P_EXC_DT = range(5, 11)
 #: 1: stop at the first instant after the excitation's end at which the stack rests
 P_UNTIL_REST = 11
-P_SIZE = 12
+#: Time [s] from which the support no longer accelerates (every later sample zero)
+P_QUIET = 12
+P_SIZE = 13
 
 # --- integer state vector layout (int64) -------------------------------------------------------
 S_ACTIVE, S_STATUS, S_FAILURE, S_STEPS, S_CONTACT_SOLVES, S_IMPACT_SOLVES = range(6)
@@ -152,7 +154,9 @@ S_STEPPING, S_STRETCH_STEPS, S_STRETCHES, S_STEPPED = range(13, 17)
 S_DISSIPATIVE_IMPACTS = 17
 #: Stretches begun per cause (indexed by the failure code it replaced: FAILURES)
 S_REMEDY = 18
-S_SIZE = S_REMEDY + 7
+#: Zeno sequences of impacts summed (the impact after which the interface lands: :func:`_land`)
+S_ZENO = S_REMEDY + 7
+S_SIZE = S_ZENO + 1
 
 # --- float state vector layout -----------------------------------------------------------------
 F_TIME, F_MAX_PENETRATION, F_MAX_PROJECTION = range(3)
@@ -887,6 +891,35 @@ def _select(model, exc, params, active, t, q, qd, slide, work, problem, istate, 
 
 
 @nb.njit(cache=True, _nrt=False)
+def _land(params, active, mode, work, problem):
+    """Close the contacts whose next flight stays within the gap tolerance; whether any.
+
+    After an impact, in the chosen state (``problem``: contact accelerations of
+    the first state; kinematics in ``work``), a contact of a rocking interface
+    (one contact closed) that touches (gap <= tolerance) and opens at ``v > 0``
+    while its gap accelerates back at ``a < 0`` rises by ``v^2 / (2 |a|)``:
+    when that is within the gap tolerance the flight, and every later one of
+    the Zeno sequence it starts (each lower than the last), is below the
+    engine's resolution of a gap. ``mode`` gets the contact closed.
+    """
+    tol_gap = params[P_TOL_GAP]
+    gap = work.contact[GAP]
+    gap_velocity = work.contact[GAP_VELOCITY]
+    landed = False
+    for i in range(active):
+        if mode[i, 0] + mode[i, 1] != 1:
+            continue
+        c = 1 if mode[i, 0] == 1 else 0
+        opening = gap_velocity[i, c]
+        falling = problem.accelerations[0, i, c]
+        if gap[i, c] <= tol_gap and opening > 0.0 and falling < 0.0:
+            if opening * opening <= -2.0 * falling * tol_gap:
+                mode[i, c] = 1
+                landed = True
+    return landed
+
+
+@nb.njit(cache=True, _nrt=False)
 def _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
             directions, uplift, free_flight, result):  # fmt: skip
     """Impact if needed, then the mode to hold, then the projection.
@@ -894,6 +927,14 @@ def _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, 
     ``result`` (3,) int: [failure code, impact kind (0 none, IMPACT,
     TANGENTIAL_IMPACT), solve count of the selection]; ``problem``: the
     :data:`Problem` work arrays.
+
+    After an impact once the support no longer accelerates (``P_QUIET``), an
+    interface whose contact opens so slowly that it cannot rise beyond the gap
+    tolerance before it falls back (:func:`_land`) starts a Zeno sequence of
+    ever smaller impacts converging on rest: the sequence is summed, the
+    contact closed (:func:`_project`: onto both contacts, the relative velocity
+    removed in the mass metric, which never raises the kinetic energy) and the
+    mode chosen again.
     """
     result[0] = NO_FAILURE
     result[1] = 0
@@ -910,6 +951,18 @@ def _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, 
     count = _select(
         model, exc, params, active, t, q, qd, slide, work, problem, istate, mode, directions
     )
+    if (
+        count > 0
+        and result[1] == IMPACT
+        and t >= params[P_QUIET]
+        and _land(params, active, mode, work, problem)
+    ):
+        # the rest of a Zeno sequence of impacts, summed: the interfaces land
+        _project(model, active, q, qd, mode, work, fstate)
+        istate[S_ZENO] += 1
+        count = _select(
+            model, exc, params, active, t, q, qd, slide, work, problem, istate, mode, directions
+        )
     if count == 0:
         # no consistent sliding state (Painleve-type): a tangential impact at
         # velocity level, in which the sliding contacts may stick

@@ -695,6 +695,7 @@ def simulate_general(
     params[engine.P_STEP] = step
     params[engine.P_EXC_DT] = dt
     params[engine.P_UNTIL_REST] = 1.0 if until_rest else 0.0
+    params[engine.P_QUIET] = quiet_from(dt, horizontal, vertical)
     istate = np.zeros(engine.S_SIZE, dtype=np.int64)
     istate[engine.S_ACTIVE] = count
     fstate = np.zeros(engine.F_SIZE)
@@ -789,6 +790,17 @@ def record_breaks(time_step: float, horizontal: np.ndarray, vertical: np.ndarray
         kinks[1:-1] |= second > 1e-12 * scale
     kinks[-1] = True
     return np.array(np.flatnonzero(kinks) * time_step, dtype=float)
+
+
+def quiet_from(time_step: float, horizontal: np.ndarray, vertical: np.ndarray) -> float:
+    """Time [s] from which the support no longer accelerates: every later sample is zero.
+
+    The samples are joined by straight lines (zero after the last), so the
+    support is still from the sample after the last non-zero one; 0 for a
+    record of zeros.
+    """
+    moving = np.flatnonzero((horizontal != 0.0) | (vertical != 0.0))
+    return float((moving[-1] + 1) * time_step) if moving.size else 0.0
 
 
 def engine_model(stack: Stack, restitution: np.ndarray) -> engine.Model:
@@ -1024,6 +1036,7 @@ def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev,
             stretches=stretches,
             energy_ratio=float(fstate[engine.F_ENERGY_RATIO]),
             dissipative_impacts=int(istate[engine.S_DISSIPATIVE_IMPACTS]),
+            zeno_landings=int(istate[engine.S_ZENO]),
         ),
         max_lift=max_lift,
     )
