@@ -529,6 +529,16 @@ def _fired(model, params, active, mode, directions, lam, slide, work, found):
 
 
 @nb.njit(cache=True, _nrt=True)
+def _least_squares(rows, m, n, inverse_mass, values, out):
+    """``out[:m]``: the least-squares solution of ``(J M^-1 J^T) x = values`` (rank-deficient)."""
+    jac = rows[:m, :n].copy()
+    weighted = jac * inverse_mass[:n]
+    solution = np.linalg.lstsq(weighted @ jac.T, values[:m].copy())[0]
+    for r in range(m):
+        out[r] = solution[r]
+
+
+@nb.njit(cache=True, _nrt=False)
 def _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, out):
     """``out = M^-1 J^T (J M^-1 J^T)^-1 values``: the smallest correction in the mass metric.
 
@@ -572,11 +582,7 @@ def _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, out):
                     system[r, j] -= factor * system[p, j]
                 rhs[r] -= factor * rhs[p]
     if singular:
-        jac = rows[:m, :n].copy()
-        weighted = jac * inverse_mass[:n]
-        solution = np.linalg.lstsq(weighted @ jac.T, values[:m].copy())[0]
-        for r in range(m):
-            rhs[r] = solution[r]
+        _least_squares(rows, m, n, inverse_mass, values, rhs)
     else:
         for p in range(m - 1, -1, -1):
             total = rhs[p]
