@@ -126,6 +126,42 @@ def solve_in_place(matrix, rhs, k):
 
 
 @nb.njit(cache=True, inline="always")
+def solve_symmetric_in_place(matrix, rhs, k):
+    """Solve ``matrix x = rhs`` for a symmetric positive definite leading k x k block.
+
+    ``L D L^T`` factorisation (no pivoting, no square root) from the lower
+    triangle, which it overwrites; ``x`` in ``rhs``. Returns False, with
+    ``rhs`` untouched, when a pivot is not positive (the matrix is not
+    positive definite: solve it with :func:`solve_in_place` instead).
+    """
+    for j in range(k):
+        d = matrix[j, j]
+        for p in range(j):
+            d -= matrix[j, p] * matrix[j, p] * matrix[p, p]
+        if not d > 0.0:
+            return False
+        matrix[j, j] = d
+        for i in range(j + 1, k):
+            total = matrix[i, j]
+            for p in range(j):
+                total -= matrix[i, p] * matrix[j, p] * matrix[p, p]
+            matrix[i, j] = total / d
+    for i in range(k):
+        total = rhs[i]
+        for p in range(i):
+            total -= matrix[i, p] * rhs[p]
+        rhs[i] = total
+    for i in range(k):
+        rhs[i] /= matrix[i, i]
+    for i in range(k - 1, -1, -1):
+        total = rhs[i]
+        for p in range(i + 1, k):
+            total -= matrix[p, i] * rhs[p]
+        rhs[i] = total
+    return True
+
+
+@nb.njit(cache=True, inline="always")
 def _row(i, kind, reference):
     """Row of the 4-per-interface Delassus matrix: gap left, gap right, slip left, slip right."""
     if kind < 2:

@@ -69,6 +69,7 @@ from freestand.core.contact.engine import (  # noqa: F401  (re-exported for the 
     solve_contact_states,
     solve_in_place,
     solve_states_into,
+    solve_symmetric_in_place,
 )
 from freestand.core.dynamics.time_stepping import (
     UNBOUNDED_FRICTION,
@@ -2326,6 +2327,33 @@ def _loop(model, exc, breaks, params, h_cap, max_events, chunk_end, state, work,
 
 
 @nb.njit(cache=True, inline="always", _nrt=False)
+def _solve_held(row_j, force_g, matrix, rhs, k, c0, n, symmetric):
+    """The held mode's ``k`` equations ``(J_r M^-1 G_j^T) x = rhs``, solved in place.
+
+    Symmetric (no sliding interface): its lower triangle by ``L D L^T``
+    (:func:`~freestand.core.contact.engine.solve_symmetric_in_place`), and by
+    Gaussian elimination when that finds it not positive definite; otherwise
+    Gaussian elimination with partial pivoting. False when singular.
+    """
+    if symmetric:
+        for r in range(k):
+            for j in range(r + 1):
+                total = 0.0
+                for col in range(c0, n):
+                    total += row_j[r, col] * force_g[j, col]
+                matrix[r, j] = total
+        if solve_symmetric_in_place(matrix, rhs, k):
+            return True
+    for r in range(k):
+        for j in range(k):
+            total = 0.0
+            for col in range(c0, n):
+                total += row_j[r, col] * force_g[j, col]
+            matrix[r, j] = total
+    return solve_in_place(matrix, rhs, k)
+
+
+@nb.njit(cache=True, inline="always", _nrt=False)
 def _held_solve(active, inverse_mass, work, mode, qdd, lam, first=0):
     """Forces and accelerations of a held mode, without the contact accelerations.
 
@@ -2362,6 +2390,12 @@ def _held_solve(active, inverse_mass, work, mode, qdd, lam, first=0):
         lam[i, 0] = 0.0
         lam[i, 1] = 0.0
         lam[i, 2] = 0.0
+    # without a sliding interface every unknown acts along its own row (G_j = J_j):
+    # the system J M^-1 J^T is symmetric, positive definite unless singular
+    symmetric = True
+    for i in range(first, active):
+        if mode[i, 2] == 2 or mode[i, 2] == 3:
+            symmetric = False
     for i in range(first, active):
         tangential = mode[i, 2]
         reference = 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
@@ -2392,13 +2426,7 @@ def _held_solve(active, inverse_mass, work, mode, qdd, lam, first=0):
             rhs[k] = -total
             coeff[k] = 3 * i + 2
             k += 1
-    for r in range(k):
-        for j in range(k):
-            total = 0.0
-            for col in range(c0, n):
-                total += row_j[r, col] * force_g[j, col]
-            matrix[r, j] = total
-    if not solve_in_place(matrix, rhs, k):
+    if not _solve_held(row_j, force_g, matrix, rhs, k, c0, n, symmetric):
         return False
     for c in range(n):
         qdd[c] = free[c] if c >= c0 else 0.0
