@@ -302,7 +302,10 @@ def point_velocity(y, d, e0, e1, e2):
 
 @nb.njit(cache=True)
 def _point_row(y, d, e0, e1, e2, column, rows, bias, k):
-    """Row k: the point at arm d along the unit e, ``w = (e, d x e)``, bias e.(omega x (omega x d))."""
+    """Row k: the point at arm d along the unit e.
+
+    ``w = (e, d x e)``, bias ``e . (omega x (omega x d))`` plus ``column``.
+    """
     rows[0, k] = e0
     rows[1, k] = e1
     rows[2, k] = e2
@@ -613,8 +616,19 @@ def prepare(par, record, dt, t, y, kind, index, psi, sc):
     a_x, a_y, a_v = support_acceleration(record, dt, t)
     applied_wrench(par, y, sc[SC_INV], rot, a_x, a_y, a_v, sc[SC_F0])
     apply_inverse_mass(par, sc[SC_INV], sc[SC_F0], sc[SC_BASE])
-    n_normal, n_tangent, _ = patch_rows(par, y, rot, kind, index, psi, sc[SC_NORMAL],
-                                        sc[SC_NBIAS], sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS])  # fmt: skip
+    n_normal, n_tangent, _ = patch_rows(
+        par,
+        y,
+        rot,
+        kind,
+        index,
+        psi,
+        sc[SC_NORMAL],
+        sc[SC_NBIAS],
+        sc[SC_TANGENT],
+        sc[SC_TBIAS],
+        sc[SC_ARMS],
+    )
     return n_normal, n_tangent
 
 
@@ -711,7 +725,10 @@ def rim_gap(par, y, rot, d):
 
 @nb.njit(cache=True)
 def flat_gap(par, y, rot):
-    """Largest gap [m] of the base's outline (box: its highest corner; cylinder: 2 R sin(tilt) above the lowest)."""
+    """Largest gap [m] of the base's outline.
+
+    Box: its highest corner; cylinder: 2 R sin(tilt) above the lowest rim point.
+    """
     if par[P_SHAPE] == SHAPE_BOX:
         d = np.empty(3)
         highest = -1e300

@@ -68,7 +68,6 @@ from freestand.core.contact.body_kernel import (
     SC_TBIAS,
     SC_WORK,
     SHAPE_BOX,
-    TILT_EPSILON,
     arm,
     corner_gap,
     cross,
@@ -155,9 +154,25 @@ def _others_separate(par, y, sc, kind, index, psi, touching, level, tolerance):
 
 @nb.njit(cache=True)
 def _solve(par, y, sc, level, slip, direction, n_normal, n_tangent):
-    return solve_mode(par, sc[SC_INV], sc[SC_BASE], level == ACCELERATION, slip, direction,
-                      sc[SC_NORMAL], sc[SC_NBIAS], n_normal, sc[SC_TANGENT], sc[SC_TBIAS],
-                      n_tangent, sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS], sc[SC_ACC], sc[SC_LAM])  # fmt: skip
+    return solve_mode(
+        par,
+        sc[SC_INV],
+        sc[SC_BASE],
+        level == ACCELERATION,
+        slip,
+        direction,
+        sc[SC_NORMAL],
+        sc[SC_NBIAS],
+        n_normal,
+        sc[SC_TANGENT],
+        sc[SC_TBIAS],
+        n_tangent,
+        sc[SC_WORK],
+        sc[SC_MATRIX],
+        sc[SC_RHS],
+        sc[SC_ACC],
+        sc[SC_LAM],
+    )
 
 
 @nb.njit(cache=True)
@@ -210,8 +225,19 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
     rotation, inverse inertia and base of the instant.
     """
     rot = sc[SC_ROT]
-    n_normal, n_tangent, _ = patch_rows(par, y, rot, kind, index, psi, sc[SC_NORMAL],
-                                        sc[SC_NBIAS], sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS])  # fmt: skip
+    n_normal, n_tangent, _ = patch_rows(
+        par,
+        y,
+        rot,
+        kind,
+        index,
+        psi,
+        sc[SC_NORMAL],
+        sc[SC_NBIAS],
+        sc[SC_TANGENT],
+        sc[SC_TBIAS],
+        sc[SC_ARMS],
+    )
     svel = sc[SC_SVEL]
     speed = 0.0
     tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
@@ -364,8 +390,10 @@ def select_mode(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, ex
     scales = (force_tol, RELATIVE_TOLERANCE * par[P_GRAVITY])
     for slip in (0, 1):
         for c in range(count):
-            if kinds[c] == excluded[0] and indices[c] == excluded[1] and (
-                excluded[2] == 2 or excluded[2] == slip
+            if (
+                kinds[c] == excluded[0]
+                and indices[c] == excluded[1]
+                and (excluded[2] == 2 or excluded[2] == slip)
             ):
                 continue
             if try_mode(par, y, sc, kinds[c], indices[c], angles[c], slip, ACCELERATION,
@@ -410,12 +438,12 @@ def _landing_pivot(par, y, sc, touching, scales, psi0, data):
             other = psi0 + sign * step
             f_other = radial(other)
             if f_other * f0 <= 0.0:
-                low, high, f_high = psi0, other, f_other
+                low, high = psi0, other
                 for _ in range(60):
                     middle = 0.5 * (low + high)
                     f_mid = radial(middle)
                     if f_mid * f_low <= 0.0:
-                        high, f_high = middle, f_mid
+                        high = middle
                     else:
                         low, f_low = middle, f_mid
                     if abs(high - low) < 1e-13:
@@ -445,7 +473,8 @@ def impact(par, y, sc, gap_tol, psi_before, mode, data, out_velocity):
     count = candidates(par, touching, psi, kinds, indices, angles)
     speed = math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2) + par[P_HALF_X] * math.sqrt(
         y[10] ** 2 + y[11] ** 2 + y[12] ** 2)  # fmt: skip
-    scales = (RELATIVE_TOLERANCE * par[P_MASS] * max(speed, 1e-6), RELATIVE_TOLERANCE * max(speed, 1e-6))
+    speed = max(speed, 1e-6)
+    scales = (RELATIVE_TOLERANCE * par[P_MASS] * speed, RELATIVE_TOLERANCE * speed)
     if par[P_SHAPE] != SHAPE_BOX and touching[0]:
         angles[1] = _landing_pivot(par, y, sc, touching, (1e300, 1e300), psi_before + math.pi, data)
     for slip in (0, 1):

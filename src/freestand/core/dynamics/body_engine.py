@@ -70,6 +70,7 @@ from freestand.core.contact.body_kernel import (
 from freestand.core.contact.body_modes import NONE_ADMISSIBLE, impact, select_mode
 
 EVENT_TIME = 1e-11  # [s] width of the bracket of a located event
+GAP_SLACK = 1e-12  # [m] a released point may sit this far below the support
 MAX_EVENT_FUNCTIONS = 8
 
 # event kinds
@@ -244,6 +245,26 @@ def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
 
 
 @nb.njit(cache=True)
+def _crossed(par, n, start_values, values, kinds):
+    """Kind of the first event function that crossed below its slack, or -1.
+
+    A function fires when it is below ``-slack`` having started above it: the
+    slack is the admissibility tolerance for the force margins (a mode is
+    chosen within it) and ``GAP_SLACK`` for gaps (a point just released may
+    sit a round-off below the support), zero otherwise.
+    """
+    for i in range(n):
+        slack = 0.0
+        if kinds[i] == FN_NORMAL or kinds[i] == FN_FRICTION:
+            slack = 1e-9 * par[P_MASS] * par[P_GRAVITY]
+        elif kinds[i] == FN_GAP:
+            slack = GAP_SLACK
+        if values[i] < -slack and start_values[i] >= -slack:
+            return kinds[i]
+    return -1
+
+
+@nb.njit(cache=True)
 def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count, trial,
            values, kinds, out):  # fmt: skip
     """Phase 2: the earliest crossing of an event function within the step.
@@ -254,11 +275,7 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
     ``EVENT_TIME``).
     """
     n = event_functions(par, record, dt, t + h, out, mode, data, sc, ref, values, kinds)
-    fired = False
-    for i in range(n):
-        if values[i] < 0.0 and start_values[i] >= 0.0:
-            fired = True
-    if not fired:
+    if _crossed(par, n, start_values, values, kinds) < 0:
         return h, -1
     low = 0.0
     high = h
@@ -266,23 +283,15 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
         middle = 0.5 * (low + high)
         _rk4(par, record, dt, t, middle, y, mode, data, sc, k, trial)
         event_functions(par, record, dt, t + middle, trial, mode, data, sc, ref, values, kinds)
-        crossed = False
-        for i in range(n):
-            if values[i] < 0.0 and start_values[i] >= 0.0:
-                crossed = True
-        if crossed:
+        if _crossed(par, n, start_values, values, kinds) >= 0:
             high = middle
         else:
             low = middle
     if high < h:
         _rk4(par, record, dt, t, high, y, mode, data, sc, k, out)
     event_functions(par, record, dt, t + high, out, mode, data, sc, ref, values, kinds)
-    which = -1
-    for i in range(n):
-        if values[i] < 0.0 and start_values[i] >= 0.0:
-            which = kinds[i]
-            break
-    return high, which
+    which = _crossed(par, n, start_values, values, kinds)
+    return high, which if which >= 0 else kinds[0]
 
 
 @nb.njit(cache=True)
@@ -503,8 +512,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
         istate[I_RECORDS] += 1
         if t >= record_end and _post_record_fall(par, y, mode, sc):
-            istate[I_EVENTS] = _event(t, EV_OVERTURN, mode[M_KIND], mode[M_KIND],
-                                      istate[I_EVENTS], ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
+            istate[I_EVENTS] = _event(t, EV_OVERTURN, mode[M_KIND], mode[M_KIND], istate[I_EVENTS],
+                                      ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
             istate[I_STATUS] = STATUS_OVERTURNED
             return t
     istate[I_STATUS] = STATUS_COMPLETED

@@ -55,7 +55,9 @@ class SupportMotion3:
             value = getattr(self, name)
             value = np.zeros_like(x) if value is None else np.asarray(value, dtype=float)
             if value.shape != x.shape:
-                raise FreestandError(f"{name} must have the {x.size} samples of x, not {value.shape}")
+                raise FreestandError(
+                    f"{name} must have the {x.size} samples of x, not {value.shape}"
+                )
             object.__setattr__(self, name, value)
         object.__setattr__(self, "x", x)
 
@@ -64,7 +66,7 @@ class SupportMotion3:
         """Time of the last sample [s]."""
         return (self.x.size - 1) * self.time_step
 
-    def rotated(self, angle: float) -> "SupportMotion3":
+    def rotated(self, angle: float) -> SupportMotion3:
         """The motion with its horizontal pair turned by ``angle`` [rad] about the vertical."""
         c, s = math.cos(angle), math.sin(angle)
         return SupportMotion3(self.time_step, c * self.x - s * self.y, s * self.x + c * self.y,
@@ -251,7 +253,7 @@ def simulate_body(
     istate = np.zeros(engine.I_SIZE, dtype=np.int64)
     capacity = int(end / step * 1.2) + 1000
     buffers = _buffers(capacity)
-    events = tuple(np.zeros(200_000) if k == 0 else np.zeros(200_000, dtype=np.int64) for k in range(4))
+    events = (np.zeros(200_000),) + tuple(np.zeros(200_000, dtype=np.int64) for _ in range(3))
     t = 0.0
     chunks = []
     while True:
@@ -264,10 +266,12 @@ def simulate_body(
         chunks.append(tuple(b.copy() for b in buffers))
         istate[engine.I_RECORDS] = 1
         buffers = _buffers(capacity)
-        for b, last in zip(buffers, chunks[-1]):
+        for b, last in zip(buffers, chunks[-1], strict=True):
             b[0] = last[-1]
-    time, state, modes, forces = (np.concatenate([c[k] if i == 0 else c[k][1:] for i, c in enumerate(chunks)])
-                                  for k in range(4))  # fmt: skip
+    time, state, modes, forces = (
+        np.concatenate([c[k] if i == 0 else c[k][1:] for i, c in enumerate(chunks)])
+        for k in range(4)
+    )
     return _result(body, par, istate, time, state, modes, forces, events)
 
 
