@@ -16,8 +16,6 @@ and the rows or sections around it carry what it belongs to
 from __future__ import annotations
 
 import math
-from html import escape
-from itertools import count
 
 import numpy as np
 
@@ -31,6 +29,12 @@ from freestand.report.content import (
     limit_title,
     sense_label,
 )
+from freestand.report.markup import Document as _Document
+from freestand.report.markup import data_attrs as _attrs
+from freestand.report.markup import esc as _e
+from freestand.report.markup import number_cell as _num
+from freestand.report.markup import number_text as _format
+from freestand.report.markup import table_head as _head
 from freestand.report.tables import FORCE_HEADERS, motion_label
 
 CSS = """
@@ -142,81 +146,6 @@ REFERENCES = (
         "General rules, seismic actions and rules for buildings. Section 3.2.2.",
     ),
 )
-
-
-# --- small helpers -------------------------------------------------------------------------------
-
-
-def _e(text: object) -> str:
-    return escape(str(text), quote=True)
-
-
-def _attrs(**data: object) -> str:
-    """`` data-a="x" data-b="y"`` from keyword arguments (``_`` becomes ``-``)."""
-    return "".join(f' data-{key.replace("_", "-")}="{_e(value)}"' for key, value in data.items())
-
-
-def _format(value: float, digits: int, *, grouped: bool = False) -> str:
-    if not math.isfinite(value):
-        return "&#8734;" if value > 0 else "&#8722;&#8734;" if value < 0 else "n/a"
-    if value == 0:
-        return "0"
-    text = f"{value:,.{digits}f}" if grouped else f"{value:.{digits}f}"
-    return text.replace("-", "&#8722;")
-
-
-def _num(
-    value: float,
-    digits: int,
-    quantity: str,
-    *,
-    grouped: bool = False,
-    text: str | None = None,
-    tag: str = "td",
-) -> str:
-    """A numeric cell with its full-precision value in ``data-value``."""
-    value = float(value)
-    shown = text if text is not None else _format(value, digits, grouped=grouped)
-    return (
-        f'<{tag} class="num" data-quantity="{_e(quantity)}" data-value="{value!r}" '
-        f'data-digits="{digits}">{shown}</{tag}>'
-    )
-
-
-def _head(*headers: str) -> str:
-    cells = "".join(
-        f'<th class="num">{h}</th>' if "[" in h or h.endswith("[-]") else f"<th>{h}</th>"
-        for h in headers
-    )
-    return f"<thead><tr>{cells}</tr></thead>"
-
-
-class _Document:
-    """Numbering of tables and figures, and the figures drawn so far."""
-
-    def __init__(self) -> None:
-        self.tables = count(1)
-        self.figures = count(1)
-        self.figure_ids = count(1)
-
-    def table(self, caption: str, head: str, rows: list[str], *, cls: str = "", **data) -> str:
-        number = next(self.tables)
-        klass = f' class="{cls}"' if cls else ""
-        return (
-            f'<table id="table-{number}"{klass}{_attrs(**data)}>'
-            f"<caption>Table {number}. {caption}</caption>{head}"
-            f"<tbody>{''.join(rows)}</tbody></table>"
-        )
-
-    def figure(self, drawing, caption: str, **data) -> str:
-        from freestand.plot.svg import figure_svg
-
-        number = next(self.figures)
-        svg = figure_svg(drawing, f"f{number}")
-        return (
-            f'<figure id="figure-{number}"{_attrs(**data)}>{svg}'
-            f"<figcaption><b>Figure {number}.</b> {caption}</figcaption></figure>"
-        )
 
 
 # --- sections ------------------------------------------------------------------------------------
