@@ -9,7 +9,7 @@ from freestand.core.body import Box, Cylinder
 from freestand.errors import FreestandError
 from freestand.io.model_file import load_model_text
 from freestand.io.model_reference import body_keys, model_file_reference
-from tests.conftest import CRANE
+from tests.conftest import CRANE, run_freestand
 
 #: A cask and a cabinet, each a 3-D configuration, with units and the optional keys.
 BODIES = """
@@ -184,12 +184,15 @@ def test_bad_3d_input_names_the_file_the_field_and_the_fix(label, old, new, frag
         assert fragment in message, message
 
 
-def test_mixed_planar_and_3d_blocks_in_one_configuration_are_refused():
-    # the planar frame's block table added to the cask's configuration
+def _mixed(text: str) -> str:
+    """``text`` with the planar frame's block added to the cask's configuration."""
     frame = PLANAR[PLANAR.index("[[configuration.block]]") :]
-    mixed = BODIES.replace(
-        '[[configuration]]\nname = "cabinet"', frame + '[[configuration]]\nname = "cabinet"'
-    )
+    cabinet = '[[configuration]]\nname = "cabinet"'
+    return text.replace(cabinet, frame + cabinet)
+
+
+def test_mixed_planar_and_3d_blocks_in_one_configuration_are_refused():
+    mixed = _mixed(BODIES)
     with pytest.raises(FreestandError) as info:
         load_model_text(mixed, source="mixed.toml")
     message = str(info.value)
@@ -207,3 +210,55 @@ def test_y_on_a_planar_model_is_refused():
     message = str(info.value)
     assert "crane.toml: field 'excitation[0] ('rigid').y'" in message
     assert "every configuration of this model is planar" in message and "Remove y" in message
+
+
+#: Bad 3-D input through the real command: (edit of BODIES, fragments of stderr).
+CLI_BAD = {
+    "negative-size": (
+        lambda text: text.replace(CABINET, 'shape = "box"\nsize = [0.8, 0.6, -2.0]'),
+        ["field 'configuration[1] ('cabinet').block[0] ('cabinet').size'", "lz = -2.0 m",
+         "e.g. size = [0.8, 0.6, 2.0]"],
+    ),
+    "missing-size": (
+        lambda text: text.replace(CABINET, 'shape = "box"'),
+        ["('cabinet').size'", "is missing for shape = 'box'", "size = [lx, ly, lz]"],
+    ),
+    "missing-radius": (
+        lambda text: text.replace(CASK, "height = 5"),
+        ["('cask').radius'", "is missing for shape = 'cylinder'", "radius = 0.9"],
+    ),
+    "inertia-not-positive-definite": (
+        lambda text: text.replace("[[150, 2, 0], [2, 155, 0], [0, 0, 35]]", "[150, 155, -35]"),
+        ["('cabinet').inertia'", "[150.0, 155.0, -35.0] kg m^2 is not positive definite",
+         "inertia = [150, 155, 35]"],
+    ),
+    "y-on-a-planar-model": (
+        lambda _: CRANE.read_text().replace('horizontal = "2.70 m/s^2"',
+                                            'horizontal = "2.70 m/s^2"\ny = 1.5'),
+        ["field 'excitation[0] ('rigid').y'", "y = 1.5 m/s^2", "Remove y"],
+    ),
+    "mixed-planar-and-3d": (
+        _mixed,
+        ["field 'configuration[0] ('cask').block'", "mixes planar blocks (frame)",
+         "separate [[configuration]] tables"],
+    ),
+    "two-3d-blocks": (
+        lambda text: text.replace('[[configuration]]\nname = "cabinet"\n', ""),
+        ["field 'configuration[0] ('cask').block'", "2 blocks with shape (cask, cabinet)",
+         "stacks of 3-D bodies are not supported yet"],
+    ),
+}  # fmt: skip
+
+
+@pytest.mark.parametrize(("edit", "fragments"), CLI_BAD.values(), ids=list(CLI_BAD))
+def test_bad_3d_input_through_the_command_is_a_message_not_a_traceback(tmp_path, edit, fragments):
+    path = tmp_path / "model.toml"
+    path.write_text(edit(BODIES))
+    result = run_freestand("screen", str(path))
+    assert result.returncode == 2
+    assert "Traceback" not in result.stderr + result.stdout
+    assert result.stdout == ""
+    message = " ".join(result.stderr.split())
+    assert f"{path}: field '" in message
+    for fragment in fragments:
+        assert fragment in message, message
