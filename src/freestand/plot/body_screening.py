@@ -48,6 +48,9 @@ def shape_text(body: Body) -> str:
 #: The legend's entry of the star.
 OWN_LABEL = "excitation's own direction\n(coloured by its motion)"
 
+#: Width and height of a panel [in].
+PANEL_SIZE = 4.4
+
 #: What the polar coordinates are.
 LEGEND_TITLE = "angle: direction of the\nsupport acceleration;\nradius: acceleration [m/s²]"
 
@@ -111,19 +114,19 @@ def _panel(ax, group: list[BodyScreeningCase], body: Body, seen: set[str]) -> No
         ax.annotate(
             f"{case.excitation}\n{case.horizontal:.2f} m/s²",
             (case.excitation_direction, case.horizontal), xytext=(9, 7),
-            textcoords="offset points", fontsize=7.5, zorder=1,
+            textcoords="offset points", fontsize=8.5, zorder=1,
             bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.7},
         )  # fmt: skip
     ax.set_rlim(0.0, 1.12 * radius if radius > 0 else 1.0)
     ax.set_thetagrids(range(0, 360, 45), ["0° (+x)", "45°", "90° (+y)", "135°", "180° (-x)",
-                                          "225°", "270° (-y)", "315°"], fontsize=8)  # fmt: skip
-    ax.tick_params(axis="y", labelsize=7.5)
+                                          "225°", "270° (-y)", "315°"], fontsize=8.5)  # fmt: skip
+    ax.tick_params(axis="y", labelsize=8)
     ax.set_rlabel_position(100.0)
     ax.set_title(
         f"{first.configuration}: {shape_text(body)}\n$a_v$ = {first.vertical:.2f} m/s² "
         f"(downward), $\\mu_0$ = {body.friction.static:g}",
         fontsize=9.5,
-        pad=14,
+        pad=12,
     )
 
 
@@ -166,15 +169,15 @@ def uplift_polar_figure(
         return ax.figure
     columns = min(len(groups), 2)
     rows = math.ceil(len(groups) / columns)
-    width = 5.6 * columns + 2.6
-    figure = Figure(figsize=(width, 5.2 * rows + (0.5 if title else 0.0)))
+    height = PANEL_SIZE * rows + 1.2 + (0.3 if title else 0.0)
+    figure = Figure(figsize=(PANEL_SIZE * columns + 0.6, height), layout="constrained")
     for k, group in enumerate(groups):
         panel = figure.add_subplot(rows, columns, k + 1, projection="polar")
         _panel(panel, group, bodies[group[0].configuration], seen)
     handles, labels = _legend_entries(figure.axes)
-    figure.legend(handles, labels, loc="center right", fontsize=8.5, frameon=False,
-                  title=LEGEND_TITLE, title_fontsize=8.5)  # fmt: skip
+    figure.legend(handles, labels, loc="outside lower center", ncols=3, fontsize=9,
+                  frameon=False, title=LEGEND_TITLE.replace("\n", " "),
+                  title_fontsize=9)  # fmt: skip
     if title:
-        figure.suptitle(title, fontsize=11)
-    figure.tight_layout(rect=(0.0, 0.0, 1.0 - 2.5 / width, 1.0))
+        figure.suptitle(title, fontsize=10)
     return figure
