@@ -291,11 +291,16 @@ def _inputs(doc: _Document, content: ReportContent) -> str:
                 configuration=stack.name,
             )
         )
-    parts.append(
-        '<p class="note">sliding: <i>free</i> both ways; <i>none</i> never (wheel flanges); '
-        "<i>no-right</i>/<i>no-left</i>: an end stop prevents sliding further that way "
-        "relative to the body below.</p>"
-    )
+    if model.configurations:
+        parts.append(
+            '<p class="note">sliding: <i>free</i> both ways; <i>none</i> never (wheel flanges); '
+            "<i>no-right</i>/<i>no-left</i>: an end stop prevents sliding further that way "
+            "relative to the body below.</p>"
+        )
+    if model.body_configurations:
+        from freestand.report.bodies import inputs_html
+
+        parts.append(inputs_html(doc, model))
     parts.append("<h3>2.3 Response spectra</h3>")
     if not model.spectra:
         parts.append(
@@ -495,6 +500,10 @@ def _screening(doc: _Document, content: ReportContent) -> str:
             for c in flagged
         )
         parts.append(f'<h4>Flagged cases</h4><ul id="flagged">{items}</ul>')
+    if content.body_cases:
+        from freestand.report.bodies import screening_html
+
+        parts.append(screening_html(doc, model, content.body_cases))
     parts.append("</section>")
     return "".join(parts)
 
@@ -772,10 +781,17 @@ def _overturning(doc: _Document, content: ReportContent) -> str:
         "spectrum, reading the spectral acceleration at f as the peak of a pulse of "
         "frequency f, as the paper does.</p>",
     ]
-    if not content.overturning:
+    if not content.overturning and content.model.configurations:
+        blocks = "block of the planar configurations" if content.body_cases else "block"
         parts.append(
-            '<p id="no-rocking">No block lifts in any screened case: no overturning '
+            f'<p id="no-rocking">No {blocks} lifts in any screened case: no overturning '
             "assessment is needed.</p>"
+        )
+    if content.body_cases:
+        parts.append(
+            '<p id="bodies-not-assessed">The 3-D bodies (section 3) are not assessed for '
+            "overturning: that needs their time history, which this version does not "
+            "provide.</p>"
         )
     for number, item in enumerate(content.overturning, start=1):
         parts.append(_assessment(doc, item, number))
@@ -903,6 +919,11 @@ def _frequency(doc: _Document, item: FrequencyAssessment) -> str:
 
 def _method(content: ReportContent) -> str:
     number = 6 if content.frequency is not None else 5
+    bodies = ""
+    if content.body_cases:
+        from freestand.report.bodies import METHOD_HTML
+
+        bodies = METHOD_HTML
     return f"""<section id="method"><h2>{number} Method, assumptions and limits</h2>
 <h4>Initial motion and contact forces</h4>
 <p>Each configuration is a plane stack of rigid blocks, each resting on the one below through
@@ -931,7 +952,7 @@ is unconservative: a block can overturn in free rocking after the pulse.</p>
 (paper section 6). Dunkerley's formula gives a lower bound of the lowest vertical frequency;
 the exact value of the continuous beam with the point mass is computed as well. The cart may
 jump where the vertical spectral acceleration between the two estimates reaches g.</p>
-<h4>Assumptions and limits</h4>
+{bodies}<h4>Assumptions and limits</h4>
 <ul>
 <li>The blocks are rigid; the structure's flexibility enters only through the excitation levels
 (for example the elastic case's spectral acceleration at the structure's mode) and the beam

@@ -29,6 +29,8 @@ def number_text(value: float, digits: int, *, grouped: bool = False) -> str:
     if value == 0:
         return "0"
     text = f"{value:,.{digits}f}" if grouped else f"{value:.{digits}f}"
+    if text.startswith("-") and not text.strip("-0.,"):
+        text = text[1:]  # a round-off below the digits shown: no sign
     return text.replace("-", "&#8722;")
 
 
