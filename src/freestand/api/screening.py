@@ -108,6 +108,15 @@ class ScreeningResult(Result):
     '3.1.2.3: bridge slides, cart rests on it'
     >>> result.to_frame().shape  # 12 cases x 2 blocks, 17 columns
     (24, 17)
+
+    A model of 3-D bodies gives its cases by direction, every 15 deg:
+
+    >>> bodies = fs.screen(fs.load_model("examples/bodies.toml"), configurations="cabinet")
+    >>> entry = bodies.to_dict()["body_cases"][0]["directions"][6]  # SL-1 at 90 deg
+    >>> entry["direction"], entry["motion"], entry["pivot"], round(entry["uplift_threshold"], 3)
+    (90.0, 'rock', 'edge -y', 2.032)
+    >>> bodies.to_frame().shape  # 2 excitations x 24 directions, 19 columns
+    (48, 19)
     """
 
     model: str
@@ -399,6 +408,15 @@ def screen(
       excitation sense   block motion
     0      rigid     +  bridge  slide
     1      rigid     +    cart   rest
+
+    A 3-D body (a cabinet, a cask) by direction, here every 45 deg:
+
+    >>> cabinet = fs.screen(fs.load_model("examples/bodies.toml"), configurations="cabinet",
+    ...                     directions=8)
+    >>> case = cabinet.body_cases[1]  # SL-2: 4.91 m/s^2 in every direction
+    >>> [(s.motion.value, s.pivot) for s in case.directions[:3]]  # 0, 45, 90 deg
+    [('rock', 'edge -x'), ('rock', 'edge -y'), ('rock', 'edge -y')]
+    >>> figure = cabinet.plot()  # the polar figure of freestand screen --plot
     """
     if vertical_senses is not None and vertical_senses not in VERTICAL_SENSES:
         raise FreestandError(
