@@ -13,22 +13,9 @@ from freestand.report.content import collect_report
 from freestand.report.html import render_html
 from tests.conftest import ROOT, run_freestand
 from tests.report_html import parse_report, shown_number
+from tests.test_body_model_file import PLANAR  # a planar frame (it does not lift)
 
 BODIES = ROOT / "examples" / "bodies.toml"
-
-#: A planar frame beside the 3-D bodies, for a model with both kinds (it does not lift, so the
-#: report has no overturning assessment to compute).
-PLANAR = """
-[[configuration]]
-name = "frame"
-[[configuration.block]]
-name = "frame"
-mass = 150
-inertia = 14
-centre = [0.0, 0.15]
-base = { left = -0.5, right = 0.5 }
-friction = { static = 0.5, kinetic = 0.4 }
-"""
 
 
 @pytest.fixture(scope="module")
@@ -81,9 +68,9 @@ def test_a_model_with_both_kinds_reports_both():
     model = load_model_text(text, source="both.toml")
     content = collect_report(model, date=datetime.date(2024, 5, 31))
     report = parse_report(render_html(content))
-    assert {q.context.get("configuration") for q in report.find("base_normal_left")} == {"frame"}
+    assert {q.context.get("configuration") for q in report.find("base_normal_left")} == {"plane"}
     assert len(report.find("uplift_threshold")) == 2 * 2 * 25
-    assert any(s.startswith("Configuration frame.") for s in content.summary)
+    assert any(s.startswith("Configuration plane.") for s in content.summary)
     assert "No block of the planar configurations lifts" in " ".join(content.summary)
 
 
