@@ -9,6 +9,12 @@ A two-block configuration can also be given in the paper's own notation
 (Table 1: ``p1, p3, g, h, p2, c, d, r, q`` in the y-z plane, or
 ``p1, p3, e, f, p2, a, b, s, t`` in the x-z plane); it is converted to
 coordinates by :func:`paper_notation_blocks`.
+
+A block with a ``shape`` is a 3-D body (:mod:`freestand.io.body_spec`): its
+configuration loads as a :class:`~freestand.core.body.BodyConfiguration`
+into :attr:`ModelFile.body_configurations`, beside the planar stacks of
+:attr:`ModelFile.configurations`. An excitation's ``y`` is the second
+horizontal component of the 3-D configurations.
 """
 
 from __future__ import annotations
@@ -473,8 +479,7 @@ class _ExcitationSpec(_Strict):
         if self.y is not None and self.record is not None:
             raise ValueError(
                 f"y = {self.y:g} m/s^2 goes with horizontal (or x) as accelerations, not with a "
-                "record; "
-                "give horizontal and y in m/s^2, or leave y out"
+                "record; give horizontal and y in m/s^2, or leave y out"
             )
         return self
 
