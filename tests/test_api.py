@@ -68,4 +68,6 @@ def test_the_readme_python_tour_runs(monkeypatch, capsys, tmp_path):
     assert namespace["run"].status == "completed"
     assert list(namespace["fits"].columns[:2]) == ["outcome", "kind"]
     assert (tmp_path / "crane-fragility.png").stat().st_size > 10_000
+    assert "uplift_threshold [m/s^2]" in printed  # the 3-D bodies by direction
+    assert (tmp_path / "bodies-polar.png").stat().st_size > 10_000
     assert "['rock', 'rock']" in printed  # the cabinet at SL-2, both senses

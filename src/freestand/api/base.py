@@ -8,9 +8,12 @@ command draws a figure for also have ``plot(ax=None)``.
 
 The analyses take a loaded model file (:class:`~freestand.io.model_file.ModelFile`,
 from :func:`freestand.load_model`) or a bare :class:`~freestand.core.model.Stack`;
-:func:`subject` turns either into the one form the analyses work on. A stack
-is the only kind of configuration today: a second kind would be told apart
-in :func:`subject` and dispatched by each analysis.
+:func:`subject` turns either into the one form the analyses work on. A
+configuration is a planar stack (``Subject.configurations``) or a 3-D body
+(:class:`~freestand.core.body.BodyConfiguration`, ``Subject.bodies``); the
+analyses of stacks take the first through :meth:`Subject.configuration` and
+:meth:`Subject.select`, which refuse a 3-D configuration with a message
+saying which analyses take it; :meth:`Subject.split` gives both kinds.
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from freestand.core.body import Body, BodyConfiguration
 from freestand.core.contact.screening import GRAVITY
 from freestand.core.model import Excitation, Stack
 from freestand.errors import FreestandError
@@ -92,11 +96,13 @@ class Subject:
     gravity : float
         g [m/s^2].
     configurations : tuple of Stack
-        Every configuration of the model (the stack itself for a stack).
+        Every planar configuration of the model (the stack itself for a stack).
     excitations : tuple of Excitation
         The model's excitations (those given with a bare stack).
     model : ModelFile or None
         The model file, when one was given.
+    bodies : tuple of BodyConfiguration
+        The 3-D configurations (the body itself for a body).
     """
 
     name: str
@@ -104,26 +110,62 @@ class Subject:
     configurations: tuple[Stack, ...]
     excitations: tuple[Excitation, ...]
     model: Any = None
+    bodies: tuple[BodyConfiguration, ...] = ()
 
     def configuration(self, name: str | None) -> Stack:
-        """The configuration called ``name`` (the first for None)."""
-        if name is None:
-            return self.configurations[0]
+        """The planar configuration called ``name`` (the first for None)."""
         if self.model is not None:
-            return self.model.configuration(name)
+            return (
+                self.model.first_configuration() if name is None else self.model.configuration(name)
+            )
+        if name is None:
+            if not self.configurations:
+                raise FreestandError(
+                    "a 3-D body is given; this analysis takes planar stacks only (3-D bodies: "
+                    "fs.screen)"
+                )
+            return self.configurations[0]
         for stack in self.configurations:
             if stack.name == name:
                 return stack
-        known = ", ".join(repr(stack.name) for stack in self.configurations)
-        raise FreestandError(f"no configuration named {name!r}; choose one of {known}")
+        raise FreestandError(f"no configuration named {name!r}; choose one of {self._known()}")
 
     def select(self, names: str | Iterable[str] | None) -> list[Stack]:
-        """The configurations called ``names`` (in that order, each once); all for None."""
+        """The planar configurations called ``names`` (in that order, each once); all for None."""
         if names is None:
+            if not self.configurations:
+                self.configuration(None)  # the error saying there is none
             return list(self.configurations)
         if isinstance(names, str):
             names = [names]
         return [self.configuration(name) for name in dict.fromkeys(names)]
+
+    def split(
+        self, names: str | Iterable[str] | None
+    ) -> tuple[list[Stack], list[BodyConfiguration]]:
+        """The planar and the 3-D configurations called ``names`` (each once); all for None."""
+        if names is None:
+            return list(self.configurations), list(self.bodies)
+        if isinstance(names, str):
+            names = [names]
+        stacks, bodies = [], []
+        for name in dict.fromkeys(names):
+            body = next((b for b in self.bodies if b.name == name), None)
+            if body is not None:
+                bodies.append(body)
+            elif any(stack.name == name for stack in self.configurations):
+                stacks.append(self.configuration(name))
+            elif self.model is not None:
+                self.model.configuration(name)  # the error listing the names
+            else:
+                raise FreestandError(
+                    f"no configuration named {name!r}; choose one of {self._known()}"
+                )
+        return stacks, bodies
+
+    def _known(self) -> str:
+        names = [repr(stack.name) for stack in self.configurations]
+        return ", ".join(names + [f"{body.name!r} (3-D)" for body in self.bodies])
 
     def spectrum(self, direction: str):
         """The model's first spectrum of ``direction``, None for a bare stack."""
@@ -143,9 +185,10 @@ def subject(model, excitations=None, gravity: float | None = None) -> Subject:
 
     Parameters
     ----------
-    model : ModelFile, Stack or sequence of Stack
+    model : ModelFile, Stack, BodyConfiguration, Body or a sequence of them
         A loaded model file (its configurations, excitations, gravity and
-        spectra), or stacks with ``excitations`` and ``gravity`` given here.
+        spectra), or stacks and 3-D bodies with ``excitations`` and
+        ``gravity`` given here.
     excitations : Excitation or sequence of Excitation, optional
         In place of the model's excitations (required for a stack by the
         analyses that need excitations).
@@ -161,18 +204,22 @@ def subject(model, excitations=None, gravity: float | None = None) -> Subject:
             tuple(model.configurations),
             _excitations(excitations) or tuple(model.excitations),
             model,
+            tuple(model.body_configurations),
         )
-    stacks = (model,) if isinstance(model, Stack) else tuple(model)
-    if not stacks or not all(isinstance(stack, Stack) for stack in stacks):
+    if isinstance(model, Body):
+        model = BodyConfiguration(model.name, (model,))
+    items = (model,) if isinstance(model, Stack | BodyConfiguration) else tuple(model)
+    if not items or not all(isinstance(item, Stack | BodyConfiguration) for item in items):
         raise TypeError(
-            "expected a model file (fs.load_model), a Stack or a list of Stacks, "
-            f"not {type(model).__name__}"
+            "expected a model file (fs.load_model), a Stack, a 3-D BodyConfiguration or a list "
+            f"of them, not {type(model).__name__}"
         )
     return Subject(
-        stacks[0].name if len(stacks) == 1 else ", ".join(s.name for s in stacks),
+        items[0].name if len(items) == 1 else ", ".join(item.name for item in items),
         GRAVITY if gravity is None else float(gravity),
-        stacks,
+        tuple(item for item in items if isinstance(item, Stack)),
         _excitations(excitations),
+        bodies=tuple(item for item in items if isinstance(item, BodyConfiguration)),
     )
 
 

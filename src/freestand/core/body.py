@@ -159,6 +159,47 @@ class Body:
         return self.centre[2]
 
 
+@dataclass(frozen=True)
+class BodyConfiguration:
+    """A 3-D configuration: rigid bodies on the support (a model file's 3-D configuration).
+
+    A model-file ``[[configuration]]`` whose block has a ``shape`` loads as
+    one of these (:func:`freestand.io.model_file.load_model`); the planar
+    configurations load as :class:`freestand.core.model.Stack`. The bodies
+    are a tuple so that stacks of bodies can follow; today a configuration
+    holds exactly one body, standing on the support.
+
+    Parameters
+    ----------
+    name : str
+        Configuration name.
+    bodies : tuple of Body
+        Bottom to top; one body for now.
+
+    Raises
+    ------
+    FreestandError
+        Not exactly one body.
+    """
+
+    name: str
+    bodies: tuple[Body, ...]
+
+    def __post_init__(self) -> None:
+        bodies = tuple(self.bodies)
+        if len(bodies) != 1:
+            raise FreestandError(
+                f"configuration {self.name!r} has {len(bodies)} 3-D bodies; stacks of 3-D "
+                "bodies are not supported yet: give one body per configuration"
+            )
+        object.__setattr__(self, "bodies", bodies)
+
+    @property
+    def body(self) -> Body:
+        """The body standing on the support."""
+        return self.bodies[0]
+
+
 def base_ray_distance(shape: Shape, origin, direction) -> float:
     """Distance [m] from ``origin`` (x, y) along the unit ``direction`` to the base's outline.
 

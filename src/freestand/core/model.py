@@ -293,6 +293,12 @@ class Excitation:
         ``"given"``: analyse ``vertical`` as given; ``"both"``: analyse
         ``+|a_ver|`` (downward) and ``-|a_ver|`` (upward), for the envelope of
         the contact forces.
+    horizontal_y : float
+        The horizontal support acceleration's y component [m/s^2] (model-file
+        key ``y``), for 3-D configurations (:mod:`freestand.core.body`):
+        ``horizontal`` is then its x component, the pair (x, y) gives the
+        excitation's magnitude ``sqrt(x^2 + y^2)`` and direction. Planar
+        configurations take ``horizontal`` alone (their plane's x).
 
     Examples
     --------
@@ -306,6 +312,7 @@ class Excitation:
     horizontal: float
     vertical: float = 0.0
     vertical_senses: str = "given"
+    horizontal_y: float = 0.0
 
     def verticals(self) -> tuple[float, ...]:
         """The signed vertical accelerations to analyse [m/s^2], downward first."""

@@ -279,7 +279,7 @@ def build_campaign(
     from freestand.io.suites import RecordSuite, load_suite
 
     cloud = levels is None
-    stack = model.configuration(configuration) if configuration else model.configurations[0]
+    stack = model.configuration(configuration) if configuration else model.first_configuration()
     measure = (
         im if isinstance(im, IntensityMeasure) else parse_intensity(im, stack, source + "--im")
     )

@@ -9,28 +9,50 @@ A two-block configuration can also be given in the paper's own notation
 (Table 1: ``p1, p3, g, h, p2, c, d, r, q`` in the y-z plane, or
 ``p1, p3, e, f, p2, a, b, s, t`` in the x-z plane); it is converted to
 coordinates by :func:`paper_notation_blocks`.
+
+A block with a ``shape`` is a 3-D body (:mod:`freestand.io.body_spec`): its
+configuration loads as a :class:`~freestand.core.body.BodyConfiguration`
+into :attr:`ModelFile.body_configurations`, beside the planar stacks of
+:attr:`ModelFile.configurations`. An excitation's ``y`` is the second
+horizontal component of the 3-D configurations.
 """
 
 from __future__ import annotations
 
 import difflib
 import hashlib
-import math
 import tomllib
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any
+from typing import Annotated, Any
 
-from pydantic import BaseModel, ConfigDict, ValidationError, field_validator, model_validator
+from pydantic import (
+    ConfigDict,
+    Discriminator,
+    Tag,
+    ValidationError,
+    field_validator,
+    model_validator,
+)
 
+from freestand.core.body import BodyConfiguration
 from freestand.core.model import VERTICAL_SENSES, Block, Excitation, Friction, Sliding, Stack
 from freestand.core.motion.spectra import Spectrum
 from freestand.errors import FreestandError
 from freestand.io.beam_section import BeamSection, parse_beam_section
+from freestand.io.body_spec import BodySpec, block_kind
+from freestand.io.schema import (
+    Quantity,
+    _FrictionSpec,
+    _inertia_value,
+    _mass_value,
+    _name_value,
+    _positive,
+    _quantity,
+    _Strict,
+)
 from freestand.io.spectrum_input import parse_spectrum_sections
 from freestand.io.units import to_si
-
-Quantity = float | int | str
 
 
 @dataclass(frozen=True)
@@ -45,6 +67,7 @@ class ModelFile:
         g [m/s^2].
     excitations : tuple of Excitation
     configurations : tuple of Stack
+        The planar configurations, in the file's order.
     source : str
         File name the model was read from (``"<string>"`` for text).
     sha256 : str
@@ -57,6 +80,11 @@ class ModelFile:
     fragility : dict or None
         The ``[fragility]`` table as written (a fragility campaign for the
         report; read by :func:`freestand.io.fragility_options.fragility_table`).
+    body_configurations : tuple of BodyConfiguration
+        The 3-D configurations (a block with ``shape``), in the file's order
+        (:class:`freestand.core.body.BodyConfiguration`). The analyses of
+        planar stacks see ``configurations`` only; :meth:`configuration`
+        refuses a 3-D configuration's name with a message saying so.
     """
 
     name: str
@@ -69,6 +97,7 @@ class ModelFile:
     spectra: dict = field(default_factory=dict)
     beam: BeamSection | None = None
     fragility: dict | None = None
+    body_configurations: tuple[BodyConfiguration, ...] = ()
 
     def spectrum(self, direction: str) -> Spectrum | None:
         """The model's first spectrum for ``direction`` ("horizontal"/"vertical"), if any."""
@@ -95,79 +124,60 @@ class ModelFile:
         return tuple(messages)
 
     def configuration(self, name: str) -> Stack:
-        """The configuration called ``name``, or a FreestandError listing the names."""
+        """The planar configuration called ``name``, or a FreestandError listing the names.
+
+        A 3-D configuration's name gives an error saying that this analysis
+        takes planar configurations (:meth:`body_configuration` gives it).
+        """
         for stack in self.configurations:
             if stack.name == name:
                 return stack
-        known = ", ".join(repr(stack.name) for stack in self.configurations)
+        if any(body.name == name for body in self.body_configurations):
+            raise FreestandError(
+                f"configuration {name!r} is 3-D (a block with shape); this analysis takes "
+                f"planar configurations only{self._planar_choice()}. 3-D configurations are "
+                "screened by `freestand screen` (fs.screen) and reported by `freestand report`",
+                source=self.source,
+            )
         raise FreestandError(
-            f"no configuration named {name!r}; choose one of {known}", source=self.source
+            f"no configuration named {name!r}; choose one of {self._known()}", source=self.source
         )
+
+    def body_configuration(self, name: str) -> BodyConfiguration:
+        """The 3-D configuration called ``name``, or a FreestandError listing the names."""
+        for body in self.body_configurations:
+            if body.name == name:
+                return body
+        raise FreestandError(
+            f"no configuration named {name!r}; choose one of {self._known()}", source=self.source
+        )
+
+    def first_configuration(self) -> Stack:
+        """The first planar configuration, or a FreestandError when the model has none."""
+        if not self.configurations:
+            raise FreestandError(
+                "has only 3-D configurations "
+                f"({', '.join(repr(b.name) for b in self.body_configurations)}); this analysis "
+                "takes planar configurations only. 3-D configurations are screened by "
+                "`freestand screen` (fs.screen) and reported by `freestand report`",
+                source=self.source,
+            )
+        return self.configurations[0]
+
+    def _known(self) -> str:
+        names = [repr(stack.name) for stack in self.configurations]
+        names += [f"{body.name!r} (3-D)" for body in self.body_configurations]
+        return ", ".join(names)
+
+    def _planar_choice(self) -> str:
+        if not self.configurations:
+            return " and the model has none"
+        return ": " + ", ".join(repr(stack.name) for stack in self.configurations)
 
 
 # --- schema -------------------------------------------------------------------------------------
 
 _SLIDING_WORDS = ", ".join(repr(s.value) for s in Sliding)
-
-
-class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
-
-
-def _name_value(value: Any) -> Any:
-    if isinstance(value, str) and not value.strip():
-        raise ValueError(f'{value!r} is an empty name; give a name, e.g. name = "bridge"')
-    return value
-
-
-def _gravity(info) -> float:
-    return (info.context or {}).get("gravity", 9.81)
-
-
-def _quantity(value: Any, quantity: str, info) -> float:
-    # The file and field path are added when the ValidationError is translated.
-    return to_si(value, quantity, field="", gravity=_gravity(info))
-
-
-def _positive(value: float, what: str, example: str) -> float:
-    if not value > 0:
-        raise ValueError(f"{value!r} is not positive; the {what} must be > 0, e.g. {example}")
-    return value
-
-
-#: Largest friction coefficient accepted [-]; a block that must never slip is given
-#: ``sliding = "none"`` instead of a huge coefficient.
-FRICTION_LIMIT = 100.0
-
-
-class _FrictionSpec(_Strict):
-    static: float
-    kinetic: float
-
-    @field_validator("static", "kinetic", mode="after")
-    @classmethod
-    def _finite(cls, value, info):
-        if not math.isfinite(value) or abs(value) > FRICTION_LIMIT:
-            raise ValueError(
-                f"{info.field_name} = {value!r} is not a friction coefficient; give a finite "
-                f"number between 0 and {FRICTION_LIMIT:g}, e.g. {info.field_name} = 0.25 "
-                '(for an interface that never slips write sliding = "none")'
-            )
-        return value
-
-    @model_validator(mode="after")
-    def _order(self):
-        if self.static < 0 or self.kinetic < 0:
-            raise ValueError(
-                f"friction coefficients must be >= 0 (static = {self.static}, "
-                f"kinetic = {self.kinetic})"
-            )
-        if self.kinetic > self.static:
-            raise ValueError(
-                f"kinetic = {self.kinetic} is above static = {self.static}; the kinetic "
-                "coefficient must not exceed the static one (swap them?)"
-            )
-        return self
 
 
 class _BaseSpec(_Strict):
@@ -196,33 +206,6 @@ def _sliding_word(value: Any) -> str:
         return Sliding(value).value
     except ValueError:
         raise ValueError(f"{value!r} is not a sliding word; use one of {_SLIDING_WORDS}") from None
-
-
-#: Smallest mass [kg] and moment of inertia [kg m^2] accepted: below them the equations of
-#: motion are ill-conditioned beside any real block (a mass of 1e-300 kg is a typo).
-MASS_FLOOR = 1e-3
-INERTIA_FLOOR = 1e-6
-
-
-def _floor(value: float, floor: float, what: str, unit: str, example: str) -> float:
-    if value < floor:
-        raise ValueError(
-            f"{value!r} {unit} is below the smallest plausible {what} ({floor:g} {unit}); "
-            f"check the value and its unit, e.g. {example}"
-        )
-    return value
-
-
-def _mass_value(value: Any, info) -> float:
-    mass = _positive(_quantity(value, "mass", info), "mass", '16600 or "16.6 t"')
-    return _floor(mass, MASS_FLOOR, "mass", "kg", '16600 or "16.6 t"')
-
-
-def _inertia_value(value: Any, info) -> float:
-    inertia = _positive(
-        _quantity(value, "inertia", info), "moment of inertia about the centre", "49400"
-    )
-    return _floor(inertia, INERTIA_FLOOR, "moment of inertia", "kg m^2", "49400")
 
 
 class _BlockSpec(_Strict):
@@ -338,10 +321,17 @@ class _PaperSpec(_Strict):
         return self
 
 
+#: A ``[[configuration.block]]``: planar, or 3-D when it has a shape (:func:`block_kind`).
+_AnyBlock = Annotated[
+    Annotated[_BlockSpec, Tag("planar")] | Annotated[BodySpec, Tag("3-D")],
+    Discriminator(block_kind),
+]
+
+
 class _ConfigurationSpec(_Strict):
     name: str
     _name = field_validator("name", mode="before")(_name_value)
-    block: list[_BlockSpec] | None = None
+    block: list[_AnyBlock] | None = None
     paper: _PaperSpec | None = None
 
     @model_validator(mode="after")
@@ -354,6 +344,9 @@ class _ConfigurationSpec(_Strict):
         if self.block is not None:
             if not self.block:
                 raise ValueError("no blocks; add at least one [[configuration.block]]")
+            if self.bodies:
+                _one_body(self.block, self.bodies)
+                return self
             names = [b.name for b in self.block]
             if len(set(names)) != len(names):
                 raise ValueError(f"block names {names} repeat; give each block its own name")
@@ -373,6 +366,30 @@ class _ConfigurationSpec(_Strict):
                         "bottom to top, each resting on the one before"
                     )
         return self
+
+    @property
+    def bodies(self) -> list[BodySpec]:
+        """The 3-D blocks (those with a shape)."""
+        return [block for block in self.block or () if isinstance(block, BodySpec)]
+
+
+def _one_body(blocks: list, bodies: list[BodySpec]) -> None:
+    """A 3-D configuration holds one 3-D block and nothing else (ValueError otherwise)."""
+    planar = [block.name for block in blocks if not isinstance(block, BodySpec)]
+    names = ", ".join(body.name for body in bodies)
+    if planar:
+        raise FreestandError(
+            f"mixes planar blocks ({', '.join(planar)}) and 3-D blocks ({names}, with shape); "
+            "a configuration is planar (blocks with base and centre = [x, z]) or 3-D (one "
+            "block with shape): put them in separate [[configuration]] tables",
+            field="block",
+        )
+    if len(bodies) > 1:
+        raise FreestandError(
+            f"has {len(bodies)} blocks with shape ({names}); stacks of 3-D bodies are not "
+            "supported yet: give each body a [[configuration]] of its own",
+            field="block",
+        )
 
 
 class _FloorSpec(_Strict):
@@ -398,6 +415,10 @@ class _ExcitationSpec(_Strict):
     name: str
     _name = field_validator("name", mode="before")(_name_value)
     horizontal: Quantity | None = None
+    # the same key as horizontal (the x component), as in suite files
+    x: Quantity | None = None
+    # the y component, for 3-D configurations (signed)
+    y: Quantity | None = None
     vertical: Quantity = 0.0
     vertical_senses: str = "given"
     # a ground record (relative to the model file) whose peak, after the optional floor
@@ -405,16 +426,23 @@ class _ExcitationSpec(_Strict):
     record: str | None = None
     floor: _FloorSpec | None = None
 
-    @field_validator("horizontal", mode="before")
+    @field_validator("horizontal", "x", mode="before")
     @classmethod
     def _horizontal(cls, value, info):
         result = _quantity(value, "acceleration", info)
         if result < 0:
             raise ValueError(
                 f"{value!r} is negative; give the magnitude of the horizontal support "
-                "acceleration (both senses are analysed)"
+                "acceleration (both senses are analysed"
+                + (": the direction of (x, y) and its opposite)" if info.field_name == "x" else ")")
             )
         return result
+
+    @field_validator("y", mode="before")
+    @classmethod
+    def _y(cls, value, info):
+        # signed: with x >= 0 it gives every direction up to the sense, and both are analysed
+        return _quantity(value, "acceleration", info)
 
     @field_validator("vertical", mode="before")
     @classmethod
@@ -435,19 +463,35 @@ class _ExcitationSpec(_Strict):
 
     @model_validator(mode="after")
     def _one_source(self):
-        if (self.horizontal is None) == (self.record is None):
+        if self.horizontal is not None and self.x is not None:
             raise ValueError(
-                "give either horizontal (a peak acceleration) or record (a ground record "
-                'file, optionally with floor = { frequency = "2.5 Hz", damping = "5 %" })'
+                f"horizontal = {self.horizontal} and x = {self.x} are both given; give the x "
+                "component once: horizontal and x are the same key"
+            )
+        if (self.x_component is None) == (self.record is None):
+            raise ValueError(
+                "give either horizontal (a peak acceleration; also written x, with y for "
+                "3-D configurations) or record (a ground record file, optionally with "
+                'floor = { frequency = "2.5 Hz", damping = "5 %" })'
             )
         if self.floor is not None and self.record is None:
             raise ValueError('floor filters a record; give record = "FILE" with it')
+        if self.y is not None and self.record is not None:
+            raise ValueError(
+                f"y = {self.y:g} m/s^2 goes with horizontal (or x) as accelerations, not with a "
+                "record; give horizontal and y in m/s^2, or leave y out"
+            )
         return self
+
+    @property
+    def x_component(self) -> float | None:
+        """The x component [m/s^2]: ``horizontal`` or ``x``, whichever is given."""
+        return self.horizontal if self.horizontal is not None else self.x
 
     def horizontal_peak(self, base_dir: Path, gravity: float) -> float:
         """Horizontal acceleration [m/s^2]: given, or the peak of the (floor-filtered) record."""
         if self.record is None:
-            return float(self.horizontal)
+            return float(self.x_component)
         from freestand.core.motion.response_spectrum import floor_motion
         from freestand.io.records import load_record
 
@@ -558,11 +602,20 @@ def paper_notation_blocks(spec: _PaperSpec) -> tuple[Block, Block]:
 # --- loading ------------------------------------------------------------------------------------
 
 
+#: The tags of :data:`_AnyBlock` that pydantic puts in an error's location.
+_BLOCK_TAGS = ("planar", "3-D")
+
+
 def _field_path(location: tuple, data: dict) -> str:
     """A readable dotted path such as ``configuration[0] 'y-z'.block[1] 'cart'.mass``."""
     parts = []
     node: Any = data
+    previous = None
     for item in location:
+        if item in _BLOCK_TAGS and isinstance(previous, int):
+            previous = item  # which schema read the block (planar or 3-D): not a field
+            continue
+        previous = item
         if isinstance(item, int):
             parts[-1] = f"{parts[-1]}[{item}]" if parts else f"[{item}]"
             node = node[item] if isinstance(node, list) and item < len(node) else None
@@ -585,6 +638,12 @@ _MISSING_HINTS = {
     "static": "the static friction coefficient, e.g. static = 0.25",
     "kinetic": "the kinetic friction coefficient, e.g. kinetic = 0.20",
     "horizontal": 'the horizontal support acceleration, e.g. horizontal = "2.70 m/s^2"',
+    "shape": '"box" (with size) or "cylinder" (with radius and height) for a 3-D block, e.g. '
+    'shape = "box"',
+    "size": "the box's sides [lx, ly, lz] in m, e.g. size = [0.8, 0.6, 2.0]",
+    "radius": "the cylinder's radius in m, e.g. radius = 0.9",
+    "height": "the cylinder's height in m, e.g. height = 4.0",
+    "friction": "the friction on the support, e.g. friction = { static = 0.5, kinetic = 0.4 }",
     "excitation": "at least one [[excitation]] table with name, horizontal and vertical",
     "configuration": "at least one [[configuration]] table with its blocks",
     "plane": 'the plane, "y-z" or "x-z"',
@@ -617,6 +676,9 @@ def _translate(error: ValidationError, data: dict, source: str) -> FreestandErro
     if kind == "value_error":
         cause = first.get("ctx", {}).get("error")
         message = cause.detail if isinstance(cause, FreestandError) else str(cause)
+        if isinstance(cause, FreestandError) and cause.field:
+            # a table's check that names the key at fault below the table
+            path = f"{path}.{cause.field}" if path else cause.field
         return FreestandError(message, source=source, field=path or None)
     value = first.get("input")
     return FreestandError(
@@ -669,8 +731,13 @@ def load_model_text(
     except ValidationError as error:
         raise _translate(error, data, source) from None
 
-    configurations = []
+    configurations, bodies = [], []
     for index, configuration in enumerate(spec.configuration):
+        if configuration.bodies:
+            bodies.append(
+                BodyConfiguration(configuration.name, (configuration.bodies[0].to_body(),))
+            )
+            continue
         if configuration.block is not None:
             blocks = tuple(block.to_block() for block in configuration.block)
         else:
@@ -683,6 +750,8 @@ def load_model_text(
                     field=f"configuration[{index}] ({configuration.name!r}).paper",
                 ) from None
         configurations.append(Stack(name=configuration.name, blocks=blocks))
+    if not bodies:
+        _check_planar_excitations(spec, source)
     base_dir = base_dir or Path.cwd()
     excitations = tuple(
         Excitation(
@@ -690,6 +759,7 @@ def load_model_text(
             horizontal=e.horizontal_peak(base_dir, gravity),
             vertical=float(e.vertical),
             vertical_senses=e.vertical_senses,
+            horizontal_y=0.0 if e.y is None else float(e.y),
         )
         for e in spec.excitation
     )
@@ -714,7 +784,22 @@ def load_model_text(
         spectra=spectra,
         beam=beam,
         fragility=spec.fragility,
+        body_configurations=tuple(bodies),
     )
+
+
+def _check_planar_excitations(spec: _ModelSpec, source: str) -> None:
+    """On a model without 3-D configurations, an excitation's ``y`` is a mistake: refuse it."""
+    for index, excitation in enumerate(spec.excitation):
+        if excitation.y is not None:
+            raise FreestandError(
+                f"y = {excitation.y:g} m/s^2 is given, but every configuration of this model is "
+                "planar; y is the second horizontal component of a 3-D configuration (a block "
+                "with shape). Remove y (a planar configuration takes horizontal, its plane's x), "
+                "or give a configuration a 3-D block",
+                source=source,
+                field=f"excitation[{index}] ({excitation.name!r}).y",
+            )
 
 
 def load_model(path: str | Path) -> ModelFile:
@@ -757,15 +842,4 @@ def load_model(path: str | Path) -> ModelFile:
     except UnicodeDecodeError:
         raise FreestandError("is not UTF-8 text; save it as UTF-8 TOML", source=str(path)) from None
     model = load_model_text(text, source=str(path), base_dir=path.resolve().parent)
-    return ModelFile(
-        name=model.name,
-        gravity=model.gravity,
-        excitations=model.excitations,
-        configurations=model.configurations,
-        source=model.source,
-        sha256=hashlib.sha256(raw).hexdigest(),
-        base_dir=model.base_dir,
-        spectra=model.spectra,
-        beam=model.beam,
-        fragility=model.fragility,
-    )
+    return replace(model, sha256=hashlib.sha256(raw).hexdigest())

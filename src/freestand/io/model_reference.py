@@ -38,7 +38,11 @@ DESCRIPTIONS = {
     "gravity": "the gravitational acceleration g; the unit g in the file means this value",
     "excitation": "a level of support acceleration; both horizontal senses are analysed",
     "excitation.name": "the level's name (rigid, elastic...)",
-    "excitation.horizontal": "magnitude of the horizontal support acceleration a_h",
+    "excitation.horizontal": "magnitude of the horizontal support acceleration a_h: its x "
+    "component (3-D configurations add y; planar configurations take it alone, in their plane)",
+    "excitation.x": "the same key as horizontal (the x component); give one of them",
+    "excitation.y": "the y component of the horizontal support acceleration, signed, for 3-D "
+    "configurations (an error on a model without one)",
     "excitation.vertical": "signed vertical support acceleration a_v, positive downward "
     "(the weight becomes m (g - a_v))",
     "excitation.vertical_senses": '"given", or "both": also analysed with a_v upward',
@@ -47,7 +51,7 @@ DESCRIPTIONS = {
     "excitation.floor": "a structure's mode that filters the record (peak floor motion)",
     "excitation.floor.frequency": "the mode's frequency",
     "excitation.floor.damping": 'the mode\'s damping ratio (0.05 or "5 %")',
-    "configuration": "one planar model (a plane, a parking position...)",
+    "configuration": "one planar model (a plane, a parking position...), or one 3-D body",
     "configuration.name": "the configuration's name",
     "configuration.block": "a block, listed bottom to top; each rests on the one before",
     "configuration.block.name": "the block's name",
@@ -77,6 +81,28 @@ DESCRIPTIONS = {
     "fragility": "a fragility campaign for the report's appendix (see below)",
 }
 
+
+#: What each key of a 3-D block is (:class:`freestand.io.body_spec.BodySpec`), by its path in
+#: the block.
+BODY_DESCRIPTIONS = {
+    "name": "the body's name",
+    "shape": '"box" or "cylinder": makes the configuration 3-D (one body on the support)',
+    "size": "box: its sides [lx, ly, lz], x and y horizontal, z up",
+    "radius": "cylinder: its radius R",
+    "height": "cylinder: its height H",
+    "inner_radius": "cylinder: the inner radius r of a hollow one (0: solid)",
+    "mass": "mass m",
+    "centre": "[x, y, z] of the centre of gravity from the base centre (default the "
+    "geometric centre); it must lie over the base",
+    "inertia": "about the centre of gravity: 3 principal values [Ixx, Iyy, Izz] or a "
+    "symmetric positive definite 3x3 matrix (default: the homogeneous body's)",
+    "friction": "Coulomb friction on the support (the circular cone)",
+    "friction.static": "static friction coefficient",
+    "friction.kinetic": "kinetic friction coefficient (not above the static)",
+}
+
+#: The type of a 3-D block's keys where the annotation does not say it in words.
+BODY_KINDS = {"inertia": "array of 3, or 3x3 array", "centre": "array of 3"}
 
 #: Units of the keys converted outside the schema's field validators (by the loader itself).
 UNITS = {"gravity": "m/s^2"}
@@ -172,7 +198,7 @@ def _probe_unit(model: type[BaseModel], field: str) -> str:
             if not unit:
                 continue
             sample = f"1 {unit}"
-            for value in (sample, [sample, sample]):
+            for value in (sample, [sample, sample], [sample, sample, sample]):
                 try:
                     result = _call(function, value, field)
                 except Exception:  # noqa: BLE001 - a unit the validator refuses
@@ -203,8 +229,15 @@ def _default(info) -> str:
     return f"{value:g}" if isinstance(value, float) else str(value)
 
 
-def schema_keys(model: type[BaseModel] | None = None, prefix: str = "") -> list[Key]:
-    """Every key of the model-file schema, depth first, in declaration order."""
+def schema_keys(
+    model: type[BaseModel] | None = None, prefix: str = "", *, top: str = ""
+) -> list[Key]:
+    """Every key of the model-file schema, depth first, in declaration order.
+
+    A table read by a schema of its own (one with a ``reference_title``, the
+    3-D block) is left out: :func:`body_keys` lists it. ``top`` is the path of
+    ``model`` below which the key paths are given (for those tables).
+    """
     from freestand.io.model_file import _MISSING_HINTS, _ModelSpec
 
     model = model or _ModelSpec
@@ -212,17 +245,28 @@ def schema_keys(model: type[BaseModel] | None = None, prefix: str = "") -> list[
     for name, info in model.model_fields.items():
         path = f"{prefix}{name}"
         annotation = info.annotation
-        kind = _kind(annotation)
+        relative = path[len(top) :]
+        kind = BODY_KINDS.get(relative, "") if top else ""
+        kind = kind or _kind(annotation)
         unit = UNITS.get(path) or _probe_unit(model, name)
         if unit and kind in ("number", "integer"):
             kind = "number or text with unit"
         if not unit and kind in ("number", "integer"):
             unit = "-"
-        description = _description(path) or _MISSING_HINTS.get(name, "")
+        described = BODY_DESCRIPTIONS.get(relative, "") if top else _description(path)
+        description = described or _MISSING_HINTS.get(name, "")
         keys.append(Key(path, kind, info.is_required(), _default(info), unit, description))
         for nested in _models_in(annotation):
-            keys += schema_keys(nested, path + ".")
+            if not hasattr(nested, "reference_title"):
+                keys += schema_keys(nested, path + ".", top=top)
     return keys
+
+
+def body_keys() -> list[Key]:
+    """Every key of a 3-D block (:class:`freestand.io.body_spec.BodySpec`)."""
+    from freestand.io.body_spec import BodySpec
+
+    return schema_keys(BodySpec, "configuration.block.", top="configuration.block.")
 
 
 def _cell(text: str) -> str:
@@ -256,15 +300,19 @@ INTRODUCTION = (
 def model_file_reference() -> str:
     """The model-file reference as Markdown (MyST): every key, its unit and default."""
     from freestand.io.beam_section import BEAM_FIELDS
+    from freestand.io.body_spec import BodySpec
     from freestand.io.fragility_options import FRAGILITY_KEYS
     from freestand.io.spectrum_input import COMMON_SPECTRUM_KEYS, SPECTRUM_KEYS
     from freestand.io.units import QUANTITIES
 
-    rows = [
-        (f"`{key.path}`", key.kind, "required" if key.required else key.default, key.unit,
-         key.description)
-        for key in schema_keys()
-    ]  # fmt: skip
+    rows, body_rows = (
+        [
+            (f"`{key.path}`", key.kind, "required" if key.required else key.default, key.unit,
+             key.description)
+            for key in keys
+        ]
+        for keys in (schema_keys(), body_keys())
+    )  # fmt: skip
     beam = [
         (f"`beam.{name}`", "number or text with unit", "required" if required else "none",
          QUANTITIES[quantity][0].replace("*", " ") or "-", f"{what} ({rule})")
@@ -281,6 +329,11 @@ def model_file_reference() -> str:
         INTRODUCTION,
         "## Model, excitations and configurations",
         _table(rows, header),
+        f"## {BodySpec.reference_title}",
+        "A block with `shape` (or any of `size`, `radius`, `height`, `inner_radius`) is a "
+        "3-D body and its configuration is 3-D: one such block and no other (stacks of 3-D "
+        "bodies are not supported yet). Its keys:",
+        _table(body_rows, header),
         "## `[beam]`: the bridge under the parked cart (paper section 6)",
         _table(beam, header),
         "## `[[spectrum]]`: response spectra",

@@ -2,8 +2,15 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
+from freestand.core.body import Body, Box
+from freestand.core.contact.body_screening import (
+    BodyInitialMotion,
+    BodyScreeningCase,
+    pivot_label,
+)
 from freestand.core.contact.screening import BlockState, ForceEnvelope, InitialMotion
 
 
@@ -85,4 +92,76 @@ def envelope_document(item: ForceEnvelope) -> dict:
         "left": {"normal": item.normal_left, "case": item.cases[0]},
         "right": {"normal": item.normal_right, "case": item.cases[1]},
         "tangential": {"magnitude": item.tangential, "case": item.cases[2]},
+    }
+
+
+def _finite(value: float) -> float | None:
+    value = float(value)
+    return value if math.isfinite(value) else None
+
+
+def degrees(angle: float | None) -> float | None:
+    """An angle [rad] in degrees over [0, 360), rounded to 1e-9 deg (None stays None)."""
+    return None if angle is None else round(math.degrees(angle) % 360.0, 9) % 360.0
+
+
+def body_state_document(state: BodyInitialMotion) -> dict:
+    """A 3-D body's state in one direction: motion, pivot, threshold [m/s^2], forces [N]."""
+    return {
+        "direction": degrees(state.direction),
+        "motion": state.motion.value,
+        "pivot": state.pivot,
+        "slide_direction": degrees(state.slide_direction),
+        "uplift_threshold": _finite(state.uplift_threshold),
+        "forces": {
+            "normal": _finite(state.normal_force),
+            "tangential": {
+                "x": _finite(state.tangential_force[0]),
+                "y": _finite(state.tangential_force[1]),
+            },
+        },
+        "angular_acceleration": _finite(state.angular_acceleration),
+    }
+
+
+def shape_document(body: Body) -> dict:
+    """The body's shape: ``{"shape": "box", "size": [...]}`` or the cylinder's dimensions [m]."""
+    if isinstance(body.shape, Box):
+        return {"shape": "box", "size": list(body.shape.size)}
+    return {
+        "shape": "cylinder",
+        "radius": body.shape.radius,
+        "height": body.shape.height,
+        "inner_radius": body.shape.inner_radius,
+    }
+
+
+def body_case_document(case: BodyScreeningCase, body: Body) -> dict:
+    """One 3-D configuration under one excitation: every direction swept (``body_cases``).
+
+    Directions [deg] from +x towards +y, of the horizontal support
+    acceleration; ``x``, ``y`` and ``horizontal`` (their magnitude) [m/s^2];
+    ``at_excitation`` is the state in the excitation's own direction;
+    ``forces`` act on the body from the support [N] (None where not computed:
+    slide-rock).
+    """
+    lowest = case.lowest_threshold
+    return {
+        "configuration": case.configuration,
+        "body": case.body,
+        **shape_document(body),
+        "excitation": case.excitation,
+        "x": case.x,
+        "y": case.y,
+        "horizontal": case.horizontal,
+        "excitation_direction": degrees(case.excitation_direction),
+        "vertical": case.vertical,
+        "slide_threshold": _finite(case.directions[0].slide_threshold),
+        "lowest_uplift_threshold": {
+            "direction": degrees(lowest.direction),
+            "uplift_threshold": _finite(lowest.uplift_threshold),
+            "pivot": pivot_label(body, lowest.direction),
+        },
+        "at_excitation": body_state_document(case.at_excitation),
+        "directions": [body_state_document(state) for state in case.directions],
     }

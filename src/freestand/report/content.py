@@ -44,6 +44,7 @@ from freestand.core.rocking.properties import RockingBlock
 from freestand.core.structure.beam import FrequencySweep, JumpCheck, frequency_sweep, jump_check
 from freestand.errors import FreestandError
 from freestand.io.model_file import ModelFile
+from freestand.report.bodies import body_sentences, collect_body_cases
 
 #: Callback told about each step: (description, steps done, steps in all).
 Progress = Callable[[str, int, int], None]
@@ -199,6 +200,9 @@ class ReportContent:
     fragility : FragilitySection or None
         When the model file has a ``[fragility]`` table
         (:mod:`freestand.report.fragility`).
+    body_cases : tuple of BodyScreeningCase
+        The screening of the 3-D configurations by direction
+        (:mod:`freestand.report.bodies`).
     """
 
     model: ModelFile
@@ -212,6 +216,7 @@ class ReportContent:
     frequency: FrequencyAssessment | None
     summary: tuple[str, ...]
     fragility: object | None = None
+    body_cases: tuple = ()
 
     @property
     def flagged(self) -> tuple[InitialMotion, ...]:
@@ -591,12 +596,14 @@ def summary_sentences(
     overturning: tuple[RockingAssessment, ...],
     skipped: tuple[SkippedBlock, ...],
     frequency: FrequencyAssessment | None,
+    body_cases: tuple = (),
 ) -> tuple[str, ...]:
     """The conclusions at the top of the report, like the paper's section 7."""
     sentences = [f"Warning: {message}." for message in model.warnings()]
     for stack in model.configurations:
         own = [c for c in cases if c.configuration == stack.name]
         sentences.append(_configuration_sentence(stack, own))
+    sentences += body_sentences(model, body_cases)
     flagged = [c for c in cases if c.status in ("ambiguous", "inconsistent")]
     if flagged:
         listed = "; ".join(f"{c.configuration}, {case_label(c)} ({c.status})" for c in flagged)
@@ -606,9 +613,10 @@ def summary_sentences(
             "the rule 'static friction holds where it can, then fewest separations'."
         )
     rocking_blocks = {(a.configuration, a.block) for a in overturning}
-    if not overturning and not skipped:
+    if not overturning and not skipped and model.configurations:
+        blocks = "block of the planar configurations" if model.body_configurations else "block"
         sentences.append(
-            "No block lifts in any screened case, so none can rock or overturn under these "
+            f"No {blocks} lifts in any screened case, so none can rock or overturn under these "
             "excitations."
         )
     sentences += [_overturning_sentence(item) for item in overturning]
@@ -664,6 +672,7 @@ def collect_report(
     tell("vertical frequency and jump check (Fig. 9)", total - 1, total)
     frequency = assess_frequency(model)
     overturning = tuple(assessments)
+    body_cases = collect_body_cases(model)
     return ReportContent(
         model=model,
         model_file=os.path.basename(model.source),
@@ -674,8 +683,9 @@ def collect_report(
         overturning=overturning,
         skipped=tuple(skipped),
         frequency=frequency,
-        summary=summary_sentences(model, cases, overturning, tuple(skipped), frequency),
+        summary=summary_sentences(model, cases, overturning, tuple(skipped), frequency, body_cases),
         fragility=_fragility(model, tell, total),
+        body_cases=body_cases,
     )
 
 

@@ -16,8 +16,6 @@ and the rows or sections around it carry what it belongs to
 from __future__ import annotations
 
 import math
-from html import escape
-from itertools import count
 
 import numpy as np
 
@@ -31,6 +29,12 @@ from freestand.report.content import (
     limit_title,
     sense_label,
 )
+from freestand.report.markup import Document as _Document
+from freestand.report.markup import data_attrs as _attrs
+from freestand.report.markup import esc as _e
+from freestand.report.markup import number_cell as _num
+from freestand.report.markup import number_text as _format
+from freestand.report.markup import table_head as _head
 from freestand.report.tables import FORCE_HEADERS, motion_label
 
 CSS = """
@@ -142,81 +146,6 @@ REFERENCES = (
         "General rules, seismic actions and rules for buildings. Section 3.2.2.",
     ),
 )
-
-
-# --- small helpers -------------------------------------------------------------------------------
-
-
-def _e(text: object) -> str:
-    return escape(str(text), quote=True)
-
-
-def _attrs(**data: object) -> str:
-    """`` data-a="x" data-b="y"`` from keyword arguments (``_`` becomes ``-``)."""
-    return "".join(f' data-{key.replace("_", "-")}="{_e(value)}"' for key, value in data.items())
-
-
-def _format(value: float, digits: int, *, grouped: bool = False) -> str:
-    if not math.isfinite(value):
-        return "&#8734;" if value > 0 else "&#8722;&#8734;" if value < 0 else "n/a"
-    if value == 0:
-        return "0"
-    text = f"{value:,.{digits}f}" if grouped else f"{value:.{digits}f}"
-    return text.replace("-", "&#8722;")
-
-
-def _num(
-    value: float,
-    digits: int,
-    quantity: str,
-    *,
-    grouped: bool = False,
-    text: str | None = None,
-    tag: str = "td",
-) -> str:
-    """A numeric cell with its full-precision value in ``data-value``."""
-    value = float(value)
-    shown = text if text is not None else _format(value, digits, grouped=grouped)
-    return (
-        f'<{tag} class="num" data-quantity="{_e(quantity)}" data-value="{value!r}" '
-        f'data-digits="{digits}">{shown}</{tag}>'
-    )
-
-
-def _head(*headers: str) -> str:
-    cells = "".join(
-        f'<th class="num">{h}</th>' if "[" in h or h.endswith("[-]") else f"<th>{h}</th>"
-        for h in headers
-    )
-    return f"<thead><tr>{cells}</tr></thead>"
-
-
-class _Document:
-    """Numbering of tables and figures, and the figures drawn so far."""
-
-    def __init__(self) -> None:
-        self.tables = count(1)
-        self.figures = count(1)
-        self.figure_ids = count(1)
-
-    def table(self, caption: str, head: str, rows: list[str], *, cls: str = "", **data) -> str:
-        number = next(self.tables)
-        klass = f' class="{cls}"' if cls else ""
-        return (
-            f'<table id="table-{number}"{klass}{_attrs(**data)}>'
-            f"<caption>Table {number}. {caption}</caption>{head}"
-            f"<tbody>{''.join(rows)}</tbody></table>"
-        )
-
-    def figure(self, drawing, caption: str, **data) -> str:
-        from freestand.plot.svg import figure_svg
-
-        number = next(self.figures)
-        svg = figure_svg(drawing, f"f{number}")
-        return (
-            f'<figure id="figure-{number}"{_attrs(**data)}>{svg}'
-            f"<figcaption><b>Figure {number}.</b> {caption}</figcaption></figure>"
-        )
 
 
 # --- sections ------------------------------------------------------------------------------------
@@ -362,11 +291,16 @@ def _inputs(doc: _Document, content: ReportContent) -> str:
                 configuration=stack.name,
             )
         )
-    parts.append(
-        '<p class="note">sliding: <i>free</i> both ways; <i>none</i> never (wheel flanges); '
-        "<i>no-right</i>/<i>no-left</i>: an end stop prevents sliding further that way "
-        "relative to the body below.</p>"
-    )
+    if model.configurations:
+        parts.append(
+            '<p class="note">sliding: <i>free</i> both ways; <i>none</i> never (wheel flanges); '
+            "<i>no-right</i>/<i>no-left</i>: an end stop prevents sliding further that way "
+            "relative to the body below.</p>"
+        )
+    if model.body_configurations:
+        from freestand.report.bodies import inputs_html
+
+        parts.append(inputs_html(doc, model))
     parts.append("<h3>2.3 Response spectra</h3>")
     if not model.spectra:
         parts.append(
@@ -566,6 +500,10 @@ def _screening(doc: _Document, content: ReportContent) -> str:
             for c in flagged
         )
         parts.append(f'<h4>Flagged cases</h4><ul id="flagged">{items}</ul>')
+    if content.body_cases:
+        from freestand.report.bodies import screening_html
+
+        parts.append(screening_html(doc, model, content.body_cases))
     parts.append("</section>")
     return "".join(parts)
 
@@ -843,10 +781,17 @@ def _overturning(doc: _Document, content: ReportContent) -> str:
         "spectrum, reading the spectral acceleration at f as the peak of a pulse of "
         "frequency f, as the paper does.</p>",
     ]
-    if not content.overturning:
+    if not content.overturning and content.model.configurations:
+        blocks = "block of the planar configurations" if content.body_cases else "block"
         parts.append(
-            '<p id="no-rocking">No block lifts in any screened case: no overturning '
+            f'<p id="no-rocking">No {blocks} lifts in any screened case: no overturning '
             "assessment is needed.</p>"
+        )
+    if content.body_cases:
+        parts.append(
+            '<p id="bodies-not-assessed">The 3-D bodies (section 3) are not assessed for '
+            "overturning: that needs their time history, which this version does not "
+            "provide.</p>"
         )
     for number, item in enumerate(content.overturning, start=1):
         parts.append(_assessment(doc, item, number))
@@ -974,6 +919,11 @@ def _frequency(doc: _Document, item: FrequencyAssessment) -> str:
 
 def _method(content: ReportContent) -> str:
     number = 6 if content.frequency is not None else 5
+    bodies = ""
+    if content.body_cases:
+        from freestand.report.bodies import METHOD_HTML
+
+        bodies = METHOD_HTML
     return f"""<section id="method"><h2>{number} Method, assumptions and limits</h2>
 <h4>Initial motion and contact forces</h4>
 <p>Each configuration is a plane stack of rigid blocks, each resting on the one below through
@@ -1002,7 +952,7 @@ is unconservative: a block can overturn in free rocking after the pulse.</p>
 (paper section 6). Dunkerley's formula gives a lower bound of the lowest vertical frequency;
 the exact value of the continuous beam with the point mass is computed as well. The cart may
 jump where the vertical spectral acceleration between the two estimates reaches g.</p>
-<h4>Assumptions and limits</h4>
+{bodies}<h4>Assumptions and limits</h4>
 <ul>
 <li>The blocks are rigid; the structure's flexibility enters only through the excitation levels
 (for example the elastic case's spectral acceleration at the structure's mode) and the beam

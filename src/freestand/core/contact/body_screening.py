@@ -45,12 +45,12 @@ axis-aligned one of the same magnitude.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from freestand.core.body import Body, Box, base_ray_distance
-from freestand.core.contact.screening import GRAVITY, Motion
+from freestand.core.contact.screening import GRAVITY, Motion, vertical_label
 
 #: Relative tolerance [-] of the comparisons with the thresholds (round-off).
 THRESHOLD_TOLERANCE = 1e-12
@@ -141,6 +141,16 @@ def _pivot(body: Body, direction: float) -> tuple[np.ndarray, list[np.ndarray], 
     if on_x:
         return point, [np.array([0.0, 1.0, 0.0])], f"edge {sx}"
     return point, [np.array([1.0, 0.0, 0.0])], f"edge {sy}"
+
+
+def pivot_label(body: Body, direction: float) -> str:
+    """What the body tips about once it lifts under a support acceleration in ``direction`` [rad].
+
+    ``"edge +x"`` (the base edge at x = +l_x/2), ``"corner -x+y"``, ``"rim at 180 deg"``:
+    where the line of action of weight and inertial force leaves the base
+    (module docstring).
+    """
+    return _pivot(body, direction)[2]
 
 
 def _base_points(body: Body) -> np.ndarray:
@@ -249,3 +259,125 @@ def screen_directions(
         initial_motion(body, horizontal, 2.0 * math.pi * k / count, vertical, gravity)
         for k in range(count)
     )
+
+
+@dataclass(frozen=True)
+class BodyScreeningCase:
+    """The screening of a 3-D configuration under one excitation: every direction swept.
+
+    The excitation's horizontal components (x, y) give its magnitude
+    ``a = sqrt(x^2 + y^2)`` and its own direction ``phi_e = atan2(y, x)``.
+    Each direction phi of the sweep is screened under the magnitude a
+    (:func:`initial_motion`), so the sweep answers "what if the excitation
+    came from there", and ``at_excitation`` is the state in phi_e itself.
+
+    Attributes
+    ----------
+    configuration, body : str
+        Names.
+    excitation : str
+        The excitation's name (``"<name> (a_v down)"`` when analysed both ways).
+    x, y : float
+        The excitation's horizontal components [m/s^2].
+    horizontal : float
+        a = sqrt(x^2 + y^2) [m/s^2].
+    excitation_direction : float
+        phi_e [rad] in [0, 2 pi).
+    vertical, gravity : float
+        a_v (downward positive) and g [m/s^2].
+    directions : tuple of BodyInitialMotion
+        The sweep, evenly over 0-360 deg from +x.
+    at_excitation : BodyInitialMotion
+        The state in the excitation's own direction.
+    """
+
+    configuration: str
+    body: str
+    excitation: str
+    x: float
+    y: float
+    horizontal: float
+    excitation_direction: float
+    vertical: float
+    gravity: float
+    directions: tuple[BodyInitialMotion, ...]
+    at_excitation: BodyInitialMotion
+
+    @property
+    def lowest_threshold(self) -> BodyInitialMotion:
+        """The swept direction with the lowest uplift threshold (the first of equal ones)."""
+        return min(self.directions, key=lambda state: state.uplift_threshold)
+
+
+def screen_body_configuration(
+    configuration, excitations, gravity: float = GRAVITY, vertical_senses: str | None = None,
+    count: int = 24,
+) -> list[BodyScreeningCase]:  # fmt: skip
+    """Screen a 3-D configuration under every excitation, ``count`` directions each.
+
+    Parameters
+    ----------
+    configuration : BodyConfiguration
+        One body on the support.
+    excitations : sequence of Excitation
+        ``horizontal`` is the x component, ``horizontal_y`` the y component
+        [m/s^2]; ``vertical`` a_v, downward positive.
+    gravity : float, optional
+        g [m/s^2].
+    vertical_senses : str, optional
+        As :func:`freestand.core.contact.screening.screen`: ``"both"``
+        analyses a_v downward and upward (cases named ``"<name> (a_v down)"``
+        and ``"(a_v up)"``), None follows each excitation's own.
+    count : int, optional
+        Directions evenly over 0-360 deg (24: every 15 deg).
+
+    Returns
+    -------
+    list of BodyScreeningCase
+        In the order excitation, vertical sense (downward first).
+    """
+    body = configuration.body
+    cases = []
+    for excitation in excitations:
+        if vertical_senses is not None:
+            excitation = replace(excitation, vertical_senses=vertical_senses)
+        verticals = excitation.verticals()
+        x, y = float(excitation.horizontal), float(excitation.horizontal_y)
+        magnitude = math.hypot(x, y)
+        own = math.atan2(y, x) % (2.0 * math.pi)
+        for vertical in verticals:
+            cases.append(
+                BodyScreeningCase(
+                    configuration=configuration.name, body=body.name,
+                    excitation=vertical_label(excitation.name, vertical, len(verticals) > 1),
+                    x=x, y=y, horizontal=magnitude, excitation_direction=own,
+                    vertical=vertical, gravity=gravity,
+                    directions=screen_directions(body, magnitude, vertical, count, gravity),
+                    at_excitation=initial_motion(body, magnitude, own, vertical, gravity),
+                )
+            )  # fmt: skip
+    return cases
+
+
+def threshold_curve(
+    body: Body, vertical: float = 0.0, gravity: float = GRAVITY, points: int = 720
+) -> tuple[np.ndarray, np.ndarray]:
+    """The uplift threshold a*(phi) [m/s^2] as a closed curve, for figures.
+
+    ``points`` directions evenly over 0-360 deg, plus those in which the
+    ray from G's projection along -u meets a corner of a box's base (the
+    curve's kinks), sorted; the first point is repeated at 2 pi.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        Directions phi [rad] and a*(phi) [m/s^2].
+    """
+    directions = np.linspace(0.0, 2.0 * math.pi, points, endpoint=False)
+    if isinstance(body.shape, Box):
+        offsets = np.asarray(body.centre[:2]) - body.shape.base_corners()[:, :2]
+        kinks = np.arctan2(offsets[:, 1], offsets[:, 0]) % (2.0 * math.pi)
+        directions = np.union1d(directions, kinks)
+    directions = np.append(directions, 2.0 * math.pi)
+    thresholds = np.array([uplift_threshold(body, phi, vertical, gravity) for phi in directions])
+    return directions, thresholds

@@ -405,7 +405,8 @@ def initial_motion(
     )
 
 
-def _vertical_label(name: str, vertical: float, both: bool) -> str:
+def vertical_label(name: str, vertical: float, both: bool) -> str:
+    """The case name of an excitation: ``"<name> (a_v down)"``/``"(a_v up)"`` when ``both``."""
     if not both:
         return name
     return f"{name} (a_v {'up' if vertical < 0 else 'down'})"
@@ -444,7 +445,7 @@ def screen(
             excitation = replace(excitation, vertical_senses=vertical_senses)
         verticals = excitation.verticals()
         for vertical in verticals:
-            label = _vertical_label(excitation.name, vertical, len(verticals) > 1)
+            label = vertical_label(excitation.name, vertical, len(verticals) > 1)
             for sense in (1, -1):
                 cases.append(
                     initial_motion(stack, excitation.horizontal, vertical, sense, gravity, label)

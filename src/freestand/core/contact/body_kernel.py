@@ -1,0 +1,758 @@
+"""The compiled contact problem of one rigid body on the flat support (3-D).
+
+The body (:class:`freestand.core.body.Body`, a box or a cylinder) has the
+state ``y = (r, q, v, omega)``: the centre of gravity r [m], the orientation
+as a unit quaternion q = (w, x, y, z) [-] (body frame to support frame), the
+velocity v [m/s] of G and the angular velocity omega [rad/s], both in the
+support's frame (x, y horizontal, z up; ``docs/nomenclature.md``). The
+generalised acceleration ``x'' = (a, alpha)`` obeys Newton-Euler with the
+contact wrench::
+
+    M x'' = f_0 + W lambda + friction,  M = diag(m 1, I_w),  I_w = R I R^T
+    f_0 = (m g_e, -omega x I_w omega),  g_e = (-a_x, -a_y, -(g - a_v))
+
+(a_v the downward support acceleration; the support's motion enters as the
+inertial force, as in the planar engine).
+
+**Contact patches.** What touches the support is one *patch*:
+
+========  ==================================  ====================  =================
+patch     when                                normal rows           tangential rows
+========  ==================================  ====================  =================
+FACE      the base lies flat                  3: z of the base      3: horizontal
+                                              centre, tilt about    velocity of the
+                                              x and y               base centre, twist
+EDGE      two adjacent corners (box)          2: the corners' z     3: as FACE, at the
+                                                                    edge's midpoint
+POINT     one corner, or the lowest rim       1                     2: the material
+          point (cylinder)                                          point's horizontal
+                                                                    velocity (rolling)
+FREE      nothing                             0                     0
+========  ==================================  ====================  =================
+
+A row is a generalised direction ``w`` (6,) with the row's acceleration
+``w . x'' + b`` (``b`` its velocity-product bias); a point row at the arm d
+from G in direction e is ``w = (e, d x e)``, ``b = e . (omega x (omega x d))``,
+an angular row about e is ``w = (0, e)``. The twist row of a FACE or EDGE is
+``(0, rho e_z)`` so that its velocity ``rho omega_z`` and its multiplier
+(torque / rho) are in m/s and N.
+
+**Friction** (Coulomb, static mu_0 to hold, kinetic mu to slide). POINT: the
+circular cone ``|f_t| <= mu_0 N``, sliding ``f_t = -mu N s/|s|`` (s the slip
+velocity; maximal dissipation). FACE and EDGE: force and twist torque with a
+uniform pressure over the contact (Goyal, Ruina and Papadopoulos 1991, Wear
+143, 307-330) and the ellipsoidal limit surface of Howe and Cutkosky 1996 (Int.
+J. Robotics Research 15(6), 557-572): with the scaled slip velocity
+``s = (v_c,x, v_c,y, rho omega_z)`` and ``f_t = (F_x, F_y, T_z / rho)``, hold
+while ``|f_t| <= mu_0 N`` and slide with ``f_t = -mu N s/|s|``. ``rho`` is the
+mean distance of the contact from its centre (disc (2/3) R, annulus
+(2/3)(R^3 - r^3)/(R^2 - r^2), rectangle its closed form, edge L/4): the
+pure-twist limit torque is ``mu N rho`` (uniform pressure) and pure
+translation is Coulomb's circular cone exactly.
+
+**The rolling rim point.** A tilted cylinder touches at the lowest point of
+its base circle, ``s* = -R (R_31, R_32, 0) / sin(tilt)`` in the body frame.
+It moves along the rim; by the envelope theorem the gap's rate is the
+material point's, and its second derivative gets the extra term
+``-R (e_z . (omega x R t))^2 / sin(tilt)`` (t the rim tangent at s*), the
+tangential rows ``e . (omega x R s*')`` with ``s*' = R psi' t``,
+``psi' = -e_z . (omega x R t) / sin(tilt)``.
+
+Everything here is compiled (numba) and works on fixed-size arrays; the
+Python side builds the parameter vector with :func:`body_parameters`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba as nb
+import numpy as np
+
+from freestand.core.body import Body, Box
+from freestand.core.contact.engine import solve_in_place
+
+# --- the parameter vector -----------------------------------------------------------------------
+
+P_MASS = 0
+P_INERTIA = 1  # 9 values, body frame, about G, row-major
+P_INVERSE = 10  # 9 values, the inverse
+P_CENTRE = 19  # 3 values, G in the body frame
+P_SHAPE = 22  # 0 box, 1 cylinder
+P_HALF_X = 23  # box half-width b_x, or the cylinder's radius R
+P_HALF_Y = 24  # box half-width b_y, or R
+P_MU_STATIC = 25
+P_MU_KINETIC = 26
+P_RHO_FACE = 27  # twist radius of the base [m]
+P_RHO_EDGE_X = 28  # of an edge along x (b_x / 2)
+P_RHO_EDGE_Y = 29  # of an edge along y (b_y / 2)
+P_GRAVITY = 30
+P_HEIGHT = 31
+P_SIZE = 32
+
+SHAPE_BOX = 0
+SHAPE_CYLINDER = 1
+
+# --- patches and modes ---------------------------------------------------------------------------
+
+FREE = 0
+POINT = 1
+EDGE = 2
+FACE = 3
+PATCH_NAMES = ("free", "point", "edge", "face")
+
+# mode (int64, 3): patch kind, index (corner or edge of a box), tangential state
+M_KIND = 0
+M_INDEX = 1
+M_SLIP = 2  # 0 stick, 1 slip
+# mode data (float64, 4): rim angle psi of a cylinder's pivot [rad], slip direction (3)
+D_PSI = 0
+D_SLIP = 1
+
+STATE_SIZE = 13  # r (3), q (4), v (3), omega (3)
+
+# row scratch: W (6, 6) columns, bias (6); normal rows first, then tangential ones
+TILT_EPSILON = 1e-9  # sin(tilt) below which a cylinder counts as flat for its rim point
+
+
+def rectangle_twist_radius(half_x: float, half_y: float) -> float:
+    """Mean distance [m] from the centre of the rectangle |x| <= p, |y| <= q.
+
+    ``(2 p q d + p^3 ln((q + d)/p) + q^3 ln((p + d)/q)) / (6 p q)``,
+    ``d = sqrt(p^2 + q^2)``: the pure-twist friction torque of a uniformly
+    loaded rectangle is mu N times this (Goyal, Ruina and Papadopoulos 1991).
+    """
+    p, q = half_x, half_y
+    d = math.hypot(p, q)
+    integral = 2.0 * p * q * d + p**3 * math.log((q + d) / p) + q**3 * math.log((p + d) / q)
+    return integral / (6.0 * p * q)
+
+
+def annulus_twist_radius(radius: float, inner_radius: float = 0.0) -> float:
+    """Mean distance [m] from the centre of an annulus: (2/3)(R^3 - r^3)/(R^2 - r^2)."""
+    return 2.0 / 3.0 * (radius**3 - inner_radius**3) / (radius**2 - inner_radius**2)
+
+
+def body_parameters(body: Body, gravity: float) -> np.ndarray:
+    """The parameter vector of the compiled kernel for ``body`` (SI units)."""
+    out = np.zeros(P_SIZE)
+    out[P_MASS] = body.mass
+    inertia = np.asarray(body.inertia, dtype=float)
+    out[P_INERTIA : P_INERTIA + 9] = inertia.reshape(-1)
+    out[P_INVERSE : P_INVERSE + 9] = np.linalg.inv(inertia).reshape(-1)
+    out[P_CENTRE : P_CENTRE + 3] = body.centre
+    shape = body.shape
+    if isinstance(shape, Box):
+        half_x, half_y = 0.5 * shape.size[0], 0.5 * shape.size[1]
+        out[P_SHAPE] = SHAPE_BOX
+        out[P_RHO_FACE] = rectangle_twist_radius(half_x, half_y)
+    else:
+        half_x = half_y = shape.radius
+        out[P_SHAPE] = SHAPE_CYLINDER
+        out[P_RHO_FACE] = annulus_twist_radius(shape.radius, shape.inner_radius)
+    out[P_HALF_X] = half_x
+    out[P_HALF_Y] = half_y
+    out[P_RHO_EDGE_X] = 0.5 * half_x
+    out[P_RHO_EDGE_Y] = 0.5 * half_y
+    out[P_MU_STATIC] = body.friction.static
+    out[P_MU_KINETIC] = body.friction.kinetic
+    out[P_GRAVITY] = gravity
+    out[P_HEIGHT] = shape.height
+    return out
+
+
+# --- small vector algebra ------------------------------------------------------------------------
+
+
+@nb.njit(cache=True, inline="always")
+def cross(a0, a1, a2, b0, b1, b2):
+    """a x b as a tuple."""
+    return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
+
+
+@nb.njit(cache=True)
+def rotation_matrix(y, out):
+    """The rotation matrix R (3, 3) of the unit quaternion ``y[3:7]`` (w, x, y, z)."""
+    w, x, yy, z = y[3], y[4], y[5], y[6]
+    out[0, 0] = 1.0 - 2.0 * (yy * yy + z * z)
+    out[0, 1] = 2.0 * (x * yy - w * z)
+    out[0, 2] = 2.0 * (x * z + w * yy)
+    out[1, 0] = 2.0 * (x * yy + w * z)
+    out[1, 1] = 1.0 - 2.0 * (x * x + z * z)
+    out[1, 2] = 2.0 * (yy * z - w * x)
+    out[2, 0] = 2.0 * (x * z - w * yy)
+    out[2, 1] = 2.0 * (yy * z + w * x)
+    out[2, 2] = 1.0 - 2.0 * (x * x + yy * yy)
+
+
+@nb.njit(cache=True)
+def world_inverse_inertia(par, rot, out):
+    """I_w^-1 = R I^-1 R^T (3, 3) [1/(kg m^2)]."""
+    for i in range(3):
+        for j in range(3):
+            total = 0.0
+            for k in range(3):
+                for m in range(3):
+                    total += rot[i, k] * par[P_INVERSE + 3 * k + m] * rot[j, m]
+            out[i, j] = total
+
+
+@nb.njit(cache=True)
+def arm(par, rot, sx, sy, sz, out):
+    """d = R (s - c) [m]: from G to the body-frame point s, in the support frame."""
+    px = sx - par[P_CENTRE]
+    py = sy - par[P_CENTRE + 1]
+    pz = sz - par[P_CENTRE + 2]
+    for i in range(3):
+        out[i] = rot[i, 0] * px + rot[i, 1] * py + rot[i, 2] * pz
+
+
+@nb.njit(cache=True)
+def sin_tilt(rot):
+    """sin of the tilt (angle of the body's z axis from the vertical) [-]."""
+    return math.sqrt(rot[2, 0] ** 2 + rot[2, 1] ** 2)
+
+
+@nb.njit(cache=True)
+def box_corner(par, k):
+    """Base corner k (0..3, counter-clockwise from (+b_x, +b_y)) in the body frame."""
+    sx = par[P_HALF_X] if k == 0 or k == 3 else -par[P_HALF_X]
+    sy = par[P_HALF_Y] if k == 0 or k == 1 else -par[P_HALF_Y]
+    return sx, sy
+
+
+@nb.njit(cache=True)
+def rim_angle(par, rot, psi_stored):
+    """Body-frame angle psi [rad] of the cylinder's lowest rim point.
+
+    ``(cos psi, sin psi) = -(R_31, R_32) / sin(tilt)``; the stored angle when
+    the base is flat (the pivot chosen when the body left the face).
+    """
+    s = sin_tilt(rot)
+    if s <= TILT_EPSILON:
+        return psi_stored
+    return math.atan2(-rot[2, 1], -rot[2, 0])
+
+
+# --- support motion -----------------------------------------------------------------------------
+
+
+@nb.njit(cache=True)
+def support_acceleration(record, dt, t):
+    """(a_x, a_y, a_v) [m/s^2] at ``t`` [s]: linear between samples, zero outside.
+
+    ``record`` is (3, n): x, y and the downward vertical acceleration a_v.
+    """
+    count = record.shape[1]
+    position = t / dt
+    if position < 0.0 or position > count - 1:
+        return 0.0, 0.0, 0.0
+    index = min(int(position), count - 2)
+    f = position - index
+    a_x = (1.0 - f) * record[0, index] + f * record[0, index + 1]
+    a_y = (1.0 - f) * record[1, index] + f * record[1, index + 1]
+    a_v = (1.0 - f) * record[2, index] + f * record[2, index + 1]
+    return a_x, a_y, a_v
+
+
+@nb.njit(cache=True)
+def applied_wrench(par, y, inv_inertia, rot, a_x, a_y, a_v, out):
+    """f_0 = (m g_e, -omega x I_w omega) (6,) [N, N m]."""
+    m = par[P_MASS]
+    out[0] = -m * a_x
+    out[1] = -m * a_y
+    out[2] = -m * (par[P_GRAVITY] - a_v)
+    # I_w omega = R I R^T omega
+    wx, wy, wz = y[10], y[11], y[12]
+    bx = rot[0, 0] * wx + rot[1, 0] * wy + rot[2, 0] * wz
+    by = rot[0, 1] * wx + rot[1, 1] * wy + rot[2, 1] * wz
+    bz = rot[0, 2] * wx + rot[1, 2] * wy + rot[2, 2] * wz
+    hx = par[P_INERTIA] * bx + par[P_INERTIA + 1] * by + par[P_INERTIA + 2] * bz
+    hy = par[P_INERTIA + 3] * bx + par[P_INERTIA + 4] * by + par[P_INERTIA + 5] * bz
+    hz = par[P_INERTIA + 6] * bx + par[P_INERTIA + 7] * by + par[P_INERTIA + 8] * bz
+    lx = rot[0, 0] * hx + rot[0, 1] * hy + rot[0, 2] * hz
+    ly = rot[1, 0] * hx + rot[1, 1] * hy + rot[1, 2] * hz
+    lz = rot[2, 0] * hx + rot[2, 1] * hy + rot[2, 2] * hz
+    gx, gy, gz = cross(wx, wy, wz, lx, ly, lz)
+    out[3] = -gx
+    out[4] = -gy
+    out[5] = -gz
+
+
+@nb.njit(cache=True)
+def apply_inverse_mass(par, inv_inertia, w, out):
+    """M^-1 w (6,)."""
+    inv_m = 1.0 / par[P_MASS]
+    out[0] = w[0] * inv_m
+    out[1] = w[1] * inv_m
+    out[2] = w[2] * inv_m
+    for i in range(3):
+        out[3 + i] = inv_inertia[i, 0] * w[3] + inv_inertia[i, 1] * w[4] + inv_inertia[i, 2] * w[5]
+
+
+# --- rows of a patch ----------------------------------------------------------------------------
+
+
+@nb.njit(cache=True)
+def point_velocity(y, d, e0, e1, e2):
+    """e . (v + omega x d) [m/s]: the velocity of the material point at arm d along e."""
+    cx, cy, cz = cross(y[10], y[11], y[12], d[0], d[1], d[2])
+    return e0 * (y[7] + cx) + e1 * (y[8] + cy) + e2 * (y[9] + cz)
+
+
+@nb.njit(cache=True)
+def _point_row(y, d, e0, e1, e2, column, rows, bias, k):
+    """Row k: the point at arm d along the unit e.
+
+    ``w = (e, d x e)``, bias ``e . (omega x (omega x d))`` plus ``column``.
+    """
+    rows[0, k] = e0
+    rows[1, k] = e1
+    rows[2, k] = e2
+    tx, ty, tz = cross(d[0], d[1], d[2], e0, e1, e2)
+    rows[3, k] = tx
+    rows[4, k] = ty
+    rows[5, k] = tz
+    wx, wy, wz = y[10], y[11], y[12]
+    ux, uy, uz = cross(wx, wy, wz, d[0], d[1], d[2])
+    cx, cy, cz = cross(wx, wy, wz, ux, uy, uz)
+    bias[k] = e0 * cx + e1 * cy + e2 * cz + column
+
+
+@nb.njit(cache=True)
+def _angular_row(e0, e1, e2, rows, bias, k):
+    """Row k: the angular velocity about the unit e, ``w = (0, e)``, no bias."""
+    for i in range(3):
+        rows[i, k] = 0.0
+    rows[3, k] = e0
+    rows[4, k] = e1
+    rows[5, k] = e2
+    bias[k] = 0.0
+
+
+@nb.njit(cache=True)
+def rim_terms(par, y, rot, psi):
+    """The moving rim point's extra acceleration terms (z, x, y) [m/s^2].
+
+    With t the rim tangent at the contact point, ``psi' = -e_z.(omega x R t)/sin(tilt)``
+    and ``R s*' = R_b psi' R t``: the terms are ``omega x (R s*')``; zero when
+    the base is flat (the contact point then does not move).
+    """
+    s = sin_tilt(rot)
+    if s <= TILT_EPSILON:
+        return 0.0, 0.0, 0.0
+    tx = -math.sin(psi)
+    ty = math.cos(psi)
+    t0 = rot[0, 0] * tx + rot[0, 1] * ty
+    t1 = rot[1, 0] * tx + rot[1, 1] * ty
+    t2 = rot[2, 0] * tx + rot[2, 1] * ty
+    wx, wy, wz = y[10], y[11], y[12]
+    cx, cy, cz = cross(wx, wy, wz, t0, t1, t2)
+    rate = -cz / s
+    scale = par[P_HALF_X] * rate
+    ex, ey, ez = cross(wx, wy, wz, scale * t0, scale * t1, scale * t2)
+    return ez, ex, ey
+
+
+@nb.njit(cache=True)
+def patch_rows(par, y, rot, kind, index, psi, normal, nbias, tangent, tbias, arms):
+    """Fill the rows of a patch; returns (normal rows, tangential rows, twist radius).
+
+    ``normal`` (6, 3) and ``tangent`` (6, 3) hold the rows as columns, ``nbias``
+    and ``tbias`` their biases, ``arms`` (4, 3) the arms of the patch's points:
+    the normal points (EDGE: its two corners; POINT: the point; FACE: the base
+    centre) then, in row 3, the patch centre of the tangential rows.
+    """
+    d = arms[3]
+    if kind == FREE:
+        return 0, 0, 0.0
+    if kind == POINT:
+        if par[P_SHAPE] == SHAPE_BOX:
+            sx, sy = box_corner(par, index)
+            arm(par, rot, sx, sy, 0.0, arms[0])
+            zt, xt, yt = 0.0, 0.0, 0.0
+        else:
+            radius = par[P_HALF_X]
+            arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, arms[0])
+            zt, xt, yt = rim_terms(par, y, rot, psi)
+        for i in range(3):
+            d[i] = arms[0, i]
+        _point_row(y, arms[0], 0.0, 0.0, 1.0, zt, normal, nbias, 0)
+        _point_row(y, d, 1.0, 0.0, 0.0, xt, tangent, tbias, 0)
+        _point_row(y, d, 0.0, 1.0, 0.0, yt, tangent, tbias, 1)
+        return 1, 2, 0.0
+    if kind == EDGE:
+        ax, ay = box_corner(par, index)
+        bx, by = box_corner(par, (index + 1) % 4)
+        arm(par, rot, ax, ay, 0.0, arms[0])
+        arm(par, rot, bx, by, 0.0, arms[1])
+        arm(par, rot, 0.5 * (ax + bx), 0.5 * (ay + by), 0.0, d)
+        _point_row(y, arms[0], 0.0, 0.0, 1.0, 0.0, normal, nbias, 0)
+        _point_row(y, arms[1], 0.0, 0.0, 1.0, 0.0, normal, nbias, 1)
+        rho = par[P_RHO_EDGE_X] if index % 2 == 0 else par[P_RHO_EDGE_Y]
+        n_normal = 2
+    else:  # FACE
+        arm(par, rot, 0.0, 0.0, 0.0, arms[0])
+        for i in range(3):
+            d[i] = arms[0, i]
+        _point_row(y, d, 0.0, 0.0, 1.0, 0.0, normal, nbias, 0)
+        _angular_row(1.0, 0.0, 0.0, normal, nbias, 1)
+        _angular_row(0.0, 1.0, 0.0, normal, nbias, 2)
+        rho = par[P_RHO_FACE]
+        n_normal = 3
+    _point_row(y, d, 1.0, 0.0, 0.0, 0.0, tangent, tbias, 0)
+    _point_row(y, d, 0.0, 1.0, 0.0, 0.0, tangent, tbias, 1)
+    _angular_row(0.0, 0.0, rho, tangent, tbias, 2)
+    return n_normal, 3, rho
+
+
+@nb.njit(cache=True)
+def normal_total(kind, lam):
+    """The patch's total normal force N [N] from its normal multipliers."""
+    if kind == POINT:
+        return lam[0]
+    if kind == EDGE:
+        return lam[0] + lam[1]
+    if kind == FACE:
+        return lam[0]
+    return 0.0
+
+
+@nb.njit(cache=True)
+def tangential_velocity(y, tangent, n_tangent, out):
+    """The tangential rows' velocities s (scaled slip velocity) [m/s]."""
+    for k in range(n_tangent):
+        total = 0.0
+        for i in range(3):
+            total += tangent[i, k] * y[7 + i] + tangent[3 + i, k] * y[10 + i]
+        out[k] = total
+    return n_tangent
+
+
+# --- the solve of one mode ----------------------------------------------------------------------
+
+
+@nb.njit(cache=True)
+def solve_mode(par, inv_inertia, base, use_bias, slip, direction, normal, nbias, n_normal,
+               tangent, tbias, n_tangent, work, matrix, rhs, acc, lam):  # fmt: skip
+    """Solve the contact problem of one mode; False when its system is singular.
+
+    Held rows: the normal rows, and the tangential rows when sticking. A
+    sliding patch carries ``f_t = -mu N u`` (``direction`` = u, unit, on the
+    tangential rows), which adds ``-mu u`` to every normal column.
+
+    Acceleration level (``use_bias``): ``base = M^-1 f_0``, the held rows'
+    accelerations ``w . x'' + b`` vanish, ``acc = x''`` and ``lam`` are forces.
+    Velocity level (an impact, no bias): ``base`` is the velocity before, the
+    held rows' velocities after vanish, ``acc`` is the velocity after and
+    ``lam`` are impulses [N s]. ``lam`` holds the normal multipliers, then
+    the tangential ones (sticking, or ``-mu N u`` when sliding).
+    """
+    mu = par[P_MU_KINETIC]
+    held = n_normal + (n_tangent if slip == 0 else 0)
+    # columns: generalised force per multiplier, work[0:held]
+    for j in range(held):
+        col = work[j]
+        if j < n_normal:
+            for i in range(6):
+                col[i] = normal[i, j]
+            if slip == 1 and (j == 0 or n_normal == 2):  # a FACE's couples carry no friction
+                for k in range(n_tangent):
+                    for i in range(6):
+                        col[i] -= mu * direction[k] * tangent[i, k]
+        else:
+            for i in range(6):
+                col[i] = tangent[i, j - n_normal]
+    minv = base
+    for j in range(held):
+        apply_inverse_mass(par, inv_inertia, work[j], work[7 + j])  # M^-1 column
+    for r in range(held):
+        total = 0.0
+        if use_bias:
+            total = nbias[r] if r < n_normal else tbias[r - n_normal]
+        for i in range(6):
+            w_ri = normal[i, r] if r < n_normal else tangent[i, r - n_normal]
+            total += w_ri * minv[i]
+        rhs[r] = -total
+        for j in range(held):
+            entry = 0.0
+            for i in range(6):
+                w_ri = normal[i, r] if r < n_normal else tangent[i, r - n_normal]
+                entry += w_ri * work[7 + j][i]
+            matrix[r, j] = entry
+    if held > 0 and not solve_in_place(matrix, rhs, held):
+        return False
+    for i in range(6):
+        acc[i] = minv[i]
+    for j in range(held):
+        lam[j] = rhs[j]
+        for i in range(6):
+            acc[i] += rhs[j] * work[7 + j][i]
+    if slip == 1:
+        total = normal_total_rows(n_normal, lam)
+        for k in range(n_tangent):
+            lam[n_normal + k] = -mu * total * direction[k]
+    return True
+
+
+@nb.njit(cache=True, inline="always")
+def normal_total_rows(n_normal, lam):
+    """Total normal force of a patch from its row count (3 rows: FACE, lam[0])."""
+    if n_normal == 2:
+        return lam[0] + lam[1]
+    if n_normal >= 1:
+        return lam[0]
+    return 0.0
+
+
+@nb.njit(cache=True)
+def row_acceleration(rows, bias, k, acc):
+    """w_k . x'' + b_k [m/s^2]."""
+    total = bias[k]
+    for i in range(6):
+        total += rows[i, k] * acc[i]
+    return total
+
+
+# --- admissibility -------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True)
+def face_centre_of_pressure(rot, lam):
+    """Centre of pressure (body frame x, y) [m] of a FACE from (N, M_x, M_y)."""
+    n = lam[0]
+    if n <= 0.0:
+        return 0.0, 0.0
+    px = -lam[2] / n
+    py = lam[1] / n
+    # the body is flat: its frame is a rotation about z
+    return rot[0, 0] * px + rot[1, 0] * py, rot[0, 1] * px + rot[1, 1] * py
+
+
+@nb.njit(cache=True)
+def normal_margin(par, rot, kind, lam):
+    """The smallest normal admissibility margin of a patch [N] (>= 0 admissible).
+
+    POINT: N; EDGE: both corner forces; FACE: N and the centre of pressure
+    inside the base, as ``b N - |moment|`` per side (box) or ``R N - |M|``
+    (disc), linear in the multipliers.
+    """
+    if kind == POINT:
+        return lam[0]
+    if kind == EDGE:
+        return min(lam[0], lam[1])
+    if kind == FACE:
+        n = lam[0]
+        # moments about the base centre in the body frame
+        mx = rot[0, 0] * lam[1] + rot[1, 0] * lam[2]
+        my = rot[0, 1] * lam[1] + rot[1, 1] * lam[2]
+        if par[P_SHAPE] == SHAPE_BOX:
+            return min(n, par[P_HALF_X] * n - abs(my), par[P_HALF_Y] * n - abs(mx))
+        return min(n, par[P_HALF_X] * n - math.hypot(mx, my))
+    return 0.0
+
+
+@nb.njit(cache=True)
+def friction_margin(par, n_normal, n_tangent, lam):
+    """mu_0 N - |f_t| [N] of a sticking patch (>= 0 holds)."""
+    total = normal_total_rows(n_normal, lam)
+    size = 0.0
+    for k in range(n_tangent):
+        size += lam[n_normal + k] ** 2
+    return par[P_MU_STATIC] * total - math.sqrt(size)
+
+
+# --- scratch, the state's rate ------------------------------------------------------------------
+
+SC_ROT = 0
+SC_INV = 1
+SC_F0 = 2
+SC_BASE = 3
+SC_NORMAL = 4
+SC_NBIAS = 5
+SC_TANGENT = 6
+SC_TBIAS = 7
+SC_ARMS = 8
+SC_WORK = 9
+SC_MATRIX = 10
+SC_RHS = 11
+SC_ACC = 12
+SC_LAM = 13
+SC_SVEL = 14
+SC_SACC = 15
+SC_DIR = 16
+
+SLIP_FLOOR = 1e-12  # [m/s] below which a slip velocity has no direction of its own
+
+
+@nb.njit(cache=True)
+def new_scratch():
+    """The work arrays of the kernel, as one tuple (see the SC_* indices)."""
+    return (
+        np.zeros((3, 3)), np.zeros((3, 3)), np.zeros(6), np.zeros(6),
+        np.zeros((6, 3)), np.zeros(3), np.zeros((6, 3)), np.zeros(3), np.zeros((4, 3)),
+        np.zeros((13, 6)), np.zeros((6, 6)), np.zeros(6), np.zeros(6), np.zeros(6),
+        np.zeros(3), np.zeros(3), np.zeros(3),
+    )  # fmt: skip
+
+
+@nb.njit(cache=True)
+def pivot_angle(par, y, rot, kind, psi_stored):
+    """The rim angle of a cylinder's POINT patch (stored when flat), else the stored value."""
+    if kind == POINT and par[P_SHAPE] == SHAPE_CYLINDER:
+        return rim_angle(par, rot, psi_stored)
+    return psi_stored
+
+
+@nb.njit(cache=True)
+def prepare(par, record, dt, t, y, kind, index, psi, sc):
+    """Rotation, inverse inertia, applied wrench, M^-1 f_0 and the patch's rows at ``t``.
+
+    Returns (normal rows, tangential rows).
+    """
+    rot = sc[SC_ROT]
+    rotation_matrix(y, rot)
+    world_inverse_inertia(par, rot, sc[SC_INV])
+    a_x, a_y, a_v = support_acceleration(record, dt, t)
+    applied_wrench(par, y, sc[SC_INV], rot, a_x, a_y, a_v, sc[SC_F0])
+    apply_inverse_mass(par, sc[SC_INV], sc[SC_F0], sc[SC_BASE])
+    n_normal, n_tangent, _ = patch_rows(
+        par,
+        y,
+        rot,
+        kind,
+        index,
+        psi,
+        sc[SC_NORMAL],
+        sc[SC_NBIAS],
+        sc[SC_TANGENT],
+        sc[SC_TBIAS],
+        sc[SC_ARMS],
+    )
+    return n_normal, n_tangent
+
+
+@nb.njit(cache=True)
+def slip_direction(y, n_tangent, data, sc):
+    """The sliding direction u: the slip velocity's, or the stored one when it has none."""
+    svel = sc[SC_SVEL]
+    direction = sc[SC_DIR]
+    tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
+    size = 0.0
+    for k in range(n_tangent):
+        size += svel[k] ** 2
+    size = math.sqrt(size)
+    for k in range(n_tangent):
+        direction[k] = svel[k] / size if size > SLIP_FLOOR else data[D_SLIP + k]
+    return direction
+
+
+@nb.njit(cache=True)
+def solve_at(par, record, dt, t, y, mode, data, sc):
+    """Solve the held mode at (t, y): fills sc[SC_ACC] and sc[SC_LAM]; False if singular.
+
+    Returns (ok, normal rows, tangential rows).
+    """
+    kind = mode[M_KIND]
+    rot = sc[SC_ROT]
+    rotation_matrix(y, rot)
+    psi = pivot_angle(par, y, rot, kind, data[D_PSI])
+    n_normal, n_tangent = prepare(par, record, dt, t, y, kind, mode[M_INDEX], psi, sc)
+    direction = slip_direction(y, n_tangent, data, sc) if mode[M_SLIP] == 1 else sc[SC_DIR]
+    ok = solve_mode(par, sc[SC_INV], sc[SC_BASE], True, mode[M_SLIP], direction, sc[SC_NORMAL],
+                    sc[SC_NBIAS], n_normal, sc[SC_TANGENT], sc[SC_TBIAS], n_tangent,
+                    sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS], sc[SC_ACC], sc[SC_LAM])  # fmt: skip
+    return ok, n_normal, n_tangent
+
+
+@nb.njit(cache=True)
+def rate(par, record, dt, t, y, mode, data, sc, ydot):
+    """y' of the held mode at (t, y); False when the mode's system is singular.
+
+    ``r' = v``, ``q' = (0, omega) q / 2`` (omega in the support frame),
+    ``(v', omega') = x''``.
+    """
+    ok, _, _ = solve_at(par, record, dt, t, y, mode, data, sc)
+    acc = sc[SC_ACC]
+    for i in range(3):
+        ydot[i] = y[7 + i]
+        ydot[7 + i] = acc[i]
+        ydot[10 + i] = acc[3 + i]
+    wx, wy, wz = y[10], y[11], y[12]
+    q0, q1, q2, q3 = y[3], y[4], y[5], y[6]
+    cx, cy, cz = cross(wx, wy, wz, q1, q2, q3)
+    ydot[3] = -0.5 * (wx * q1 + wy * q2 + wz * q3)
+    ydot[4] = 0.5 * (q0 * wx + cx)
+    ydot[5] = 0.5 * (q0 * wy + cy)
+    ydot[6] = 0.5 * (q0 * wz + cz)
+    return ok
+
+
+# --- gaps of the base ---------------------------------------------------------------------------
+
+
+@nb.njit(cache=True)
+def corner_gap(par, y, rot, k, d):
+    """(gap [m], gap velocity [m/s]) of the box's base corner k; its arm in ``d``."""
+    sx, sy = box_corner(par, k)
+    arm(par, rot, sx, sy, 0.0, d)
+    return y[2] + d[2], point_velocity(y, d, 0.0, 0.0, 1.0)
+
+
+@nb.njit(cache=True)
+def rim_gap(par, y, rot, d):
+    """(gap [m], gap velocity [m/s], psi) of the cylinder's lowest rim point; arm in ``d``.
+
+    Flat base: the rim point whose normal velocity is the smallest.
+    """
+    radius = par[P_HALF_X]
+    s = sin_tilt(rot)
+    if s > TILT_EPSILON:
+        psi = math.atan2(-rot[2, 1], -rot[2, 0])
+    else:
+        # flat: (cos phi, sin phi) = (omega_y, -omega_x)/|omega_h| in the support frame
+        wx, wy = y[10], y[11]
+        size = math.hypot(wx, wy)
+        if size == 0.0:
+            psi = 0.0
+        else:
+            phi = math.atan2(-wx / size, wy / size)
+            yaw = math.atan2(rot[1, 0], rot[0, 0])
+            psi = phi - yaw
+    arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
+    return y[2] + d[2], point_velocity(y, d, 0.0, 0.0, 1.0), psi
+
+
+@nb.njit(cache=True)
+def flat_gap(par, y, rot):
+    """Largest gap [m] of the base's outline.
+
+    Box: its highest corner; cylinder: 2 R sin(tilt) above the lowest rim point.
+    """
+    if par[P_SHAPE] == SHAPE_BOX:
+        d = np.empty(3)
+        highest = -1e300
+        for k in range(4):
+            g, _ = corner_gap(par, y, rot, k, d)
+            highest = max(highest, g)
+        return highest
+    d = np.empty(3)
+    g, _, _ = rim_gap(par, y, rot, d)
+    return g + 2.0 * par[P_HALF_X] * sin_tilt(rot)
+
+
+@nb.njit(cache=True)
+def energy(par, y):
+    """Kinetic plus potential energy m g z_G [J] in the support's frame (no excitation)."""
+    rot = np.empty((3, 3))
+    rotation_matrix(y, rot)
+    m = par[P_MASS]
+    kinetic = 0.5 * m * (y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
+    # omega in the body frame
+    b = np.empty(3)
+    for i in range(3):
+        b[i] = rot[0, i] * y[10] + rot[1, i] * y[11] + rot[2, i] * y[12]
+    for i in range(3):
+        for j in range(3):
+            kinetic += 0.5 * b[i] * par[P_INERTIA + 3 * i + j] * b[j]
+    return kinetic + m * par[P_GRAVITY] * y[2]

@@ -1,0 +1,490 @@
+"""The choice of the contact mode of one body, and its impact law (compiled).
+
+One enumeration serves both levels, as the planar kernel
+(:mod:`freestand.core.contact.engine`) does for stacks:
+
+- **acceleration level** (a state): the candidates are the patches whose
+  points all touch (gap within ``gap_tol``, gap velocity within
+  ``velocity_tol``), then FREE; each with its tangential state (stick while
+  the slip velocity is within ``velocity_tol``; then slip, kinetic along the
+  slip velocity, or starting from rest in the direction of the fixed point
+  ``u = s'(u) / |s'(u)|``, the slip acceleration under the friction it
+  produces). A candidate is admissible when its normal forces are
+  compressive (a FACE's centre of pressure inside the base), its sticking
+  friction inside the static cone or limit surface, and every touching point
+  it does not hold accelerates away. Choice rule: static friction holds
+  where it can, then the most closed patch (FACE, EDGE, POINT, FREE).
+- **velocity level** (an impact): the same candidates among the touching
+  points, impulses instead of forces, velocities after the impact instead of
+  accelerations: plastic at the patch's points (their normal velocity after
+  is zero), every other touching point separates, the tangential impulse
+  sticks inside the static cone or slides with the kinetic one. An impulse at
+  one point conserves the angular momentum about it; in a plane this is
+  Housner's law (1963).
+
+A cylinder's flat base offers FACE and POINT about one rim point: at a state,
+the rim point the base is turning about (its normal velocity the smallest)
+or, from rest, the point towards which the FACE's centre of pressure left the
+base; after a landing, the rim point about which the body turns after the
+impact (its angular velocity after has no radial component there, found by
+a 1-D root search started opposite the point it landed from).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba as nb
+import numpy as np
+
+from freestand.core.contact.body_kernel import (
+    D_PSI,
+    D_SLIP,
+    EDGE,
+    FACE,
+    FREE,
+    M_INDEX,
+    M_KIND,
+    M_SLIP,
+    P_GRAVITY,
+    P_HALF_X,
+    P_MASS,
+    P_SHAPE,
+    POINT,
+    SC_ACC,
+    SC_ARMS,
+    SC_BASE,
+    SC_DIR,
+    SC_INV,
+    SC_LAM,
+    SC_MATRIX,
+    SC_NBIAS,
+    SC_NORMAL,
+    SC_RHS,
+    SC_ROT,
+    SC_SACC,
+    SC_SVEL,
+    SC_TANGENT,
+    SC_TBIAS,
+    SC_WORK,
+    SHAPE_BOX,
+    arm,
+    corner_gap,
+    cross,
+    friction_margin,
+    normal_margin,
+    patch_rows,
+    prepare,
+    rim_gap,
+    sin_tilt,
+    solve_mode,
+    tangential_velocity,
+)
+
+ACCELERATION = 0
+VELOCITY = 1
+RELATIVE_TOLERANCE = 1e-9
+ONSET_ITERATIONS = 60
+MAX_CANDIDATES = 9
+
+NONE_ADMISSIBLE = -1
+
+
+@nb.njit(cache=True)
+def _row_rate(rows, bias, k, x, use_bias):
+    total = bias[k] if use_bias else 0.0
+    for i in range(6):
+        total += rows[i, k] * x[i]
+    return total
+
+
+@nb.njit(cache=True)
+def _point_normal_rate(y, d, x, level):
+    """Normal acceleration (level 0) or velocity after (level 1) of the point at arm d."""
+    if level == VELOCITY:
+        cx, cy, cz = cross(x[3], x[4], x[5], d[0], d[1], d[2])
+        return x[2] + cz
+    wx, wy, wz = y[10], y[11], y[12]
+    ux, uy, uz = cross(wx, wy, wz, d[0], d[1], d[2])
+    _, _, cz = cross(wx, wy, wz, ux, uy, uz)
+    _, _, az = cross(x[3], x[4], x[5], d[0], d[1], d[2])
+    return x[2] + az + cz
+
+
+@nb.njit(cache=True)
+def _others_separate(par, y, sc, kind, index, psi, touching, level, tolerance):
+    """True when every touching point the patch does not hold moves away (>= -tolerance)."""
+    rot = sc[SC_ROT]
+    x = sc[SC_ACC]
+    d = np.empty(3)
+    if par[P_SHAPE] == SHAPE_BOX:
+        for k in range(4):
+            if not touching[k]:
+                continue
+            if kind == FACE or (kind == POINT and index == k):
+                continue
+            if kind == EDGE and (k == index or k == (index + 1) % 4):
+                continue
+            corner_gap(par, y, rot, k, d)
+            if _point_normal_rate(y, d, x, level) < -tolerance:
+                return False
+        return True
+    if kind == POINT and touching[0]:
+        radius = par[P_HALF_X]
+        for step in (1, 2, 3):
+            angle = psi + 0.5 * math.pi * step
+            arm(par, rot, radius * math.cos(angle), radius * math.sin(angle), 0.0, d)
+            if _point_normal_rate(y, d, x, level) < -tolerance:
+                return False
+    if kind == FREE:
+        if touching[0]:
+            # a flat base may not be left to fall through the support
+            radius = par[P_HALF_X]
+            for k in range(4):
+                angle = 0.5 * math.pi * k
+                arm(par, rot, radius * math.cos(angle), radius * math.sin(angle), 0.0, d)
+                if _point_normal_rate(y, d, x, level) < -tolerance:
+                    return False
+        if touching[4]:
+            rim_gap(par, y, rot, d)
+            if _point_normal_rate(y, d, x, level) < -tolerance:
+                return False
+    return True
+
+
+@nb.njit(cache=True)
+def _solve(par, y, sc, level, slip, direction, n_normal, n_tangent):
+    return solve_mode(
+        par,
+        sc[SC_INV],
+        sc[SC_BASE],
+        level == ACCELERATION,
+        slip,
+        direction,
+        sc[SC_NORMAL],
+        sc[SC_NBIAS],
+        n_normal,
+        sc[SC_TANGENT],
+        sc[SC_TBIAS],
+        n_tangent,
+        sc[SC_WORK],
+        sc[SC_MATRIX],
+        sc[SC_RHS],
+        sc[SC_ACC],
+        sc[SC_LAM],
+    )
+
+
+@nb.njit(cache=True)
+def _tangential_rate(sc, n_tangent, level, out):
+    """Slip acceleration (level 0) or slip velocity after (level 1) of the tangential rows."""
+    size = 0.0
+    for k in range(n_tangent):
+        out[k] = _row_rate(sc[SC_TANGENT], sc[SC_TBIAS], k, sc[SC_ACC], level == ACCELERATION)
+        size += out[k] ** 2
+    return math.sqrt(size)
+
+
+@nb.njit(cache=True)
+def _slip_onset(par, y, sc, level, n_normal, n_tangent, start, direction, rate_tol):
+    """Direction u of a slip starting from rest; True when consistent.
+
+    The slip acceleration under the friction ``-mu N u`` it produces must lie
+    along u: ``s'(u) = kappa u`` with ``kappa >= 0`` (within ``rate_tol``;
+    kappa is near zero at the very onset). Fixed-point iteration
+    ``u <- s'(u)/|s'(u)|`` from ``start`` (the sticking friction reversed).
+    """
+    rate = sc[SC_SACC]
+    for k in range(n_tangent):
+        direction[k] = start[k]
+    for _ in range(ONSET_ITERATIONS):
+        if not _solve(par, y, sc, level, 1, direction, n_normal, n_tangent):
+            return False
+        size = _tangential_rate(sc, n_tangent, level, rate)
+        along = 0.0
+        for k in range(n_tangent):
+            along += rate[k] * direction[k]
+        across = 0.0
+        for k in range(n_tangent):
+            across += (rate[k] - along * direction[k]) ** 2
+        if math.sqrt(across) <= rate_tol + 1e-10 * size and along >= -rate_tol:
+            return True
+        if size <= 0.0:
+            return False
+        for k in range(n_tangent):
+            direction[k] = rate[k] / size
+    return False
+
+
+@nb.njit(cache=True)
+def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, scales, data):
+    """Solve a candidate mode and test it; True when admissible (its u and psi in ``data``).
+
+    ``scales`` = (force, rate) tolerances of the admissibility tests [N or N s,
+    m/s^2 or m/s]. The candidate's rows are built here; ``sc`` must hold the
+    rotation, inverse inertia and base of the instant.
+    """
+    rot = sc[SC_ROT]
+    n_normal, n_tangent, _ = patch_rows(
+        par,
+        y,
+        rot,
+        kind,
+        index,
+        psi,
+        sc[SC_NORMAL],
+        sc[SC_NBIAS],
+        sc[SC_TANGENT],
+        sc[SC_TBIAS],
+        sc[SC_ARMS],
+    )
+    svel = sc[SC_SVEL]
+    speed = 0.0
+    tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
+    for k in range(n_tangent):
+        speed += svel[k] ** 2
+    speed = math.sqrt(speed)
+    direction = sc[SC_DIR]
+    force_tol, rate_tol = scales[0], scales[1]
+    if kind != FREE and slip == 0:
+        if level == ACCELERATION and speed > velocity_tol:
+            return False
+        if not _solve(par, y, sc, level, 0, direction, n_normal, n_tangent):
+            return False
+        if friction_margin(par, n_normal, n_tangent, sc[SC_LAM]) < -force_tol:
+            return False
+    elif kind != FREE:
+        if level == ACCELERATION and speed > velocity_tol:
+            for k in range(n_tangent):
+                direction[k] = svel[k] / speed
+            if not _solve(par, y, sc, level, 1, direction, n_normal, n_tangent):
+                return False
+        else:
+            # the friction the patch would need to stick, reversed, starts the search
+            start = np.zeros(3)
+            if _solve(par, y, sc, level, 0, direction, n_normal, n_tangent):
+                size = 0.0
+                for k in range(n_tangent):
+                    size += sc[SC_LAM][n_normal + k] ** 2
+                size = math.sqrt(size)
+                for k in range(n_tangent):
+                    start[k] = -sc[SC_LAM][n_normal + k] / size if size > 0.0 else 0.0
+                if size == 0.0:
+                    start[0] = 1.0
+            elif speed > 0.0:
+                for k in range(n_tangent):
+                    start[k] = svel[k] / speed
+            else:
+                start[0] = 1.0
+            if not _slip_onset(par, y, sc, level, n_normal, n_tangent, start, direction, rate_tol):
+                return False
+    else:
+        acc = sc[SC_ACC]
+        base = sc[SC_BASE]
+        for i in range(6):
+            acc[i] = base[i]
+    if kind != FREE and normal_margin(par, rot, kind, sc[SC_LAM]) < -force_tol:
+        return False
+    if not _others_separate(par, y, sc, kind, index, psi, touching, level, rate_tol):
+        return False
+    data[D_PSI] = psi
+    for k in range(3):
+        data[D_SLIP + k] = direction[k] if (slip == 1 and k < n_tangent) else 0.0
+    return True
+
+
+@nb.njit(cache=True)
+def touching_points(par, y, rot, gap_tol, velocity_tol, level, touching):
+    """Flags of the touching points: box corners 0-3; cylinder: 4 = the rim's lowest point,
+    0 = the whole base flat. Returns the rim angle of the lowest point (cylinder)."""
+    d = np.empty(3)
+    for k in range(5):
+        touching[k] = False
+    if par[P_SHAPE] == SHAPE_BOX:
+        for k in range(4):
+            g, gv = corner_gap(par, y, rot, k, d)
+            touching[k] = g <= gap_tol and (level == VELOCITY or gv <= velocity_tol)
+        return 0.0
+    g, gv, psi = rim_gap(par, y, rot, d)
+    touching[4] = g <= gap_tol and (level == VELOCITY or gv <= velocity_tol)
+    flat = g + 2.0 * par[P_HALF_X] * sin_tilt(rot) <= gap_tol
+    if touching[4] and flat:
+        # the whole base: every point's normal velocity within the tolerance
+        speed = math.hypot(y[10], y[11]) * par[P_HALF_X]
+        touching[0] = level == VELOCITY or (gv <= velocity_tol and speed <= velocity_tol)
+    return psi
+
+
+@nb.njit(cache=True)
+def candidates(par, touching, psi, kinds, indices, angles):
+    """The candidate patches, most closed first; returns their count."""
+    count = 0
+    if par[P_SHAPE] == SHAPE_BOX:
+        if touching[0] and touching[1] and touching[2] and touching[3]:
+            kinds[count] = FACE
+            count += 1
+        for k in range(4):
+            if touching[k] and touching[(k + 1) % 4]:
+                kinds[count] = EDGE
+                indices[count] = k
+                count += 1
+        for k in range(4):
+            if touching[k]:
+                kinds[count] = POINT
+                indices[count] = k
+                count += 1
+        return count
+    if touching[0]:
+        kinds[count] = FACE
+        count += 1
+    if touching[4]:
+        kinds[count] = POINT
+        angles[count] = psi
+        count += 1
+    return count
+
+
+@nb.njit(cache=True)
+def _face_pivot(par, y, sc):
+    """Rim angle towards which a FACE solution's centre of pressure leaves the disc."""
+    rot = sc[SC_ROT]
+    n_normal, n_tangent, _ = patch_rows(par, y, rot, FACE, 0, 0.0, sc[SC_NORMAL], sc[SC_NBIAS],
+                                        sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS])  # fmt: skip
+    if not _solve(par, y, sc, ACCELERATION, 0, sc[SC_DIR], n_normal, n_tangent):
+        return 0.0, False
+    lam = sc[SC_LAM]
+    px = -lam[2]
+    py = lam[1]
+    if math.hypot(px, py) == 0.0:
+        return 0.0, False
+    bx = rot[0, 0] * px + rot[1, 0] * py
+    by = rot[0, 1] * px + rot[1, 1] * py
+    return math.atan2(by, bx), True
+
+
+@nb.njit(cache=True)
+def select_mode(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, excluded):
+    """Choose the contact mode at (t, y) (acceleration level); fills ``mode`` and ``data``.
+
+    ``excluded`` = (kind, index, slip states): a mode whose margin has just
+    crossed zero at this event (its test is then within round-off of the
+    limit and must not hold it); slip states 2 excludes both tangential
+    states, kind -1 none. Returns the index of the chosen candidate, or
+    NONE_ADMISSIBLE.
+    """
+    prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
+    rot = sc[SC_ROT]
+    touching = np.zeros(5, dtype=np.bool_)
+    psi = touching_points(par, y, rot, gap_tol, velocity_tol, ACCELERATION, touching)
+    kinds = np.zeros(MAX_CANDIDATES + 1, dtype=np.int64)
+    indices = np.zeros(MAX_CANDIDATES + 1, dtype=np.int64)
+    angles = np.zeros(MAX_CANDIDATES + 1)
+    count = candidates(par, touching, psi, kinds, indices, angles)
+    if par[P_SHAPE] != SHAPE_BOX and touching[0]:
+        speed = math.hypot(y[10], y[11]) * par[P_HALF_X]
+        if speed <= velocity_tol:
+            angle, found = _face_pivot(par, y, sc)
+            if found:
+                angles[1] = angle
+    force_tol = RELATIVE_TOLERANCE * par[P_MASS] * par[P_GRAVITY]
+    scales = (force_tol, RELATIVE_TOLERANCE * par[P_GRAVITY])
+    for slip in (0, 1):
+        for c in range(count):
+            if (
+                kinds[c] == excluded[0]
+                and indices[c] == excluded[1]
+                and (excluded[2] == 2 or excluded[2] == slip)
+            ):
+                continue
+            if try_mode(par, y, sc, kinds[c], indices[c], angles[c], slip, ACCELERATION,
+                        touching, velocity_tol, scales, data):  # fmt: skip
+                mode[M_KIND] = kinds[c]
+                mode[M_INDEX] = indices[c]
+                mode[M_SLIP] = slip
+                return c
+    if try_mode(par, y, sc, FREE, 0, 0.0, 0, ACCELERATION, touching, velocity_tol, scales, data):
+        mode[M_KIND] = FREE
+        mode[M_INDEX] = 0
+        mode[M_SLIP] = 0
+        return count
+    return NONE_ADMISSIBLE
+
+
+@nb.njit(cache=True)
+def _landing_pivot(par, y, sc, touching, scales, psi0, data):
+    """Rim angle about which a landed cylinder turns after the impact (1-D root search).
+
+    f(psi) = omega_h(after) . e_r(psi), the radial component of the angular
+    velocity after a stick impact at the rim point psi; started at psi0
+    (opposite the point the body landed from), bracketed within +-pi/2.
+    """
+    rot = sc[SC_ROT]
+    yaw = math.atan2(rot[1, 0], rot[0, 0])
+
+    def radial(angle):
+        try_mode(par, y, sc, POINT, 0, angle, 0, VELOCITY, touching, 0.0, (1e300, 1e300), data)
+        x = sc[SC_ACC]
+        phi = angle + yaw
+        return x[3] * math.cos(phi) + x[4] * math.sin(phi)
+
+    f0 = radial(psi0)
+    scale = math.hypot(y[10], y[11]) + 1e-300
+    if abs(f0) <= 1e-12 * scale:
+        return psi0
+    step = 0.05
+    low, f_low = psi0, f0
+    while step <= 0.5 * math.pi:
+        for sign in (1.0, -1.0):
+            other = psi0 + sign * step
+            f_other = radial(other)
+            if f_other * f0 <= 0.0:
+                low, high = psi0, other
+                for _ in range(60):
+                    middle = 0.5 * (low + high)
+                    f_mid = radial(middle)
+                    if f_mid * f_low <= 0.0:
+                        high = middle
+                    else:
+                        low, f_low = middle, f_mid
+                    if abs(high - low) < 1e-13:
+                        break
+                return 0.5 * (low + high)
+        step *= 2.0
+    return psi0
+
+
+@nb.njit(cache=True)
+def impact(par, y, sc, gap_tol, psi_before, mode, data, out_velocity):
+    """The impact law at (t, y): the velocity after in ``out_velocity`` (6,).
+
+    Returns the index of the candidate chosen (its mode in ``mode``/``data``)
+    or NONE_ADMISSIBLE. ``sc`` must hold the instant's rotation and inverse
+    inertia (:func:`prepare`); the base is set here to the velocity before.
+    """
+    rot = sc[SC_ROT]
+    base = sc[SC_BASE]
+    for i in range(6):
+        base[i] = y[7 + i]
+    touching = np.zeros(5, dtype=np.bool_)
+    psi = touching_points(par, y, rot, gap_tol, 0.0, VELOCITY, touching)
+    kinds = np.zeros(MAX_CANDIDATES + 1, dtype=np.int64)
+    indices = np.zeros(MAX_CANDIDATES + 1, dtype=np.int64)
+    angles = np.zeros(MAX_CANDIDATES + 1)
+    count = candidates(par, touching, psi, kinds, indices, angles)
+    speed = math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2) + par[P_HALF_X] * math.sqrt(
+        y[10] ** 2 + y[11] ** 2 + y[12] ** 2)  # fmt: skip
+    speed = max(speed, 1e-6)
+    scales = (RELATIVE_TOLERANCE * par[P_MASS] * speed, RELATIVE_TOLERANCE * speed)
+    if par[P_SHAPE] != SHAPE_BOX and touching[0]:
+        angles[1] = _landing_pivot(par, y, sc, touching, (1e300, 1e300), psi_before + math.pi, data)
+    for slip in (0, 1):
+        for c in range(count):
+            if try_mode(par, y, sc, kinds[c], indices[c], angles[c], slip, VELOCITY, touching,
+                        0.0, scales, data):  # fmt: skip
+                mode[M_KIND] = kinds[c]
+                mode[M_INDEX] = indices[c]
+                mode[M_SLIP] = slip
+                for i in range(6):
+                    out_velocity[i] = sc[SC_ACC][i]
+                return c
+    return NONE_ADMISSIBLE

@@ -1,0 +1,520 @@
+"""The compiled event-driven time history of one rigid body on the support (3-D).
+
+The loop has the shape of the planar engine (:mod:`freestand.core.dynamics.engine`):
+``run`` repeats four named phases until the end time:
+
+- :func:`advance`: one RK4 step of the held contact mode (the contact forces
+  solved at every stage by :func:`freestand.core.contact.body_kernel.rate`),
+  or nothing while the body rests flat and sticks (its wrench is then the
+  static one, not integrated);
+- :func:`locate`: the event functions at the step's end against its start;
+  when one changed sign, the earliest crossing by bisection of the step with
+  RK4 from the step's start, to ``EVENT_TIME`` [s];
+- :func:`resolve`: at an event, the impact law where a gap closed, then the
+  contact mode of the new state (:func:`freestand.core.contact.body_modes.select_mode`),
+  and the drift of the held rows projected out;
+- :func:`record`: the state and contact force written to the output buffers.
+
+Event functions (each must stay >= 0 in the held mode): the normal margin of
+the patch (N, the corner forces, a FACE's centre of pressure inside the
+base), the friction margin of a sticking patch (``mu_0 N - |f_t|``), the slip
+velocity along its direction at the step's start (a sliding patch), the gap of
+each base corner not held (box), the landing of a cylinder on its base (its
+axis's tilt vector along the pivot's direction: ``sin(tilt)`` in a plane),
+and the tilt below pi/2.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba as nb
+import numpy as np
+
+from freestand.core.contact.body_kernel import (
+    D_PSI,
+    D_SLIP,
+    EDGE,
+    FACE,
+    FREE,
+    M_INDEX,
+    M_KIND,
+    M_SLIP,
+    P_GRAVITY,
+    P_HALF_X,
+    P_MASS,
+    P_SHAPE,
+    POINT,
+    SC_INV,
+    SC_LAM,
+    SC_ROT,
+    SC_SVEL,
+    SC_TANGENT,
+    SHAPE_BOX,
+    STATE_SIZE,
+    arm,
+    corner_gap,
+    flat_gap,
+    friction_margin,
+    new_scratch,
+    normal_margin,
+    normal_total_rows,
+    prepare,
+    rate,
+    rotation_matrix,
+    sin_tilt,
+    solve_at,
+    solve_mode,
+    tangential_velocity,
+)
+from freestand.core.contact.body_modes import NONE_ADMISSIBLE, impact, select_mode
+
+EVENT_TIME = 1e-11  # [s] width of the bracket of a located event
+GAP_SLACK = 1e-12  # [m] a released point may sit this far below the support
+MAX_EVENT_FUNCTIONS = 8
+
+# event kinds
+EV_START = 0
+EV_IMPACT = 1
+EV_LIFT_OFF = 2
+EV_SLIP = 3
+EV_STICK = 4
+EV_OVERTURN = 5
+EV_REMEDY = 6
+EV_LANDING_MISS = 7
+EVENT_KINDS = ("start", "impact", "lift-off", "slip", "stick", "overturn", "remedy", "pass-over")
+
+# function kinds (what a crossing means)
+FN_NORMAL = 0
+FN_FRICTION = 1
+FN_SLIP_STOP = 2
+FN_GAP = 3
+FN_LANDING = 4
+FN_TILT = 5
+
+# istate
+I_RECORDS = 0
+I_EVENTS = 1
+I_STATUS = 2
+I_STEPS = 3
+I_REMEDIES = 4
+I_IMPACTS = 5
+I_SIZE = 8
+
+STATUS_RUNNING = 0
+STATUS_COMPLETED = 1
+STATUS_OVERTURNED = 2
+STATUS_BUFFER_FULL = 3
+
+
+@nb.njit(cache=True)
+def _normalise(y):
+    size = math.sqrt(y[3] ** 2 + y[4] ** 2 + y[5] ** 2 + y[6] ** 2)
+    for i in range(3, 7):
+        y[i] /= size
+
+
+@nb.njit(cache=True)
+def _rk4(par, record, dt, t, h, y, mode, data, sc, k, out):
+    """One RK4 step of the held mode over h from (t, y) into ``out``; False if singular."""
+    stage = k[4]
+    ok = rate(par, record, dt, t, y, mode, data, sc, k[0])
+    for i in range(STATE_SIZE):
+        stage[i] = y[i] + 0.5 * h * k[0, i]
+    ok &= rate(par, record, dt, t + 0.5 * h, stage, mode, data, sc, k[1])
+    for i in range(STATE_SIZE):
+        stage[i] = y[i] + 0.5 * h * k[1, i]
+    ok &= rate(par, record, dt, t + 0.5 * h, stage, mode, data, sc, k[2])
+    for i in range(STATE_SIZE):
+        stage[i] = y[i] + h * k[2, i]
+    ok &= rate(par, record, dt, t + h, stage, mode, data, sc, k[3])
+    for i in range(STATE_SIZE):
+        out[i] = y[i] + h / 6.0 * (k[0, i] + 2.0 * k[1, i] + 2.0 * k[2, i] + k[3, i])
+    _normalise(out)
+    return ok
+
+
+@nb.njit(cache=True)
+def resting(mode, y, velocity_tol):
+    """True while the body sits flat, sticks and does not move (not integrated)."""
+    if mode[M_KIND] != FACE or mode[M_SLIP] != 0:
+        return False
+    for i in range(7, 13):
+        if abs(y[i]) > 1e-14:
+            return False
+    return True
+
+
+@nb.njit(cache=True)
+def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
+    """Phase 1: the state at t + h in ``out`` (RK4, or unchanged at rest); False if singular."""
+    if resting(mode, y, velocity_tol):
+        for i in range(STATE_SIZE):
+            out[i] = y[i]
+        return True
+    return _rk4(par, record, dt, t, h, y, mode, data, sc, k, out)
+
+
+@nb.njit(cache=True)
+def references(par, y, mode, data, sc, ref):
+    """The step's references: the slip direction (3) and the pivot's horizontal direction (2)."""
+    rot = sc[SC_ROT]
+    rotation_matrix(y, rot)
+    for i in range(5):
+        ref[i] = 0.0
+    if mode[M_SLIP] == 1:
+        # rows of the held patch at y
+        ok, n_normal, n_tangent = solve_at(par, np.zeros((3, 2)), 1.0, 0.0, y, mode, data, sc)
+        svel = sc[SC_SVEL]
+        tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
+        size = 0.0
+        for i in range(n_tangent):
+            size += svel[i] ** 2
+        size = math.sqrt(size)
+        for i in range(n_tangent):
+            ref[i] = svel[i] / size if size > 1e-12 else data[D_SLIP + i]
+    if mode[M_KIND] == POINT and par[P_SHAPE] != SHAPE_BOX:
+        psi = data[D_PSI]
+        if sin_tilt(rot) > 1e-9:
+            psi = math.atan2(-rot[2, 1], -rot[2, 0])
+        d = np.empty(3)
+        radius = par[P_HALF_X]
+        # horizontal direction of the pivot from the base centre
+        arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
+        c = np.empty(3)
+        arm(par, rot, 0.0, 0.0, 0.0, c)
+        px = d[0] - c[0]
+        py = d[1] - c[1]
+        size = math.hypot(px, py)
+        ref[3] = px / size
+        ref[4] = py / size
+
+
+@nb.njit(cache=True)
+def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
+    """The event functions at (t, y) in the held mode (>= 0 while it holds); their count."""
+    ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
+    rot = sc[SC_ROT]
+    lam = sc[SC_LAM]
+    kind = mode[M_KIND]
+    count = 0
+    if kind != FREE:
+        values[count] = normal_margin(par, rot, kind, lam)
+        kinds[count] = FN_NORMAL
+        count += 1
+        if mode[M_SLIP] == 0:
+            values[count] = friction_margin(par, n_normal, n_tangent, lam)
+            kinds[count] = FN_FRICTION
+            count += 1
+        else:
+            svel = sc[SC_SVEL]
+            tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
+            along = 0.0
+            for i in range(n_tangent):
+                along += svel[i] * ref[i]
+            values[count] = along
+            kinds[count] = FN_SLIP_STOP
+            count += 1
+    d = np.empty(3)
+    if par[P_SHAPE] == SHAPE_BOX:
+        for c in range(4):
+            if kind == FACE or (kind == POINT and mode[M_INDEX] == c):
+                continue
+            if kind == EDGE and (mode[M_INDEX] == c or (mode[M_INDEX] + 1) % 4 == c):
+                continue
+            g, _ = corner_gap(par, y, rot, c, d)
+            values[count] = g
+            kinds[count] = FN_GAP
+            count += 1
+    elif kind == POINT:
+        values[count] = rot[0, 2] * ref[3] + rot[1, 2] * ref[4]
+        kinds[count] = FN_LANDING
+        count += 1
+    elif kind == FREE:
+        radius = par[P_HALF_X]
+        s = sin_tilt(rot)
+        c0 = np.empty(3)
+        arm(par, rot, 0.0, 0.0, 0.0, c0)
+        values[count] = y[2] + c0[2] - radius * s
+        kinds[count] = FN_GAP
+        count += 1
+    values[count] = rot[2, 2]  # cos(tilt): overturned at pi/2
+    kinds[count] = FN_TILT
+    count += 1
+    return count
+
+
+@nb.njit(cache=True)
+def _crossed(par, n, start_values, values, kinds):
+    """Kind of the first event function that crossed below its slack, or -1.
+
+    A function fires when it is below ``-slack`` having started above it: the
+    slack is the admissibility tolerance for the force margins (a mode is
+    chosen within it) and ``GAP_SLACK`` for gaps (a point just released may
+    sit a round-off below the support), zero otherwise.
+    """
+    for i in range(n):
+        slack = 0.0
+        if kinds[i] == FN_NORMAL or kinds[i] == FN_FRICTION:
+            slack = 1e-9 * par[P_MASS] * par[P_GRAVITY]
+        elif kinds[i] == FN_GAP:
+            slack = GAP_SLACK
+        if values[i] < -slack and start_values[i] >= -slack:
+            return kinds[i]
+    return -1
+
+
+@nb.njit(cache=True)
+def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count, trial,
+           values, kinds, out):  # fmt: skip
+    """Phase 2: the earliest crossing of an event function within the step.
+
+    ``out`` holds the state at t + h; ``start_values`` the functions at t.
+    Returns (step taken [s], kind of the function that fired or -1). On an
+    event, ``out`` holds the state just after the crossing (within
+    ``EVENT_TIME``).
+    """
+    n = event_functions(par, record, dt, t + h, out, mode, data, sc, ref, values, kinds)
+    if _crossed(par, n, start_values, values, kinds) < 0:
+        return h, -1
+    low = 0.0
+    high = h
+    while high - low > EVENT_TIME:
+        middle = 0.5 * (low + high)
+        _rk4(par, record, dt, t, middle, y, mode, data, sc, k, trial)
+        event_functions(par, record, dt, t + middle, trial, mode, data, sc, ref, values, kinds)
+        if _crossed(par, n, start_values, values, kinds) >= 0:
+            high = middle
+        else:
+            low = middle
+    if high < h:
+        _rk4(par, record, dt, t, high, y, mode, data, sc, k, out)
+    event_functions(par, record, dt, t + high, out, mode, data, sc, ref, values, kinds)
+    which = _crossed(par, n, start_values, values, kinds)
+    return high, which if which >= 0 else kinds[0]
+
+
+@nb.njit(cache=True)
+def project(par, record, dt, t, y, mode, data, sc):
+    """Remove the drift of the held rows: positions on the support, their velocities zero.
+
+    FACE: the tilt is removed (a pure yaw) and the base set on the support;
+    EDGE and POINT: the centre of gravity shifted vertically by the held
+    points' mean gap. Velocities: the least-kinetic-energy change that makes
+    the held rows' velocities vanish (a plastic impact on the held rows).
+    """
+    kind = mode[M_KIND]
+    if kind == FREE:
+        return
+    rot = sc[SC_ROT]
+    rotation_matrix(y, rot)
+    d = np.empty(3)
+    if kind == FACE:
+        size = math.hypot(y[3], y[6])
+        y[3] /= size
+        y[4] = 0.0
+        y[5] = 0.0
+        y[6] /= size
+        rotation_matrix(y, rot)
+        arm(par, rot, 0.0, 0.0, 0.0, d)
+        y[2] -= y[2] + d[2]
+    elif kind == EDGE:
+        g0, _ = corner_gap(par, y, rot, mode[M_INDEX], d)
+        g1, _ = corner_gap(par, y, rot, (mode[M_INDEX] + 1) % 4, d)
+        y[2] -= 0.5 * (g0 + g1)
+    elif par[P_SHAPE] == SHAPE_BOX:
+        g0, _ = corner_gap(par, y, rot, mode[M_INDEX], d)
+        y[2] -= g0
+    else:
+        psi = data[D_PSI]
+        if sin_tilt(rot) > 1e-9:
+            psi = math.atan2(-rot[2, 1], -rot[2, 0])
+        radius = par[P_HALF_X]
+        arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
+        y[2] -= y[2] + d[2]
+    ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
+    base = np.empty(6)
+    for i in range(6):
+        base[i] = y[7 + i]
+    held_tangent = n_tangent if mode[M_SLIP] == 0 else 0
+    after = np.empty(6)
+    lam = np.empty(6)
+    from_scratch = sc
+    if solve_mode(par, from_scratch[SC_INV], base, False, 0, from_scratch[16], from_scratch[4],
+                  from_scratch[5], n_normal, from_scratch[6], from_scratch[7], held_tangent,
+                  from_scratch[9], from_scratch[10], from_scratch[11], after, lam):  # fmt: skip
+        for i in range(6):
+            y[7 + i] = after[i]
+
+
+@nb.njit(cache=True)
+def _post_record_fall(par, y, mode, sc):
+    """True when, without excitation, a pivoting body is past its top: tilting and falling."""
+    if mode[M_KIND] != POINT and mode[M_KIND] != EDGE:
+        return False
+    rot = sc[SC_ROT]
+    rotation_matrix(y, rot)
+    # d(cos tilt)/dt = (omega x e_3)_z
+    rate_cos = y[10] * rot[1, 2] - y[11] * rot[0, 2]
+    return rate_cos < 0.0 and y[9] < 0.0
+
+
+@nb.njit(cache=True)
+def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which, istate):
+    """Phase 3: the impact (a gap closed) and the next contact mode; the event kind."""
+    event = EV_LIFT_OFF
+    if which == FN_FRICTION:
+        event = EV_SLIP
+    elif which == FN_SLIP_STOP:
+        event = EV_STICK
+    elif which == FN_TILT:
+        return EV_OVERTURN
+    rot = sc[SC_ROT]
+    if which == FN_LANDING:
+        rotation_matrix(y, rot)
+        if flat_gap(par, y, rot) > gap_tol:
+            event = EV_LANDING_MISS
+            which = -1
+    if which == FN_GAP or which == FN_LANDING:
+        prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
+        after = np.empty(6)
+        chosen = impact(par, y, sc, gap_tol, data[D_PSI], mode, data, after)
+        if chosen != NONE_ADMISSIBLE:
+            for i in range(6):
+                y[7 + i] = after[i]
+            istate[I_IMPACTS] += 1
+            event = EV_IMPACT
+        else:
+            istate[I_REMEDIES] += 1
+            event = EV_REMEDY
+    excluded = np.array([-1, 0, 0], dtype=np.int64)
+    if which == FN_NORMAL:
+        excluded[0] = mode[M_KIND]
+        excluded[1] = mode[M_INDEX]
+        excluded[2] = 2
+    elif which == FN_FRICTION:
+        excluded[0] = mode[M_KIND]
+        excluded[1] = mode[M_INDEX]
+    chosen = select_mode(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, excluded)
+    if chosen == NONE_ADMISSIBLE:
+        istate[I_REMEDIES] += 1
+        mode[M_KIND] = FREE
+        mode[M_INDEX] = 0
+        mode[M_SLIP] = 0
+        event = EV_REMEDY
+    project(par, record, dt, t, y, mode, data, sc)
+    return event
+
+
+@nb.njit(cache=True)
+def record(t, y, mode, sc, count, out_t, out_y, out_mode, out_force):
+    """Phase 4: write the state, the mode and the contact force (N, |f_t|) at row ``count``."""
+    out_t[count] = t
+    for i in range(STATE_SIZE):
+        out_y[count, i] = y[i]
+    for i in range(3):
+        out_mode[count, i] = mode[i]
+    lam = sc[SC_LAM]
+    kind = mode[M_KIND]
+    n_normal = 1 if kind == POINT else (2 if kind == EDGE else (3 if kind == FACE else 0))
+    n_tangent = 2 if kind == POINT else (3 if kind != FREE else 0)
+    out_force[count, 0] = normal_total_rows(n_normal, lam)
+    size = 0.0
+    for k in range(n_tangent):
+        size += lam[n_normal + k] ** 2
+    out_force[count, 1] = math.sqrt(size)
+
+
+@nb.njit(cache=True)
+def _event(t, kind, before, after, count, ev_time, ev_kind, ev_before, ev_after):
+    if count < ev_time.shape[0]:
+        ev_time[count] = t
+        ev_kind[count] = kind
+        ev_before[count] = before
+        ev_after[count] = after
+    return count + 1
+
+
+@nb.njit(cache=True)
+def _next_end(t, breaks, h_max, t_end):
+    """End of the next step: at most h_max, never across a break of the record."""
+    end = min(t + h_max, t_end)
+    lo = 0
+    hi = breaks.shape[0]
+    while lo < hi:
+        middle = (lo + hi) // 2
+        if breaks[middle] <= t + 1e-12:
+            lo = middle + 1
+        else:
+            hi = middle
+    if lo < breaks.shape[0] and breaks[lo] < end:
+        end = breaks[lo]
+    return end
+
+
+@nb.njit(cache=True)
+def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol, t, y, mode,
+        data, istate, out_t, out_y, out_mode, out_force, ev_time, ev_kind, ev_before,
+        ev_after):  # fmt: skip
+    """The loop: advance, locate, resolve, record, from t to t_end.
+
+    Returns the time reached; ``istate[I_STATUS]`` says why it stopped
+    (completed, overturned, or the output buffer full: call again with larger
+    buffers from the returned time and state).
+    """
+    sc = new_scratch()
+    k = np.zeros((5, STATE_SIZE))
+    out = np.zeros(STATE_SIZE)
+    trial = np.zeros(STATE_SIZE)
+    ref = np.zeros(5)
+    start_values = np.zeros(MAX_EVENT_FUNCTIONS)
+    values = np.zeros(MAX_EVENT_FUNCTIONS)
+    kinds = np.zeros(MAX_EVENT_FUNCTIONS, dtype=np.int64)
+    capacity = out_t.shape[0]
+    if istate[I_RECORDS] == 0:
+        none = np.array([-1, 0, 0], dtype=np.int64)
+        if select_mode(par, record_, dt, t, y, sc, gap_tol, velocity_tol, mode, data, none) < 0:
+            mode[M_KIND] = FREE
+        solve_at(par, record_, dt, t, y, mode, data, sc)
+        record(t, y, mode, sc, 0, out_t, out_y, out_mode, out_force)
+        istate[I_RECORDS] = 1
+        istate[I_EVENTS] = _event(t, EV_START, -1, mode[M_KIND], istate[I_EVENTS], ev_time,
+                                  ev_kind, ev_before, ev_after)  # fmt: skip
+    while t < t_end - 1e-12:
+        if istate[I_RECORDS] >= capacity:
+            istate[I_STATUS] = STATUS_BUFFER_FULL
+            return t
+        references(par, y, mode, data, sc, ref)
+        count = event_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values, kinds)
+        h = _next_end(t, breaks, h_max, t_end) - t
+        advance(par, record_, dt, t, h, y, mode, data, sc, k, out, velocity_tol)
+        h, which = locate(par, record_, dt, t, h, y, mode, data, sc, k, ref, start_values, count,
+                          trial, values, kinds, out)  # fmt: skip
+        t += h
+        for i in range(STATE_SIZE):
+            y[i] = out[i]
+        istate[I_STEPS] += 1
+        if which >= 0:
+            before = mode[M_KIND]
+            event = resolve(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol,
+                            which, istate)  # fmt: skip
+            istate[I_EVENTS] = _event(t, event, before, mode[M_KIND], istate[I_EVENTS],
+                                      ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
+            if event == EV_OVERTURN:
+                solve_at(par, record_, dt, t, y, mode, data, sc)
+                record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
+                istate[I_RECORDS] += 1
+                istate[I_STATUS] = STATUS_OVERTURNED
+                return t
+        elif not resting(mode, y, velocity_tol):
+            project(par, record_, dt, t, y, mode, data, sc)
+        solve_at(par, record_, dt, t, y, mode, data, sc)
+        record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
+        istate[I_RECORDS] += 1
+        if t >= record_end and _post_record_fall(par, y, mode, sc):
+            istate[I_EVENTS] = _event(t, EV_OVERTURN, mode[M_KIND], mode[M_KIND], istate[I_EVENTS],
+                                      ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
+            istate[I_STATUS] = STATUS_OVERTURNED
+            return t
+    istate[I_STATUS] = STATUS_COMPLETED
+    return t

@@ -1,0 +1,348 @@
+"""Time history of one rigid body (box or cylinder) under three-component support motion.
+
+The Python front end of the compiled loop :func:`freestand.core.dynamics.body_engine.run`:
+it builds the arrays, grows the output buffers when they fill, and reduces
+the histories to the peaks a screening reads (largest tilt, slide and twist,
+uplift, free flight, overturning).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from freestand.core.body import Body, Box
+from freestand.core.contact.body_kernel import FREE, STATE_SIZE, body_parameters
+from freestand.core.dynamics import body_engine as engine
+from freestand.core.dynamics.results import ContactTolerances
+from freestand.core.dynamics.single_block import UPLIFT_GAP_FRACTION
+from freestand.errors import FreestandError
+
+GRAVITY = 9.81
+
+MOTION_NAMES = {0: "free-flight", 1: "rock-corner", 2: "rock-edge", 3: "rest"}
+
+
+@dataclass(frozen=True)
+class SupportMotion3:
+    """Three components of support acceleration, sampled at a constant step, linear between.
+
+    Parameters
+    ----------
+    time_step : float
+        Sampling interval dt [s], positive.
+    x, y : numpy.ndarray
+        Horizontal support accelerations along x and y [m/s^2] at ``k dt``.
+    vertical : numpy.ndarray or None
+        Downward support acceleration a_v [m/s^2] (the weight is ``m (g - a_v)``);
+        None for none. Zero before the first and after the last sample.
+    """
+
+    time_step: float
+    x: np.ndarray
+    y: np.ndarray | None = None
+    vertical: np.ndarray | None = None
+
+    def __post_init__(self) -> None:
+        if not (self.time_step > 0.0 and math.isfinite(self.time_step)):
+            raise FreestandError(f"time_step must be positive, not {self.time_step!r} s")
+        x = np.asarray(self.x, dtype=float)
+        if x.ndim != 1 or x.size < 2:
+            raise FreestandError("x must be a 1-D array of at least 2 samples [m/s^2]")
+        for name in ("y", "vertical"):
+            value = getattr(self, name)
+            value = np.zeros_like(x) if value is None else np.asarray(value, dtype=float)
+            if value.shape != x.shape:
+                raise FreestandError(
+                    f"{name} must have the {x.size} samples of x, not {value.shape}"
+                )
+            object.__setattr__(self, name, value)
+        object.__setattr__(self, "x", x)
+
+    @property
+    def duration(self) -> float:
+        """Time of the last sample [s]."""
+        return (self.x.size - 1) * self.time_step
+
+    def rotated(self, angle: float) -> SupportMotion3:
+        """The motion with its horizontal pair turned by ``angle`` [rad] about the vertical."""
+        c, s = math.cos(angle), math.sin(angle)
+        return SupportMotion3(self.time_step, c * self.x - s * self.y, s * self.x + c * self.y,
+                              self.vertical)  # fmt: skip
+
+    def array(self) -> np.ndarray:
+        """(3, n): x, y, vertical."""
+        return np.vstack([self.x, self.y, self.vertical])
+
+
+@dataclass(frozen=True)
+class BodyTimeHistory:
+    """Outcome of :func:`simulate_body`.
+
+    Attributes
+    ----------
+    body : str
+        The body's name.
+    status : str
+        ``"completed"`` or ``"overturned"``.
+    time : numpy.ndarray
+        (K,) [s].
+    state : numpy.ndarray
+        (K, 13): centre of gravity r [m], orientation quaternion (w, x, y, z)
+        [-], velocity v [m/s], angular velocity omega [rad/s] (support frame).
+    patch : numpy.ndarray
+        (K,) contact patch (0 free, 1 point, 2 edge, 3 face).
+    sliding : numpy.ndarray
+        (K,) True where the patch slides.
+    normal_force : numpy.ndarray
+        (K,) total normal force N [N].
+    tilt : numpy.ndarray
+        (K,) angle of the body's z axis from the vertical [rad].
+    slide : numpy.ndarray
+        (K, 2) horizontal displacement of the base centre from its start [m].
+    twist : numpy.ndarray
+        (K,) rotation about the vertical (swing-twist decomposition, unwrapped) [rad].
+    events : tuple of (float, str, str, str)
+        (time [s], kind, patch before, patch after).
+    max_rotation, max_slide, max_twist : float
+        Largest tilt [rad], horizontal slide magnitude [m], |twist| [rad].
+    uplift, free_flight, overturned : bool
+        A base point lifted by more than ``UPLIFT_GAP_FRACTION`` of the base
+        width; the body left the support; it overturned.
+    overturn_time : float or None
+        [s].
+    diagnostics : dict
+        steps, events, impacts, remedies (modes without an admissible
+        candidate, continued in free flight).
+    """
+
+    body: str
+    status: str
+    time: np.ndarray
+    state: np.ndarray
+    patch: np.ndarray
+    sliding: np.ndarray
+    normal_force: np.ndarray
+    tilt: np.ndarray
+    slide: np.ndarray
+    twist: np.ndarray
+    events: tuple
+    max_rotation: float
+    max_slide: float
+    max_twist: float
+    uplift: bool
+    free_flight: bool
+    overturned: bool
+    overturn_time: float | None
+    diagnostics: dict = field(default_factory=dict)
+
+
+def default_body_step(body: Body, gravity: float = GRAVITY) -> float:
+    """Default largest step [s]: ``0.05 / p``, p the largest rocking frequency parameter.
+
+    ``p = sqrt(m g rho / I_O)`` about each base edge (box) or rim tangent
+    (cylinder) in x and y (Housner 1963), at most 20 ms; as the planar
+    engine's :func:`freestand.core.dynamics.timehistory.default_step`.
+    """
+    inertia = np.asarray(body.inertia)
+    height = body.centre_height
+    if isinstance(body.shape, Box):
+        half_x, half_y = 0.5 * body.shape.size[0], 0.5 * body.shape.size[1]
+    else:
+        half_x = half_y = body.shape.radius
+    largest = 0.0
+    # rocking in the x-z plane (about y) and in the y-z plane (about x)
+    for axis, half, offset in ((1, half_x, body.centre[0]), (0, half_y, body.centre[1])):
+        for lever in (half - offset, half + offset):
+            rho = math.hypot(lever, height)
+            i_o = inertia[axis, axis] + body.mass * rho**2
+            largest = max(largest, math.sqrt(body.mass * gravity * rho / i_o))
+    return min(0.05 / largest, 0.02)
+
+
+def _breaks(motion: SupportMotion3) -> np.ndarray:
+    values = motion.array()
+    kinks = np.zeros(values.shape[1], dtype=bool)
+    for row in values:
+        scale = max(float(np.max(np.abs(row), initial=0.0)), 1e-300)
+        kinks[1:-1] |= np.abs(row[2:] - 2.0 * row[1:-1] + row[:-2]) > 1e-12 * scale
+    kinks[-1] = True
+    return np.array(np.flatnonzero(kinks) * motion.time_step, dtype=float)
+
+
+def initial_state(body: Body, initial_tilt: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
+    """The state at rest on the support, optionally tilted (rotation vector (x, y) [rad]) about
+    the base point that stays on the support: the base edge / rim point on the tilt's side."""
+    y = np.zeros(STATE_SIZE)
+    y[3] = 1.0
+    y[2] = body.centre[2]
+    angle = math.hypot(*initial_tilt)
+    if angle > 0.0:
+        axis = np.array([initial_tilt[0], initial_tilt[1], 0.0]) / angle
+        y[3] = math.cos(0.5 * angle)
+        y[4:7] = math.sin(0.5 * angle) * axis
+        rot = _matrices(y[3:7][None, :])[0]
+        points = _base_points(body)
+        y[2] = -np.min((rot @ (points - np.asarray(body.centre)).T)[2])
+    return y
+
+
+def _base_points(body: Body) -> np.ndarray:
+    if isinstance(body.shape, Box):
+        return body.shape.base_corners()
+    angles = np.linspace(0.0, 2.0 * math.pi, 3601)
+    radius = body.shape.radius
+    return np.column_stack([radius * np.cos(angles), radius * np.sin(angles), 0.0 * angles])
+
+
+def simulate_body(
+    body: Body,
+    motion: SupportMotion3,
+    duration: float | None = None,
+    *,
+    max_step: float | None = None,
+    gravity: float = GRAVITY,
+    tolerances: ContactTolerances | None = None,
+    initial: np.ndarray | None = None,
+) -> BodyTimeHistory:
+    """Event-driven time history of a box or cylinder on the support under three components.
+
+    Parameters
+    ----------
+    body : Body
+        The body (:mod:`freestand.core.body`).
+    motion : SupportMotion3
+        Support accelerations x, y, vertical [m/s^2].
+    duration : float, optional
+        End time [s]; default the motion's duration (free motion continues
+        after the record until then).
+    max_step : float, optional
+        Largest RK4 step [s]; default :func:`default_body_step`.
+    gravity : float
+        g [m/s^2].
+    tolerances : ContactTolerances, optional
+        Gap [m] and velocity [m/s] within which a point touches.
+    initial : numpy.ndarray, optional
+        (13,) initial state; default at rest, flat on the support.
+
+    Returns
+    -------
+    BodyTimeHistory
+
+    Notes
+    -----
+    Exact rigid unilateral contact with Coulomb friction on the circular
+    cone, events located to 1e-11 s, impacts plastic at the impacting points
+    (Housner's law in a plane); see ``docs/three-d.md``.
+    """
+    tolerances = tolerances or ContactTolerances()
+    end = motion.duration if duration is None else float(duration)
+    if not (end > 0.0 and math.isfinite(end)):
+        raise FreestandError(f"duration must be positive, not {duration!r} s")
+    step = default_body_step(body, gravity) if max_step is None else float(max_step)
+    if not (step > 0.0 and math.isfinite(step)):
+        raise FreestandError(f"max_step must be positive, not {max_step!r} s")
+    par = body_parameters(body, gravity)
+    record = np.ascontiguousarray(motion.array())
+    breaks = _breaks(motion)
+    y = initial_state(body) if initial is None else np.array(initial, dtype=float)
+    mode = np.zeros(3, dtype=np.int64)
+    data = np.zeros(4)
+    istate = np.zeros(engine.I_SIZE, dtype=np.int64)
+    capacity = int(end / step * 1.2) + 1000
+    buffers = _buffers(capacity)
+    events = (np.zeros(200_000),) + tuple(np.zeros(200_000, dtype=np.int64) for _ in range(3))
+    t = 0.0
+    chunks = []
+    while True:
+        t = engine.run(par, record, motion.time_step, breaks, step, end, motion.duration,
+                       tolerances.gap, tolerances.velocity, t, y, mode, data, istate,
+                       *buffers, *events)  # fmt: skip
+        if istate[engine.I_STATUS] != engine.STATUS_BUFFER_FULL:
+            chunks.append(tuple(b[: istate[engine.I_RECORDS]] for b in buffers))
+            break
+        chunks.append(tuple(b.copy() for b in buffers))
+        istate[engine.I_RECORDS] = 1
+        buffers = _buffers(capacity)
+        for b, last in zip(buffers, chunks[-1], strict=True):
+            b[0] = last[-1]
+    time, state, modes, forces = (
+        np.concatenate([c[k] if i == 0 else c[k][1:] for i, c in enumerate(chunks)])
+        for k in range(4)
+    )
+    return _result(body, par, istate, time, state, modes, forces, events)
+
+
+def _buffers(capacity: int):
+    return (np.zeros(capacity), np.zeros((capacity, STATE_SIZE)),
+            np.zeros((capacity, 3), dtype=np.int64), np.zeros((capacity, 2)))  # fmt: skip
+
+
+def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHistory:
+    w, qx, qy, qz = state[:, 3], state[:, 4], state[:, 5], state[:, 6]
+    cos_tilt = 1.0 - 2.0 * (qx**2 + qy**2)
+    tilt = np.arccos(np.clip(cos_tilt, -1.0, 1.0))
+    twist = np.unwrap(2.0 * np.arctan2(qz, w))
+    twist -= twist[0]
+    # base centre = r - R c
+    c = np.asarray(body.centre)
+    rot = _matrices(state[:, 3:7])
+    base = state[:, 0:3] - rot @ c
+    slide = base[:, 0:2] - base[0, 0:2]
+    width = min(body.shape.size[:2]) if isinstance(body.shape, Box) else 2.0 * body.shape.radius
+    lift = _highest_base_gap(body, rot, base)
+    count = int(istate[engine.I_EVENTS])
+    names = ("free", "point", "edge", "face")
+    event_list = tuple(
+        (float(events[0][i]), engine.EVENT_KINDS[events[1][i]],
+         names[events[2][i]] if events[2][i] >= 0 else "", names[events[3][i]])
+        for i in range(min(count, events[0].shape[0]))
+    )  # fmt: skip
+    overturned = istate[engine.I_STATUS] == engine.STATUS_OVERTURNED
+    return BodyTimeHistory(
+        body=body.name,
+        status="overturned" if overturned else "completed",
+        time=time,
+        state=state,
+        patch=modes[:, 0].copy(),
+        sliding=modes[:, 2] == 1,
+        normal_force=forces[:, 0].copy(),
+        tilt=tilt,
+        slide=slide,
+        twist=twist,
+        events=event_list,
+        max_rotation=float(np.max(tilt)),
+        max_slide=float(np.max(np.hypot(slide[:, 0], slide[:, 1]))),
+        max_twist=float(np.max(np.abs(twist))),
+        uplift=bool(np.max(lift) > UPLIFT_GAP_FRACTION * width),
+        free_flight=bool(np.any(modes[:, 0] == FREE)),
+        overturned=bool(overturned),
+        overturn_time=float(time[-1]) if overturned else None,
+        diagnostics={
+            "steps": int(istate[engine.I_STEPS]),
+            "events": count,
+            "impacts": int(istate[engine.I_IMPACTS]),
+            "remedies": int(istate[engine.I_REMEDIES]),
+        },
+    )
+
+
+def _matrices(quaternions: np.ndarray) -> np.ndarray:
+    w, x, y, z = quaternions.T
+    return np.stack([
+        np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
+        np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
+        np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1),
+    ], axis=1)  # fmt: skip
+
+
+def _highest_base_gap(body, rot, base) -> np.ndarray:
+    """Height [m] of the highest base point above the support, per sample."""
+    if isinstance(body.shape, Box):
+        corners = body.shape.base_corners()
+        z = np.einsum("kj,nj->kn", rot[:, 2, :], corners) + base[:, 2:3]
+        return z.max(axis=1)
+    sin_t = np.hypot(rot[:, 2, 0], rot[:, 2, 1])
+    return base[:, 2] + body.shape.radius * sin_t

@@ -1,0 +1,120 @@
+"""3-D body engine against the planar engine (issue #18, validation (a) and (e)).
+
+Sources: a box excited along a principal axis, or a cylinder in any
+direction, moves in that vertical plane; its rigid-block equations are the
+planar ones of Housner (1963) and of the reference paper (section 3), which
+the planar engine (:func:`freestand.core.dynamics.timehistory.simulate`)
+solves and is validated for (``tests/validation``). Sliding of a squat body
+is Newmark's rigid sliding block (Newmark 1965), and on the circular cone a
+diagonal motion slides as far as an axis-aligned one.
+
+Tolerance: both engines integrate the same equations with RK4 at 0.2 ms and
+locate events to 1e-9 s or better; histories compared on a common 1 ms grid
+by linear interpolation agree to 1e-6 of the peak (measured about 5e-8; the
+interpolation is most of it).
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from freestand.core.body import Body, Box, Cylinder
+from freestand.core.dynamics.body_history import SupportMotion3, simulate_body
+from freestand.core.dynamics.results import SupportMotion
+from freestand.core.dynamics.sliding import slide_block
+from freestand.core.dynamics.timehistory import simulate
+from freestand.core.model import Block, Friction, Stack
+from freestand.core.motion.ground_motion import GroundMotion
+
+DT = 0.01
+TIME = np.arange(0.0, 2.0 + DT / 2, DT)
+PULSE = np.where(TIME < 1.0, 6.0 * np.sin(2.0 * np.pi * TIME), 0.0)
+VERTICAL = 2.0 * np.sin(2.0 * np.pi * 3.0 * TIME)
+STEP = 2e-4
+GRID = np.linspace(0.0, 4.0, 4001)
+
+
+def _planar(width, height, mass, inertia, friction):
+    block = Block("b", mass=mass, inertia=inertia, centre=(0.0, 0.5 * height),
+                  base_left=-0.5 * width, base_right=0.5 * width, base_level=0.0,
+                  friction=friction)  # fmt: skip
+    result = simulate(Stack("s", (block,)), SupportMotion(DT, PULSE, VERTICAL), 4.0, max_step=STEP)
+    return result
+
+
+def _agree(time_a, a, time_b, b):
+    a = np.interp(GRID, time_a, a)
+    b = np.interp(GRID, time_b, b)
+    scale = np.max(np.abs(b))
+    assert scale > 0.0
+    assert np.max(np.abs(a - b)) <= 1e-6 * scale
+
+
+@pytest.mark.parametrize("axis", ["x", "y"])
+def test_box_along_an_axis_rocks_as_the_planar_block(axis):
+    friction = Friction(0.7, 0.7)
+    body = Body("b", Box((1.0, 0.6, 2.0) if axis == "x" else (0.6, 1.0, 2.0)), 1000.0, friction)
+    motion = SupportMotion3(DT, PULSE, None, VERTICAL)
+    if axis == "y":
+        motion = motion.rotated(0.5 * math.pi)
+    result = simulate_body(body, motion, 4.0, max_step=STEP)
+    planar = _planar(1.0, 2.0, 1000.0, 1000.0 * (1.0 + 4.0) / 12.0, friction)
+    assert result.status == planar.status == "completed"
+    _agree(result.time, result.tilt, planar.time, np.abs(planar.position[:, 0, 2]))
+    horizontal = result.state[:, 0] if axis == "x" else result.state[:, 1]
+    _agree(result.time, horizontal, planar.time, planar.position[:, 0, 0])
+    _agree(result.time, result.state[:, 2] - 1.0, planar.time, planar.position[:, 0, 1])
+    impacts = [e[0] for e in result.events if e[1] == "impact"][:10]
+    planar_impacts = [e.time for e in planar.events if e.kind == "impact"][:10]
+    np.testing.assert_allclose(impacts, planar_impacts, atol=1e-8)
+
+
+@pytest.mark.parametrize("angle", [0.0, 0.7, 2.5])
+def test_cylinder_in_any_direction_rocks_as_the_planar_block_of_its_inertia(angle):
+    friction = Friction(0.7, 0.7)
+    body = Body("c", Cylinder(0.5, 2.0), 1000.0, friction)
+    motion = SupportMotion3(DT, PULSE, None, VERTICAL).rotated(angle)
+    result = simulate_body(body, motion, 4.0, max_step=STEP)
+    planar = _planar(1.0, 2.0, 1000.0, float(np.asarray(body.inertia)[1, 1]), friction)
+    _agree(result.time, result.tilt, planar.time, np.abs(planar.position[:, 0, 2]))
+    along = result.state[:, 0] * math.cos(angle) + result.state[:, 1] * math.sin(angle)
+    _agree(result.time, along, planar.time, planar.position[:, 0, 0])
+    assert result.diagnostics["remedies"] == 0
+
+
+def test_squat_cylinder_slides_as_newmarks_block_and_on_the_circular_cone():
+    body = Body("s", Cylinder(1.0, 0.5), 1000.0, Friction(0.2, 0.2))
+    newmark = slide_block(GroundMotion(DT, PULSE), 0.2, 0.2)
+    slides = []
+    for angle in (0.0, 0.25 * math.pi):
+        result = simulate_body(body, SupportMotion3(DT, PULSE).rotated(angle), 3.0)
+        assert result.max_rotation == 0.0
+        slides.append(result.max_slide)
+        # the slide is along the motion's line
+        final = result.slide[-1]
+        assert abs(final[0] * math.sin(angle) - final[1] * math.cos(angle)) <= 1e-9
+    # Newmark's block integrates the same piecewise-linear record exactly
+    assert slides[0] == pytest.approx(newmark.max_slide, rel=1e-6)
+    # circular cone: a diagonal motion slides as far as an axis-aligned one
+    assert slides[1] == pytest.approx(slides[0], rel=1e-9)
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="known defect (#18): at a 1 rad incidence the slide leaves "
+    "the motion's line by about 1e-4 m of 0.09 m",
+)
+def test_squat_cylinder_slides_along_the_line_of_an_oblique_motion():
+    body = Body("s", Cylinder(1.0, 0.5), 1000.0, Friction(0.2, 0.2))
+    result = simulate_body(body, SupportMotion3(DT, PULSE).rotated(1.0), 3.0)
+    final = result.slide[-1]
+    assert abs(final[0] * math.sin(1.0) - final[1] * math.cos(1.0)) <= 1e-9
+
+
+def test_square_box_slides_as_far_along_the_diagonal():
+    body = Body("b", Box((2.0, 2.0, 0.5)), 1000.0, Friction(0.2, 0.2))
+    axis = simulate_body(body, SupportMotion3(DT, PULSE), 3.0)
+    diagonal = simulate_body(body, SupportMotion3(DT, PULSE).rotated(0.25 * math.pi), 3.0)
+    assert diagonal.max_slide == pytest.approx(axis.max_slide, rel=1e-9)
+    assert diagonal.max_twist < 1e-12
