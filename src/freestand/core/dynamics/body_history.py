@@ -325,6 +325,7 @@ def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHi
             "events": count,
             "impacts": int(istate[engine.I_IMPACTS]),
             "remedies": int(istate[engine.I_REMEDIES]),
+            "stretch_steps": int(istate[engine.I_STRETCH_STEPS]),
         },
     )
 
