@@ -122,7 +122,7 @@ class Subject:
             if not self.configurations:
                 raise FreestandError(
                     "a 3-D body is given; this analysis takes planar stacks only (3-D bodies: "
-                    "fs.screen)"
+                    "fs.screen, fs.simulate)"
                 )
             return self.configurations[0]
         for stack in self.configurations:
