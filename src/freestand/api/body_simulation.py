@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from freestand.api.base import Result, finite, frame
+from freestand.api.base import HistoryResult, finite, frame
 from freestand.core.body import BodyConfiguration, Box
 from freestand.core.contact.body_kernel import EDGE, FACE, FREE, POINT
 from freestand.core.dynamics.body_history import BodyTimeHistory, SupportMotion3, simulate_body
@@ -139,7 +139,7 @@ def motion_name(patch: int, sliding: bool, cylinder: bool) -> str:
 
 
 @dataclass(frozen=True)
-class BodySimulationResult(Result):
+class BodySimulationResult(HistoryResult):
     """The time history of one 3-D configuration (a box or a cylinder) under a support motion.
 
     The peaks and the verdict are attributes, per block (one body today) as
@@ -289,27 +289,9 @@ class BodySimulationResult(Result):
         return tilt_vector(self.core.state[:, 3:7], self.core.tilt)
 
     @property
-    def record(self) -> str:
-        """The record's name (``"samples"`` for a support motion given directly)."""
-        return self.motion.name if self.motion is not None and self.motion.name else "samples"
-
-    @property
     def peak_horizontal(self) -> float:
         """Peak of the horizontal support acceleration's magnitude, max |(a_x, a_y)| [m/s^2]."""
         return float(np.max(np.hypot(self.support.x, self.support.y)))
-
-    @property
-    def title(self) -> str:
-        """The figure title: model, configuration (once when they share a name), record, peak."""
-        same = self.model == self.configuration
-        name = self.model if same else f"{self.model} / {self.configuration}"
-        turned = f", turned {self.angle:g} deg" if self.angle else ""
-        return f"{name}: {self.record}{turned}, peak {self.peak_horizontal:.2f} m/s^2"
-
-    def event_counts(self) -> dict[str, int]:
-        """Number of events of each kind (sorted by kind)."""
-        kinds = sorted({event.kind for event in self.events})
-        return {kind: sum(event.kind == kind for event in self.events) for kind in kinds}
 
     def blocks(self) -> list[dict]:
         """The peaks of every block, JSON-ready (one body today)."""

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from freestand.api.base import Result, finite, frame, subject
+from freestand.api.base import HistoryResult, finite, frame, subject
 from freestand.api.body_simulation import (
     BodySimulationResult,
     check_body_options,
@@ -75,7 +75,7 @@ def support_motion(motion: GroundMotion | SupportMotion) -> SupportMotion:
 
 
 @dataclass(frozen=True)
-class SimulationResult(Result):
+class SimulationResult(HistoryResult):
     """The time history of one configuration under one support motion.
 
     The peaks and the verdict are attributes (``status``, ``max_rotation``,
@@ -178,26 +178,9 @@ class SimulationResult(Result):
         return self.core.diagnostics
 
     @property
-    def record(self) -> str:
-        """The record's name (``"samples"`` for samples given directly)."""
-        return self.motion.name if self.motion is not None and self.motion.name else "samples"
-
-    @property
     def peak_horizontal(self) -> float:
         """Peak horizontal support acceleration [m/s^2]."""
         return float(np.max(np.abs(self.support.horizontal)))
-
-    @property
-    def title(self) -> str:
-        """The figure title: model, configuration (once when they share a name), record, peak."""
-        same = self.model == self.configuration
-        name = self.model if same else f"{self.model} / {self.configuration}"
-        return f"{name}: {self.record}, peak {self.peak_horizontal:.2f} m/s^2"
-
-    def event_counts(self) -> dict[str, int]:
-        """Number of events of each kind (sorted by kind)."""
-        kinds = sorted({event.kind for event in self.events})
-        return {kind: sum(event.kind == kind for event in self.events) for kind in kinds}
 
     def blocks(self) -> list[dict]:
         """The peaks of every block, bottom to top, JSON-ready."""

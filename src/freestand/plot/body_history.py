@@ -23,6 +23,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from freestand.core.body import Box, tipping_tilt
+from freestand.core.dynamics.body_history import rotation_matrices
 from freestand.plot.body_screening import MOTION_COLOURS as SCREENING_COLOURS
 from freestand.plot.body_screening import shape_text
 from freestand.plot.timehistory import (
@@ -30,6 +31,7 @@ from freestand.plot.timehistory import (
     SLIDING_EVENTS,
     _legend,
     _scale,
+    animation_target,
     frame_indices,
     write_gif,
 )
@@ -344,15 +346,6 @@ def _solid(body) -> tuple[np.ndarray, list[np.ndarray], np.ndarray]:
     return vertices, faces, np.array(normals)
 
 
-def _rotations(quaternions: np.ndarray) -> np.ndarray:
-    w, x, y, z = quaternions.T
-    return np.stack([
-        np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
-        np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
-        np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1),
-    ], axis=1)  # fmt: skip
-
-
 def _turn(axis: np.ndarray, angle: float) -> np.ndarray:
     """Rotation matrix of ``angle`` [rad] about the unit ``axis`` (Rodrigues)."""
     k = np.array([[0.0, -axis[2], axis[1]], [axis[2], 0.0, -axis[0]], [-axis[1], axis[0], 0.0]])
@@ -369,7 +362,7 @@ def drawn_poses(result, rows: np.ndarray, exaggeration: float, vertices: np.ndar
     """
     core = result.core
     body = result.body_configuration.body
-    rotation = _rotations(core.state[rows, 3:7])
+    rotation = rotation_matrices(core.state[rows, 3:7])
     base = core.state[rows, 0:3] - rotation @ np.asarray(body.centre)
     if exaggeration == 1.0:
         return rotation, base
@@ -434,14 +427,7 @@ def animate_body(
     """
     from matplotlib.patches import Polygon
 
-    if not fps > 0:
-        raise ValueError(f"fps must be positive, not {fps!r}")
-    if max_frames < 2:
-        raise ValueError(f"max_frames must be at least 2, not {max_frames!r}")
-    if not exaggeration > 0:
-        raise ValueError(f"exaggeration must be positive, not {exaggeration!r}")
-    target = Path(path)
-    target.parent.mkdir(parents=True, exist_ok=True)
+    target = animation_target(path, fps, max_frames, exaggeration)
     core = result.core
     body = result.body_configuration.body
     instants, rows = frame_indices(core.time, fps, max_frames)

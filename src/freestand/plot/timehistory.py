@@ -325,14 +325,7 @@ def animate_time_history(
     """
     from matplotlib.patches import Polygon, Rectangle
 
-    if not fps > 0:
-        raise ValueError(f"fps must be positive, not {fps!r}")
-    if max_frames < 2:
-        raise ValueError(f"max_frames must be at least 2, not {max_frames!r}")
-    if not exaggeration > 0:
-        raise ValueError(f"exaggeration must be positive, not {exaggeration!r}")
-    target = Path(path)
-    target.parent.mkdir(parents=True, exist_ok=True)
+    target = animation_target(path, fps, max_frames, exaggeration)
     names = result.block_names
     count = len(names)
     outlines = block_outlines(stack)
@@ -462,6 +455,20 @@ def animate_time_history(
             states[block].set_text(f"{name}: {motion}")
 
     return write_gif(figure, moving, len(instants), draw_frame, target, fps=fps, dpi=dpi)
+
+
+def animation_target(path: str | Path, fps: float, max_frames: int, exaggeration: float) -> Path:
+    """The GIF's path, its folder made; ValueError for a frame rate, frame count or factor
+    an animation cannot take."""
+    if not fps > 0:
+        raise ValueError(f"fps must be positive, not {fps!r}")
+    if max_frames < 2:
+        raise ValueError(f"max_frames must be at least 2, not {max_frames!r}")
+    if not exaggeration > 0:
+        raise ValueError(f"exaggeration must be positive, not {exaggeration!r}")
+    target = Path(path)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    return target
 
 
 def write_gif(figure: Figure, moving, count: int, draw_frame, path: Path, *, fps: float,

@@ -214,7 +214,7 @@ def initial_state(body: Body, initial_tilt: tuple[float, float] = (0.0, 0.0)) ->
         axis = np.array([initial_tilt[0], initial_tilt[1], 0.0]) / angle
         y[3] = math.cos(0.5 * angle)
         y[4:7] = math.sin(0.5 * angle) * axis
-        rot = _matrices(y[3:7][None, :])[0]
+        rot = rotation_matrices(y[3:7][None, :])[0]
         points = _base_points(body)
         y[2] = -np.min((rot @ (points - np.asarray(body.centre)).T)[2])
     return y
@@ -313,7 +313,7 @@ def _buffers(capacity: int):
 
 def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHistory:
     # base centre = r - R c
-    rot = _matrices(state[:, 3:7])
+    rot = rotation_matrices(state[:, 3:7])
     base = state[:, 0:3] - rot @ np.asarray(body.centre)
     width = min(body.shape.size[:2]) if isinstance(body.shape, Box) else 2.0 * body.shape.radius
     lowest, highest = _base_heights(body, rot, base)
@@ -371,7 +371,8 @@ def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHi
     )
 
 
-def _matrices(quaternions: np.ndarray) -> np.ndarray:
+def rotation_matrices(quaternions: np.ndarray) -> np.ndarray:
+    """(K, 3, 3) rotation matrices, body to support frame, of (K, 4) quaternions (w, x, y, z)."""
     w, x, y, z = quaternions.T
     return np.stack([
         np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
