@@ -169,7 +169,7 @@ def _simulate_one(model, name, motion, duration, method, step, angle, plot, anim
     with _progress_bar(as_json) as progress:
         result = simulate_model(
             model, motion, duration, configuration=name, method=method, max_step=step,
-            progress=progress, **({"angle": angle} if angle else {}),
+            progress=progress, angle=angle,
         )  # fmt: skip
     with staging() as stage:
         draw(result, plot, animate, exaggerate, stage)
