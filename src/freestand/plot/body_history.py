@@ -395,7 +395,7 @@ def animate_body(
 
     An orthographic view from azimuth :data:`VIEW_AZIMUTH` and elevation
     :data:`VIEW_ELEVATION` of the support's frame (the support is the fixed
-    grey plate z = 0, with the record's axes x and y): the box or the
+    grey plate z = 0, with the axes x and y): the box or the
     cylinder (a prism of :data:`CYLINDER_SIDES` sides) at its recorded
     poses, its faces shaded by their orientation, the path of its base
     centre drawn on the support as it grows, the horizontal support
