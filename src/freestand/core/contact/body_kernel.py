@@ -657,16 +657,28 @@ def prepare(par, record, dt, t, y, kind, index, psi, sc):
 
 @nb.njit(cache=True)
 def slip_direction(y, n_tangent, data, sc):
-    """The sliding direction u: the slip velocity's, or the stored one when it has none."""
+    """The sliding direction u: the slip velocity's while it points on the stored one's side.
+
+    The stored direction (``data[D_SLIP:]``, the slip's direction at the
+    step's start) is kept where the slip velocity has none or has turned
+    against it: the kinetic friction then goes on decelerating the slip
+    through zero, as a planar block's friction keeps its sign within a step,
+    until the slip-stop event is located. Without it the friction flips with
+    the velocity inside an RK4 step and the stages cancel: the slip freezes
+    at a small constant velocity.
+    """
     svel = sc[SC_SVEL]
     direction = sc[SC_DIR]
     tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
     size = 0.0
+    along = 0.0
     for k in range(n_tangent):
         size += svel[k] ** 2
+        along += svel[k] * data[D_SLIP + k]
     size = math.sqrt(size)
+    own = size > SLIP_FLOOR and along > 0.0
     for k in range(n_tangent):
-        direction[k] = svel[k] / size if size > SLIP_FLOOR else data[D_SLIP + k]
+        direction[k] = svel[k] / size if own else data[D_SLIP + k]
     return direction
 
 

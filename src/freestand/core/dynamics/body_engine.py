@@ -192,6 +192,7 @@ def references(par, y, mode, data, sc, ref):
         size = math.sqrt(size)
         for i in range(n_tangent):
             ref[i] = svel[i] / size if size > 1e-12 else data[D_SLIP + i]
+            data[D_SLIP + i] = ref[i]
     if mode[M_KIND] == POINT and par[P_SHAPE] != SHAPE_BOX:
         # the step's pivot: the lowest rim point (kept on its side within the step)
         psi = lowest_rim_angle(rot, data[D_PSI])
