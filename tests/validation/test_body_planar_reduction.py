@@ -100,16 +100,16 @@ def test_squat_cylinder_slides_as_newmarks_block_and_on_the_circular_cone():
     assert slides[1] == pytest.approx(slides[0], rel=1e-9)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="known defect (#18): at a 1 rad incidence the slide leaves "
-    "the motion's line by about 1e-4 m of 0.09 m",
-)
 def test_squat_cylinder_slides_along_the_line_of_an_oblique_motion():
+    # the slip restarts from a stick (at 0.69 s) along the onset's direction: a residual
+    # slip velocity of round-off size once steered it 0.04 rad off the line (1.8e-4 m)
     body = Body("s", Cylinder(1.0, 0.5), 1000.0, Friction(0.2, 0.2))
+    axis = simulate_body(body, SupportMotion3(DT, PULSE), 3.0)
     result = simulate_body(body, SupportMotion3(DT, PULSE).rotated(1.0), 3.0)
     final = result.slide[-1]
-    assert abs(final[0] * math.sin(1.0) - final[1] * math.cos(1.0)) <= 1e-9
+    # tolerance 2e-9 m of 0.089 m: round-off grown over the slip (measured 1e-9)
+    assert abs(final[0] * math.sin(1.0) - final[1] * math.cos(1.0)) <= 2e-9
+    assert result.max_slide == pytest.approx(axis.max_slide, rel=1e-6)
 
 
 def test_square_box_slides_as_far_along_the_diagonal():

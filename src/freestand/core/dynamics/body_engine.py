@@ -444,8 +444,13 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
 
 
 @nb.njit(cache=True)
-def project(par, record, dt, t, y, mode, data, sc):
+def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     """Remove the drift of the held rows: positions on the support, their velocities zero.
+
+    A slip starting from rest (its speed within ``settle_below`` [m/s], the
+    event's velocity tolerance) has its residual slip velocity removed too:
+    the residual's direction is round-off, and the kinetic friction would
+    follow it rather than the onset's direction until the slip has grown.
 
     FACE: the tilt is removed (a pure yaw) and the base set on the support;
     EDGE and POINT: the centre of gravity shifted vertically by the held
@@ -484,6 +489,14 @@ def project(par, record, dt, t, y, mode, data, sc):
     for i in range(6):
         base[i] = y[7 + i]
     held_tangent = n_tangent if mode[M_SLIP] == 0 else 0
+    if held_tangent == 0 and settle_below > 0.0:
+        svel = sc[SC_SVEL]
+        tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
+        speed = 0.0
+        for k in range(n_tangent):
+            speed += svel[k] ** 2
+        if math.sqrt(speed) <= settle_below:
+            held_tangent = n_tangent
     after = np.empty(6)
     lam = np.empty(6)
     from_scratch = sc
@@ -557,7 +570,7 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
         mode[M_INDEX] = 0
         mode[M_SLIP] = 0
         return EV_REMEDY
-    project(par, record, dt, t, y, mode, data, sc)
+    project(par, record, dt, t, y, mode, data, sc, velocity_tol)
     return event
 
 
