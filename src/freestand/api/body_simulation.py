@@ -290,7 +290,7 @@ class BodySimulationResult(HistoryResult):
 
     @property
     def peak_horizontal(self) -> float:
-        """Peak of the horizontal support acceleration's magnitude, max |(a_x, a_y)| [m/s^2]."""
+        """Peak of the horizontal support acceleration's magnitude, max ``|(a_x, a_y)|`` [m/s^2]."""
         return float(np.max(np.hypot(self.support.x, self.support.y)))
 
     def blocks(self) -> list[dict]:
@@ -314,7 +314,7 @@ class BodySimulationResult(HistoryResult):
 
         Keys: ``model``, ``configuration``, ``shape`` (``box`` or
         ``cylinder``), ``record``, ``dt`` [s], ``angle`` [deg],
-        ``peak_horizontal`` (max |(a_x, a_y)|), ``peak_x``, ``peak_y``,
+        ``peak_horizontal`` (max ``|(a_x, a_y)|``), ``peak_x``, ``peak_y``,
         ``peak_vertical`` [m/s^2] (as simulated, after ``angle``),
         ``scale_factor`` [-], ``status``, ``message``, ``method``
         (``"3-D"``), ``blocks`` (per block ``max_rotation`` = the largest
