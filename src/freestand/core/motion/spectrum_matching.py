@@ -893,7 +893,7 @@ def _largest_pair(matrix: np.ndarray, labels: list[str]) -> tuple[float, tuple[s
 def _independence_failures(result: SuiteResult) -> list[str]:
     """The records whose components are not statistically independent (SRP 3.7.1).
 
-    US NRC SRP 3.7.1 (II.1.B) asks for the components of a record to be
+    US NRC SRP 3.7.1 (Rev. 4) asks for the components of a record to be
     statistically independent: the absolute correlation coefficient of every
     pair below ``criteria.max_correlation`` (0.3).
     """
