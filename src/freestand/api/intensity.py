@@ -64,8 +64,8 @@ def intensity_measure(
     Notes
     -----
     RotDnn (Boore 2010) is the nn-th percentile over the angles of
-    max_t |a_theta(t)| (PGA), max_t |v_theta(t)| (PGV) or
-    omega^2 max_t |u_theta(t)| (Sa). The oscillator is linear, so its
+    ``max_t |a_theta(t)|`` (PGA), ``max_t |v_theta(t)|`` (PGV) or
+    ``omega^2 max_t |u_theta(t)|`` (Sa). The oscillator is linear, so its
     response to a_theta is u_x cos theta + u_y sin theta: the two components'
     responses are computed once by the one response-spectrum recursion
     (:mod:`freestand.core.motion.response_spectrum`) and combined at every
