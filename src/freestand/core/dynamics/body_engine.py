@@ -5,11 +5,12 @@ The loop has the shape of the planar engine (:mod:`freestand.core.dynamics.engin
 
 - :func:`advance`: one RK4 step of the held contact mode (the contact forces
   solved at every stage by :func:`freestand.core.contact.body_kernel.rate`),
-  or nothing while the body rests flat and sticks (its wrench is then the
-  static one, not integrated);
+  or nothing while the body rests flat and sticks (its contact multipliers
+  are then affine in the support's accelerations, and a step is decided by
+  its ends: :func:`rest_step`);
 - :func:`locate`: the event functions at the step's end against its start;
-  when one changed sign, the earliest crossing by bisection of the step with
-  RK4 from the step's start, to ``EVENT_TIME`` [s];
+  when one changed sign, the earliest crossing by the Illinois variant of
+  regula falsi on RK4 states from the step's start, to ``EVENT_TIME`` [s];
 - :func:`resolve`: at an event, the impact law where a gap closed, then the
   contact mode of the new state (:func:`freestand.core.contact.body_modes.select_mode`),
   and the drift of the held rows projected out;
@@ -75,6 +76,7 @@ from freestand.core.contact.body_kernel import (
     sin_tilt,
     solve_at,
     solve_mode,
+    support_acceleration,
     tangential_velocity,
 )
 from freestand.core.contact.body_modes import NONE_ADMISSIBLE, impact, select_mode
@@ -88,6 +90,7 @@ TILT_FRACTION = 0.5  # a whirling lean covers at most this part of its way to th
 SLIP_FRACTION = 0.5  # a step lasts at most this part of a slip's time scale |s| / |s'|
 SLIP_MIN_STEP = 1e-4  # [s] the slip's time scale bounds no step below this
 STRETCH_STEP = 1e-4  # [s] step of the velocity-level time stepping (the remedy)
+STRETCH_CHECK = 16  # a stretch looks for a consistent mode at its steps 1, 2, 4, 8, 16, 32, 48, ...
 MIN_STEP = 1e-9  # [s] the smallest step the closing prediction may ask for
 
 # event kinds
@@ -116,7 +119,7 @@ I_STATUS = 2
 I_STEPS = 3
 I_REMEDIES = 4
 I_IMPACTS = 5
-I_STRETCH = 6  # 1 while a stretch of time stepping runs (the remedy)
+I_STRETCH = 6  # while a stretch of time stepping runs (the remedy): its steps so far + 1; else 0
 I_STRETCH_STEPS = 7
 I_SIZE = 8
 
@@ -389,28 +392,47 @@ def _whirl_step(lean, areal, landing_time, landing_speed):
 
 
 @nb.njit(cache=True)
-def _crossed(par, n, start_values, values, kinds):
-    """Kind of the first event function that crossed below its slack, or -1.
+def _levels(par, n, start_values, kinds, levels):
+    """Level below which each event function fires; NaN for a function that cannot fire.
 
-    A force margin fires when it is below ``-slack`` having started above it,
-    the slack being the admissibility tolerance (a mode is chosen within it);
-    the tilt and landing functions likewise with no slack. A gap fires when it
-    falls ``GAP_SLACK`` below the lower of zero and its value at the step's
-    start: a point released at an event may sit the held rows' drift (some
-    1e-11 m) below the support, and it must still be caught when it comes
-    back down.
+    A force margin fires when it falls below ``-slack`` having started above
+    it, the slack being the admissibility tolerance (a mode is chosen within
+    it); the tilt and landing functions likewise with no slack. A gap fires
+    when it falls ``GAP_SLACK`` below the lower of zero and its value at the
+    step's start: a point released at an event may sit the held rows' drift
+    (some 1e-11 m) below the support, and it must still be caught when it
+    comes back down.
     """
     for i in range(n):
         if kinds[i] == FN_GAP:
-            if values[i] < min(start_values[i], 0.0) - GAP_SLACK:
-                return kinds[i]
+            levels[i] = min(start_values[i], 0.0) - GAP_SLACK
             continue
         slack = 0.0
         if kinds[i] == FN_NORMAL or kinds[i] == FN_FRICTION:
             slack = 1e-9 * par[P_MASS] * par[P_GRAVITY]
-        if values[i] < -slack and start_values[i] >= -slack:
-            return kinds[i]
+        levels[i] = -slack if start_values[i] >= -slack else math.nan
+    return n
+
+
+@nb.njit(cache=True)
+def _fired(n, values, levels, prefer):
+    """Index of an event function below its level (``prefer`` if it is one), or -1."""
+    if prefer >= 0 and values[prefer] < levels[prefer]:
+        return prefer
+    for i in range(n):
+        if values[i] < levels[i]:
+            return i
     return -1
+
+
+@nb.njit(cache=True)
+def _trial_time(low, high, g_low, g_high):
+    """Next trial [s] of the Illinois search: the secant root, kept half a tolerance inside."""
+    if g_low > 0.0 and g_high < 0.0:
+        x = low + g_low * (high - low) / (g_low - g_high)
+    else:
+        x = 0.5 * (low + high)
+    return min(max(x, low + 0.5 * EVENT_TIME), high - 0.5 * EVENT_TIME)
 
 
 @nb.njit(cache=True)
@@ -422,25 +444,64 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
     Returns (step taken [s], kind of the function that fired or -1). On an
     event, ``out`` holds the state just after the crossing (within
     ``EVENT_TIME``).
+
+    The crossing is bracketed on true RK4 states from the step's start by the
+    Illinois variant of regula falsi on the function that fired (Dowell and
+    Jarratt 1971: superlinear, each end of the bracket moves), each trial kept
+    half a tolerance inside the bracket so that it closes to ``EVENT_TIME``
+    once the root is found; a trial at which another function has fired
+    becomes the bracket's end and that function the one followed. About eight
+    trials instead of the bisection's thirty.
     """
     n = event_functions(par, record, dt, t + h, out, mode, data, sc, ref, values, kinds)
-    if _crossed(par, n, start_values, values, kinds) < 0:
+    levels = np.empty(MAX_EVENT_FUNCTIONS)
+    _levels(par, n, start_values, kinds, levels)
+    target = _fired(n, values, levels, -1)
+    if target < 0:
         return h, -1
+    low_values = np.empty(MAX_EVENT_FUNCTIONS)
+    high_values = np.empty(MAX_EVENT_FUNCTIONS)
+    for i in range(n):
+        low_values[i] = start_values[i]
+        high_values[i] = values[i]
     low = 0.0
     high = h
-    while high - low > EVENT_TIME:
-        middle = 0.5 * (low + high)
+    g_low = low_values[target] - levels[target]
+    g_high = high_values[target] - levels[target]
+    side = 0
+    for _ in range(200):
+        if high - low <= EVENT_TIME:
+            break
+        middle = _trial_time(low, high, g_low, g_high)
         _rk4(par, record, dt, t, middle, y, mode, data, sc, k, trial)
         event_functions(par, record, dt, t + middle, trial, mode, data, sc, ref, values, kinds)
-        if _crossed(par, n, start_values, values, kinds) >= 0:
+        fired = _fired(n, values, levels, target)
+        if fired >= 0:
             high = middle
+            for i in range(n):
+                high_values[i] = values[i]
+            for i in range(STATE_SIZE):
+                out[i] = trial[i]
+            if fired != target:
+                target = fired
+                side = 0
+                g_low = low_values[target] - levels[target]
+            elif side == -1:
+                g_low *= 0.5
+            else:
+                side = -1
+            g_high = high_values[target] - levels[target]
         else:
             low = middle
-    if high < h:
-        _rk4(par, record, dt, t, high, y, mode, data, sc, k, out)
+            for i in range(n):
+                low_values[i] = values[i]
+            if side == 1:
+                g_high *= 0.5
+            side = 1
+            g_low = low_values[target] - levels[target]
+    # the solve at the event's state (the caller's next phase reads the scratch)
     event_functions(par, record, dt, t + high, out, mode, data, sc, ref, values, kinds)
-    which = _crossed(par, n, start_values, values, kinds)
-    return high, which if which >= 0 else kinds[0]
+    return high, kinds[target]
 
 
 @nb.njit(cache=True)
@@ -655,6 +716,64 @@ def _event(t, kind, before, after, count, ev_time, ev_kind, ev_before, ev_after)
 
 
 @nb.njit(cache=True)
+def rest_prepare(par, y, mode, data, sc, rest):
+    """Unit solutions of the resting mode: its multipliers are affine in (a_x, a_y, a_v).
+
+    At rest (no velocity) the held rows have no bias and the applied wrench
+    is ``m (-a_x, -a_y, -(g - a_v))`` at G: ``lam = rest[0] + a_x rest[1] +
+    a_y rest[2] + a_v rest[3]``.
+    """
+    unit = np.zeros((3, 2))
+    for j in range(4):
+        for i in range(3):
+            value = 1.0 if i == j - 1 else 0.0
+            unit[i, 0] = value
+            unit[i, 1] = value
+        solve_at(par, unit, 1.0, 0.0, y, mode, data, sc)
+        lam = sc[SC_LAM]
+        for i in range(6):
+            rest[j, i] = lam[i]
+    for j in range(1, 4):
+        for i in range(6):
+            rest[j, i] -= rest[0, i]
+
+
+@nb.njit(cache=True)
+def rest_margins(par, record, dt, t, rest, rot, lam):
+    """The resting mode's multipliers at t in ``lam``; (normal margin, friction margin)."""
+    a_x, a_y, a_v = support_acceleration(record, dt, t)
+    for i in range(6):
+        lam[i] = rest[0, i] + a_x * rest[1, i] + a_y * rest[2, i] + a_v * rest[3, i]
+    return normal_margin(par, rot, FACE, lam), friction_margin(par, 3, 3, lam)
+
+
+@nb.njit(cache=True)
+def rest_step(par, record, dt, t, h, rest, rot, lam):
+    """A step of the resting mode over h (within one segment of the record).
+
+    The margins are concave in the multipliers (a minimum of linear ones, or
+    ``R N - |M|``, ``mu N - |f_t|``), which are linear in time over a
+    segment: where both ends hold, the whole step holds. Otherwise the
+    crossing is bisected to EVENT_TIME. Returns (step taken, kind fired or -1).
+    """
+    slack = 1e-9 * par[P_MASS] * par[P_GRAVITY]
+    normal, friction = rest_margins(par, record, dt, t + h, rest, rot, lam)
+    if normal >= -slack and friction >= -slack:
+        return h, -1
+    low = 0.0
+    high = h
+    while high - low > EVENT_TIME:
+        middle = 0.5 * (low + high)
+        normal, friction = rest_margins(par, record, dt, t + middle, rest, rot, lam)
+        if normal < -slack or friction < -slack:
+            high = middle
+        else:
+            low = middle
+    normal, friction = rest_margins(par, record, dt, t + high, rest, rot, lam)
+    return high, FN_NORMAL if normal < -slack else FN_FRICTION
+
+
+@nb.njit(cache=True)
 def _next_end(t, breaks, h_max, t_end):
     """End of the next step: at most h_max, never across a break of the record."""
     end = min(t + h_max, t_end)
@@ -673,9 +792,23 @@ def _next_end(t, breaks, h_max, t_end):
 
 @nb.njit(cache=True)
 def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, istate):
-    """One step of the remedy; it ends where a consistent mode exists again. Returns t + h."""
+    """One step of the remedy; it ends where a consistent mode exists again. Returns t + h.
+
+    The search for a consistent mode (:func:`select_mode`, whose slip onsets
+    are costly where none exists) is made at the stretch's steps 1, 2, 4, 8
+    and then every ``STRETCH_CHECK``: a short stretch stays short, and a long
+    one lasts at most ``STRETCH_CHECK`` steps more than it must (a valid
+    time-stepping solution all along).
+    """
     advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol)
     istate[I_STRETCH_STEPS] += 1
+    steps = istate[I_STRETCH]
+    istate[I_STRETCH] += 1
+    if steps & (steps - 1) != 0 and steps % STRETCH_CHECK != 0:
+        mode[M_KIND] = FREE
+        mode[M_INDEX] = 0
+        mode[M_SLIP] = 0
+        return t + h
     none = np.array([-1, 0, 0], dtype=np.int64)
     if select_mode(par, record, dt, t + h, y, sc, gap_tol, velocity_tol, mode, data, none) >= 0:
         istate[I_STRETCH] = 0
@@ -685,6 +818,27 @@ def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, is
         mode[M_INDEX] = 0
         mode[M_SLIP] = 0
     return t + h
+
+
+@nb.njit(cache=True)
+def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mode, data, sc,
+          rest, istate, ev_time, ev_kind, ev_before, ev_after):  # fmt: skip
+    """One step of the resting body (:func:`rest_step`) and, where a margin fired, its event.
+
+    Returns t + the step taken; the scratch holds the contact force at it.
+    """
+    h = _next_end(t, breaks, h_max, t_end) - t
+    h, which = rest_step(par, record, dt, t, h, rest, sc[SC_ROT], sc[SC_LAM])
+    t += h
+    istate[I_STEPS] += 1
+    if which >= 0:
+        before = mode[M_KIND]
+        event = resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
+                        istate)  # fmt: skip
+        istate[I_EVENTS] = _event(t, event, before, mode[M_KIND], istate[I_EVENTS], ev_time,
+                                  ev_kind, ev_before, ev_after)  # fmt: skip
+        solve_at(par, record, dt, t, y, mode, data, sc)
+    return t
 
 
 @nb.njit(cache=True)
@@ -706,6 +860,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
     values = np.zeros(MAX_EVENT_FUNCTIONS)
     kinds = np.zeros(MAX_EVENT_FUNCTIONS, dtype=np.int64)
     capacity = out_t.shape[0]
+    rest = np.zeros((4, 6))
+    rest_ready = False
     if istate[I_RECORDS] == 0:
         none = np.array([-1, 0, 0], dtype=np.int64)
         if select_mode(par, record_, dt, t, y, sc, gap_tol, velocity_tol, mode, data, none) < 0:
@@ -721,7 +877,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         if istate[I_RECORDS] >= capacity:
             istate[I_STATUS] = STATUS_BUFFER_FULL
             return t
-        if istate[I_STRETCH] == 1:
+        if istate[I_STRETCH] >= 1:
             t = _stretch(par, record_, dt, t, min(STRETCH_STEP, t_end - t), y, mode, data, sc,
                          gap_tol, velocity_tol, istate)  # fmt: skip
             solve_at(par, record_, dt, t, y, mode, data, sc)
@@ -733,6 +889,18 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
                 istate[I_STATUS] = STATUS_OVERTURNED
                 return t
             continue
+        if resting(mode, y, velocity_tol):
+            if not rest_ready:
+                rest_prepare(par, y, mode, data, sc, rest)
+                rotation_matrix(y, sc[SC_ROT])
+                rest_ready = True
+            t = _rest(par, record_, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mode,
+                      data, sc, rest, istate, ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
+            rest_ready = resting(mode, y, velocity_tol)
+            record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
+            istate[I_RECORDS] += 1
+            continue
+        rest_ready = False
         references(par, y, mode, data, sc, ref)
         count = event_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values, kinds)
         h = min(_next_end(t, breaks, h_max, t_end) - t, closing_step(par, y, mode, sc, ref))
