@@ -708,7 +708,13 @@ def rate(par, record, dt, t, y, mode, data, sc, ydot):
     ``(v', omega') = x''``.
     """
     ok, _, _ = solve_at(par, record, dt, t, y, mode, data, sc)
-    acc = sc[SC_ACC]
+    state_rate(y, sc[SC_ACC], ydot)
+    return ok
+
+
+@nb.njit(cache=True)
+def state_rate(y, acc, ydot):
+    """y' from the state and the accelerations ``acc`` = (v', omega') of a solve (:func:`rate`)."""
     for i in range(3):
         ydot[i] = y[7 + i]
         ydot[7 + i] = acc[i]
@@ -720,7 +726,6 @@ def rate(par, record, dt, t, y, mode, data, sc, ydot):
     ydot[4] = 0.5 * (q0 * wx + cx)
     ydot[5] = 0.5 * (q0 * wy + cy)
     ydot[6] = 0.5 * (q0 * wz + cz)
-    return ok
 
 
 # --- gaps of the base ---------------------------------------------------------------------------

@@ -76,6 +76,7 @@ from freestand.core.contact.body_kernel import (
     sin_tilt,
     solve_at,
     solve_mode,
+    state_rate,
     support_acceleration,
     tangential_velocity,
 )
@@ -138,9 +139,13 @@ def _normalise(y):
 
 @nb.njit(cache=True)
 def _rk4(par, record, dt, t, h, y, mode, data, sc, k, out):
-    """One RK4 step of the held mode over h from (t, y) into ``out``; False if singular."""
+    """One RK4 step of the held mode over h from (t, y) into ``out``; False if singular.
+
+    ``k[0]`` holds y' at (t, y) already: the first stage does not depend on
+    h, and the step and the trials of :func:`locate` share it.
+    """
     stage = k[4]
-    ok = rate(par, record, dt, t, y, mode, data, sc, k[0])
+    ok = True
     for i in range(STATE_SIZE):
         stage[i] = y[i] + 0.5 * h * k[0, i]
     ok &= rate(par, record, dt, t + 0.5 * h, stage, mode, data, sc, k[1])
@@ -169,11 +174,16 @@ def resting(mode, y, velocity_tol):
 
 @nb.njit(cache=True)
 def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
-    """Phase 1: the state at t + h in ``out`` (RK4, or unchanged at rest); False if singular."""
+    """Phase 1: the state at t + h in ``out`` (RK4, or unchanged at rest); False if singular.
+
+    The scratch holds the held mode solved at (t, y) (:func:`event_functions`
+    at the step's start): the first stage is read from it.
+    """
     if resting(mode, y, velocity_tol):
         for i in range(STATE_SIZE):
             out[i] = y[i]
         return True
+    state_rate(y, sc[SC_ACC], k[0])
     return _rk4(par, record, dt, t, h, y, mode, data, sc, k, out)
 
 
@@ -862,6 +872,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
     capacity = out_t.shape[0]
     rest = np.zeros((4, 6))
     rest_ready = False
+    fresh = False  # the step's references and event functions at (t, y) are computed
+    count = 0
     if istate[I_RECORDS] == 0:
         none = np.array([-1, 0, 0], dtype=np.int64)
         if select_mode(par, record_, dt, t, y, sc, gap_tol, velocity_tol, mode, data, none) < 0:
@@ -901,8 +913,11 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             istate[I_RECORDS] += 1
             continue
         rest_ready = False
-        references(par, y, mode, data, sc, ref)
-        count = event_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values, kinds)
+        if not fresh:
+            references(par, y, mode, data, sc, ref)
+            count = event_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
+                                    kinds)  # fmt: skip
+        fresh = False
         h = min(_next_end(t, breaks, h_max, t_end) - t, closing_step(par, y, mode, sc, ref))
         advance(par, record_, dt, t, h, y, mode, data, sc, k, out, velocity_tol)
         h, which = locate(par, record_, dt, t, h, y, mode, data, sc, k, ref, start_values, count,
@@ -925,7 +940,14 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
                 return t
         elif not resting(mode, y, velocity_tol):
             project(par, record_, dt, t, y, mode, data, sc)
-        solve_at(par, record_, dt, t, y, mode, data, sc)
+        if istate[I_STRETCH] == 0 and not resting(mode, y, velocity_tol):
+            # the next step's references and event functions: their solve is the record's
+            references(par, y, mode, data, sc, ref)
+            count = event_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
+                                    kinds)  # fmt: skip
+            fresh = True
+        else:
+            solve_at(par, record_, dt, t, y, mode, data, sc)
         record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
         istate[I_RECORDS] += 1
         if t >= record_end and _post_record_fall(par, y, mode, sc):
