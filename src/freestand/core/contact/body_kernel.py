@@ -88,7 +88,8 @@ P_RHO_EDGE_X = 28  # of an edge along x (b_x / 2)
 P_RHO_EDGE_Y = 29  # of an edge along y (b_y / 2)
 P_GRAVITY = 30
 P_HEIGHT = 31
-P_SIZE = 32
+P_RESTITUTION = 32  # factor on the velocity after an impact [-] (1: plastic)
+P_SIZE = 33
 
 SHAPE_BOX = 0
 SHAPE_CYLINDER = 1
@@ -134,8 +135,12 @@ def annulus_twist_radius(radius: float, inner_radius: float = 0.0) -> float:
     return 2.0 / 3.0 * (radius**3 - inner_radius**3) / (radius**2 - inner_radius**2)
 
 
-def body_parameters(body: Body, gravity: float) -> np.ndarray:
-    """The parameter vector of the compiled kernel for ``body`` (SI units)."""
+def body_parameters(body: Body, gravity: float, restitution: float = 1.0) -> np.ndarray:
+    """The parameter vector of the compiled kernel for ``body`` (SI units).
+
+    ``restitution`` [-] multiplies the body's velocity after each impact (1:
+    the plastic impact law; the planar engine's factor, ``docs/timehistory.md``).
+    """
     out = np.zeros(P_SIZE)
     out[P_MASS] = body.mass
     inertia = np.asarray(body.inertia, dtype=float)
@@ -159,6 +164,7 @@ def body_parameters(body: Body, gravity: float) -> np.ndarray:
     out[P_MU_KINETIC] = body.friction.kinetic
     out[P_GRAVITY] = gravity
     out[P_HEIGHT] = shape.height
+    out[P_RESTITUTION] = restitution
     return out
 
 

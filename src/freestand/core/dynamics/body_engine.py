@@ -46,6 +46,7 @@ from freestand.core.contact.body_kernel import (
     P_HALF_X,
     P_MASS,
     P_MU_KINETIC,
+    P_RESTITUTION,
     P_SHAPE,
     PIVOT_LEAN,
     POINT,
@@ -622,8 +623,9 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
         else:
             istate[I_IMPACTS] += 1
             event = EV_IMPACT
+        # the restitution factor on the velocity after (relative to the support)
         for i in range(6):
-            y[7 + i] = after[i]
+            y[7 + i] = par[P_RESTITUTION] * after[i]
     excluded = np.array([-1, 0, 0], dtype=np.int64)
     if which == FN_NORMAL:
         excluded[0] = mode[M_KIND]
