@@ -131,14 +131,14 @@ STATUS_OVERTURNED = 2
 STATUS_BUFFER_FULL = 3
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _normalise(y):
     size = math.sqrt(y[3] ** 2 + y[4] ** 2 + y[5] ** 2 + y[6] ** 2)
     for i in range(3, 7):
         y[i] /= size
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _rk4(par, record, dt, t, h, y, mode, data, sc, k, out):
     """One RK4 step of the held mode over h from (t, y) into ``out``; False if singular.
 
@@ -162,7 +162,7 @@ def _rk4(par, record, dt, t, h, y, mode, data, sc, k, out):
     return ok
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def resting(mode, y, velocity_tol):
     """True while the body sits flat, sticks and does not move (not integrated)."""
     if mode[M_KIND] != FACE or mode[M_SLIP] != 0:
@@ -173,7 +173,7 @@ def resting(mode, y, velocity_tol):
     return True
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
     """Phase 1: the state at t + h in ``out`` (RK4, or unchanged at rest); False if singular.
 
@@ -188,7 +188,7 @@ def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
     return _rk4(par, record, dt, t, h, y, mode, data, sc, k, out)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def references(par, y, mode, data, sc, ref):
     """The step's references: the slip direction (3) and the pivot's horizontal direction (2)."""
     rot = sc[SC_ROT]
@@ -224,7 +224,7 @@ def references(par, y, mode, data, sc, ref):
         ref[4] = py / size
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
     """The event functions at (t, y) in the held mode (>= 0 while it holds); their count."""
     ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
@@ -278,7 +278,7 @@ def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
     return count
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _closing_time(value, rate_, acceleration):
     """Earliest t > 0 with value + rate t + acceleration t^2 / 2 = 0 [s]; inf if none."""
     if acceleration == 0.0:
@@ -294,7 +294,7 @@ def _closing_time(value, rate_, acceleration):
     return best
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def closing_step(par, y, mode, sc, ref):
     """Largest step [s] that cannot step over the closing of a gap and its reopening.
 
@@ -349,7 +349,7 @@ def closing_step(par, y, mode, sc, ref):
     return max(CLOSING_OVERSHOOT * earliest, MIN_STEP)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _slip_turn_time(mode, sc):
     """Time [s] in which a slip's velocity could stop or turn: |s| / |s'| times SLIP_FRACTION.
 
@@ -376,7 +376,7 @@ def _slip_turn_time(mode, sc):
     return max(limit, SLIP_MIN_STEP) / CLOSING_OVERSHOOT
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _whirl_step(lean, areal, landing_time, landing_speed):
     """Largest step [s] of a rolling cylinder whose lean whirls; inf when it lands as in a plane.
 
@@ -402,7 +402,7 @@ def _whirl_step(lean, areal, landing_time, landing_speed):
     return min(now, TILT_FRACTION * landing_time + WHIRL_ANGLE * distance / landing_speed)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _levels(par, n, start_values, kinds, levels):
     """Level below which each event function fires; NaN for a function that cannot fire.
 
@@ -425,7 +425,7 @@ def _levels(par, n, start_values, kinds, levels):
     return n
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _fired(n, values, levels, prefer):
     """Index of an event function below its level (``prefer`` if it is one), or -1."""
     if prefer >= 0 and values[prefer] < levels[prefer]:
@@ -436,7 +436,7 @@ def _fired(n, values, levels, prefer):
     return -1
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _trial_time(low, high, g_low, g_high):
     """Next trial [s] of the Illinois search: the secant root, kept half a tolerance inside."""
     if g_low > 0.0 and g_high < 0.0:
@@ -446,7 +446,7 @@ def _trial_time(low, high, g_low, g_high):
     return min(max(x, low + 0.5 * EVENT_TIME), high - 0.5 * EVENT_TIME)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count, trial,
            values, kinds, out):  # fmt: skip
     """Phase 2: the earliest crossing of an event function within the step.
@@ -515,7 +515,7 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
     return high, kinds[target]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     """Remove the drift of the held rows: positions on the support, their velocities zero.
 
@@ -579,7 +579,7 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
             y[7 + i] = after[i]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _post_record_fall(par, y, mode, sc):
     """True when, without excitation, a pivoting body is past its top: tilting and falling."""
     if mode[M_KIND] != POINT and mode[M_KIND] != EDGE:
@@ -591,7 +591,7 @@ def _post_record_fall(par, y, mode, sc):
     return rate_cos < 0.0 and y[9] < 0.0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which, istate):
     """Phase 3: the impact (a gap closed) and the next contact mode; the event kind."""
     event = EV_LIFT_OFF
@@ -647,7 +647,7 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
     return event
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol):
     """The remedy's step: one Moreau-Jean step of length h (Jean 1999), in place on ``y``.
 
@@ -674,14 +674,14 @@ def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol):
         y[7 + i] = velocity[i]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _fall_speed(velocity, par):
     """A bound of the speed [m/s] at which a base point approaches the support."""
     return abs(velocity[2]) + par[P_HALF_X] * 2.0 * math.sqrt(
         velocity[3] ** 2 + velocity[4] ** 2 + velocity[5] ** 2)  # fmt: skip
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _turn(y, ax, ay, az):
     """Turn the orientation quaternion y[3:7] by the rotation vector (ax, ay, az) [rad] (world)."""
     angle = math.sqrt(ax * ax + ay * ay + az * az)
@@ -698,7 +698,7 @@ def _turn(y, ax, ay, az):
     _normalise(y)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def record(t, y, mode, sc, count, out_t, out_y, out_mode, out_force):
     """Phase 4: write the state, the mode and the contact force (N, |f_t|) at row ``count``."""
     out_t[count] = t
@@ -717,7 +717,7 @@ def record(t, y, mode, sc, count, out_t, out_y, out_mode, out_force):
     out_force[count, 1] = math.sqrt(size)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _event(t, kind, before, after, count, ev_time, ev_kind, ev_before, ev_after):
     if count < ev_time.shape[0]:
         ev_time[count] = t
@@ -727,7 +727,7 @@ def _event(t, kind, before, after, count, ev_time, ev_kind, ev_before, ev_after)
     return count + 1
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def rest_prepare(par, y, mode, data, sc, rest):
     """Unit solutions of the resting mode: its multipliers are affine in (a_x, a_y, a_v).
 
@@ -750,7 +750,7 @@ def rest_prepare(par, y, mode, data, sc, rest):
             rest[j, i] -= rest[0, i]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def rest_margins(par, record, dt, t, rest, rot, lam):
     """The resting mode's multipliers at t in ``lam``; (normal margin, friction margin)."""
     a_x, a_y, a_v = support_acceleration(record, dt, t)
@@ -759,7 +759,7 @@ def rest_margins(par, record, dt, t, rest, rot, lam):
     return normal_margin(par, rot, FACE, lam), friction_margin(par, 3, 3, lam)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def rest_step(par, record, dt, t, h, rest, rot, lam):
     """A step of the resting mode over h (within one segment of the record).
 
@@ -785,7 +785,7 @@ def rest_step(par, record, dt, t, h, rest, rot, lam):
     return high, FN_NORMAL if normal < -slack else FN_FRICTION
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _next_end(t, breaks, h_max, t_end):
     """End of the next step: at most h_max, never across a break of the record."""
     end = min(t + h_max, t_end)
@@ -802,7 +802,7 @@ def _next_end(t, breaks, h_max, t_end):
     return end
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, istate):
     """One step of the remedy; it ends where a consistent mode exists again. Returns t + h.
 
@@ -832,7 +832,7 @@ def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, is
     return t + h
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mode, data, sc,
           rest, istate, ev_time, ev_kind, ev_before, ev_after):  # fmt: skip
     """One step of the resting body (:func:`rest_step`) and, where a margin fired, its event.
@@ -853,7 +853,7 @@ def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mo
     return t
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol, t, y, mode,
         data, istate, out_t, out_y, out_mode, out_force, ev_time, ev_kind, ev_before,
         ev_after):  # fmt: skip
