@@ -516,6 +516,20 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
 
 
 @nb.njit(cache=True, error_model="numpy")
+def _flatten(par, y, rot):
+    """The base flat on the support: the tilt removed (a pure yaw), the base centre at z = 0."""
+    size = math.hypot(y[3], y[6])
+    y[3] /= size
+    y[4] = 0.0
+    y[5] = 0.0
+    y[6] /= size
+    rotation_matrix(y, rot)
+    d = np.empty(3)
+    arm(par, rot, 0.0, 0.0, 0.0, d)
+    y[2] -= y[2] + d[2]
+
+
+@nb.njit(cache=True, error_model="numpy")
 def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     """Remove the drift of the held rows: positions on the support, their velocities zero.
 
@@ -536,14 +550,7 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     rotation_matrix(y, rot)
     d = np.empty(3)
     if kind == FACE:
-        size = math.hypot(y[3], y[6])
-        y[3] /= size
-        y[4] = 0.0
-        y[5] = 0.0
-        y[6] /= size
-        rotation_matrix(y, rot)
-        arm(par, rot, 0.0, 0.0, 0.0, d)
-        y[2] -= y[2] + d[2]
+        _flatten(par, y, rot)
     elif kind == EDGE:
         g0, _ = corner_gap(par, y, rot, mode[M_INDEX], d)
         g1, _ = corner_gap(par, y, rot, (mode[M_INDEX] + 1) % 4, d)
@@ -603,10 +610,16 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
         return EV_OVERTURN
     rot = sc[SC_ROT]
     if which == FN_LANDING:
+        # the base lands where it is flat: to the gap tolerance, or leaning by less than
+        # PIVOT_LEAN (where the body turns about its stored rim point, as a planar block);
+        # otherwise the lean passes over the vertical beside the pivot (it whirls)
         rotation_matrix(y, rot)
-        if flat_gap(par, y, rot) > gap_tol:
+        gap = flat_gap(par, y, rot)
+        if gap > gap_tol + 2.0 * par[P_HALF_X] * PIVOT_LEAN:
             event = EV_LANDING_MISS
             which = -1
+        elif gap > gap_tol:
+            _flatten(par, y, rot)
     if which == FN_GAP or which == FN_LANDING:
         prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
         after = np.empty(6)
