@@ -59,6 +59,7 @@ from freestand.core.contact.body_kernel import (
     SC_TANGENT,
     SC_TBIAS,
     SHAPE_BOX,
+    SLIP_FLOOR,
     STATE_SIZE,
     arm,
     corner_gap,
@@ -205,7 +206,7 @@ def references(par, y, mode, data, sc, ref):
             size += svel[i] ** 2
         size = math.sqrt(size)
         for i in range(n_tangent):
-            ref[i] = svel[i] / size if size > 1e-12 else data[D_SLIP + i]
+            ref[i] = svel[i] / size if size > SLIP_FLOOR else data[D_SLIP + i]
             data[D_SLIP + i] = ref[i]
     if mode[M_KIND] == POINT and par[P_SHAPE] != SHAPE_BOX:
         # the step's pivot: the lowest rim point (kept on its side within the step)
@@ -338,14 +339,19 @@ def closing_step(par, y, mode, sc, ref):
         value = ex * ref[3] + ey * ref[4]
         slope = ux * ref[3] + uy * ref[4]
         curvature = (ax + cx) * ref[3] + (ay + cy) * ref[4]
-        earliest = _closing_time(max(value, 0.0), slope, curvature)
+        landing = _closing_time(max(value, 0.0), slope, curvature)
         lean = math.sqrt(ex * ex + ey * ey)
-        if lean > PIVOT_LEAN and earliest < math.inf:
-            areal = abs(ex * uy - ey * ux)
-            landing_speed = abs(slope + curvature * earliest)
-            limit = _whirl_step(lean, areal, earliest, landing_speed)
+        areal = abs(ex * uy - ey * ux)
+        if lean > PIVOT_LEAN and landing < math.inf:
+            landing_speed = abs(slope + curvature * landing)
+            limit = _whirl_step(lean, areal, landing, landing_speed)
             if limit < math.inf:
-                return max(limit, MIN_STEP)
+                return max(min(limit, CLOSING_OVERSHOOT * earliest), MIN_STEP)
+        earliest = min(earliest, landing)
+        if lean > PIVOT_LEAN and areal > 0.0:
+            # a wobbling cylinder: its rim point swings by at most WHIRL_ANGLE in a step
+            return max(min(CLOSING_OVERSHOOT * earliest, WHIRL_ANGLE * lean * lean / areal),
+                       MIN_STEP)  # fmt: skip
     return max(CLOSING_OVERSHOOT * earliest, MIN_STEP)
 
 
