@@ -68,12 +68,18 @@ def _released(shape, mu, ratio, tilt, duration=3.0):
 # Released bodies that once broke the engine: a slip onset whose fixed point cycles
 # (the slip direction by scan and bisection), a remedy loop (the velocity-level impact
 # and the time-stepping stretch), a slow edge slip that made RK4 oscillate, a slender
-# cylinder whose lean whirls near flat (the rim point swings round the rim).
+# cylinder whose lean whirls near flat (the rim point swings round the rim), a squat
+# cylinder rocking back to flat whose lean passes 3.5e-7 rad beside the vertical (a
+# landing within PIVOT_LEAN of flat: it once passed over, took a remedy and gained 0.3 J),
+# the same released on the diagonal (it wobbled at the default step with no bound on its
+# rim point's swing, and its base went 2e-6 m into the support).
 RELEASED_CASES = [
     (Box((0.5279, 0.9853, 1.2121)), 0.41, 0.85, (-0.0659, -0.0044)),
     (Box((1.4753, 0.6036, 1.8869)), 0.205, 0.779, (-0.0236, -0.1182)),
     (Box((1.4225, 0.5810, 1.0558)), 0.925, 0.978, (0.0661, -0.0814)),
     (Cylinder(0.4790, 1.9338), 0.80, 1.0, (0.0772, -0.1360)),
+    (Cylinder(0.875, 1.25), 0.625, 1.0, (0.125, 0.0625)),
+    (Cylinder(0.875, 1.25), 0.625, 1.0, (0.125, 0.125)),
 ]
 
 

@@ -611,7 +611,10 @@ SC_SVEL = 14
 SC_SACC = 15
 SC_DIR = 16
 
-SLIP_FLOOR = 1e-12  # [m/s] below which a slip velocity has no direction of its own
+#: [m/s] below which a slip velocity has no direction of its own: above the residue (some
+#: 1e-11 m/s) that the drift projection leaves in the rows of a slip starting from rest,
+#: whose direction is round-off and not the onset's.
+SLIP_FLOOR = 1e-9
 
 
 @nb.njit(cache=True, error_model="numpy")

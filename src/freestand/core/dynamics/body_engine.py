@@ -59,6 +59,7 @@ from freestand.core.contact.body_kernel import (
     SC_TANGENT,
     SC_TBIAS,
     SHAPE_BOX,
+    SLIP_FLOOR,
     STATE_SIZE,
     arm,
     corner_gap,
@@ -205,7 +206,7 @@ def references(par, y, mode, data, sc, ref):
             size += svel[i] ** 2
         size = math.sqrt(size)
         for i in range(n_tangent):
-            ref[i] = svel[i] / size if size > 1e-12 else data[D_SLIP + i]
+            ref[i] = svel[i] / size if size > SLIP_FLOOR else data[D_SLIP + i]
             data[D_SLIP + i] = ref[i]
     if mode[M_KIND] == POINT and par[P_SHAPE] != SHAPE_BOX:
         # the step's pivot: the lowest rim point (kept on its side within the step)
@@ -338,14 +339,19 @@ def closing_step(par, y, mode, sc, ref):
         value = ex * ref[3] + ey * ref[4]
         slope = ux * ref[3] + uy * ref[4]
         curvature = (ax + cx) * ref[3] + (ay + cy) * ref[4]
-        earliest = _closing_time(max(value, 0.0), slope, curvature)
+        landing = _closing_time(max(value, 0.0), slope, curvature)
         lean = math.sqrt(ex * ex + ey * ey)
-        if lean > PIVOT_LEAN and earliest < math.inf:
-            areal = abs(ex * uy - ey * ux)
-            landing_speed = abs(slope + curvature * earliest)
-            limit = _whirl_step(lean, areal, earliest, landing_speed)
+        areal = abs(ex * uy - ey * ux)
+        if lean > PIVOT_LEAN and landing < math.inf:
+            landing_speed = abs(slope + curvature * landing)
+            limit = _whirl_step(lean, areal, landing, landing_speed)
             if limit < math.inf:
-                return max(limit, MIN_STEP)
+                return max(min(limit, CLOSING_OVERSHOOT * earliest), MIN_STEP)
+        earliest = min(earliest, landing)
+        if lean > PIVOT_LEAN and areal > 0.0:
+            # a wobbling cylinder: its rim point swings by at most WHIRL_ANGLE in a step
+            return max(min(CLOSING_OVERSHOOT * earliest, WHIRL_ANGLE * lean * lean / areal),
+                       MIN_STEP)  # fmt: skip
     return max(CLOSING_OVERSHOOT * earliest, MIN_STEP)
 
 
@@ -516,6 +522,20 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
 
 
 @nb.njit(cache=True, error_model="numpy")
+def _flatten(par, y, rot):
+    """The base flat on the support: the tilt removed (a pure yaw), the base centre at z = 0."""
+    size = math.hypot(y[3], y[6])
+    y[3] /= size
+    y[4] = 0.0
+    y[5] = 0.0
+    y[6] /= size
+    rotation_matrix(y, rot)
+    d = np.empty(3)
+    arm(par, rot, 0.0, 0.0, 0.0, d)
+    y[2] -= y[2] + d[2]
+
+
+@nb.njit(cache=True, error_model="numpy")
 def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     """Remove the drift of the held rows: positions on the support, their velocities zero.
 
@@ -536,14 +556,7 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     rotation_matrix(y, rot)
     d = np.empty(3)
     if kind == FACE:
-        size = math.hypot(y[3], y[6])
-        y[3] /= size
-        y[4] = 0.0
-        y[5] = 0.0
-        y[6] /= size
-        rotation_matrix(y, rot)
-        arm(par, rot, 0.0, 0.0, 0.0, d)
-        y[2] -= y[2] + d[2]
+        _flatten(par, y, rot)
     elif kind == EDGE:
         g0, _ = corner_gap(par, y, rot, mode[M_INDEX], d)
         g1, _ = corner_gap(par, y, rot, (mode[M_INDEX] + 1) % 4, d)
@@ -603,10 +616,16 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
         return EV_OVERTURN
     rot = sc[SC_ROT]
     if which == FN_LANDING:
+        # the base lands where it is flat: to the gap tolerance, or leaning by less than
+        # PIVOT_LEAN (where the body turns about its stored rim point, as a planar block);
+        # otherwise the lean passes over the vertical beside the pivot (it whirls)
         rotation_matrix(y, rot)
-        if flat_gap(par, y, rot) > gap_tol:
+        gap = flat_gap(par, y, rot)
+        if gap > gap_tol + 2.0 * par[P_HALF_X] * PIVOT_LEAN:
             event = EV_LANDING_MISS
             which = -1
+        elif gap > gap_tol:
+            _flatten(par, y, rot)
     if which == FN_GAP or which == FN_LANDING:
         prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
         after = np.empty(6)
