@@ -256,6 +256,9 @@ def _simulate(
     omega = omega0
     in_pulse = kind != 5 and dur > 0.0
     resting = theta == 0.0 and omega == 0.0
+    # set when a start of rocking was undone (its flight too short to resolve): the
+    # block then rests for the step even if the excitation still exceeds the threshold
+    settled = False
     side = 1
     if theta < 0.0 or (theta == 0.0 and omega < 0.0):
         side = -1
@@ -324,6 +327,18 @@ def _simulate(
             a_now = _accel(kind, exc, rec, t, in_pulse)
             g_now = _gravity(par, exc, vrec, t, in_pulse) if has_vertical else g
             s_now = _starts(tan_p, tan_m, a_now, g_now)
+            if s_now != 0 and settled:
+                # the excitation barely exceeds the threshold: rest for the step (starting
+                # again at once would undo the same start forever)
+                settled = False
+                t = t + h
+                if n_hist < n_hist_max:
+                    hist_t[n_hist] = t
+                    hist_th[n_hist] = theta
+                    hist_om[n_hist] = omega
+                    n_hist += 1
+                continue
+            settled = False
             if s_now != 0:
                 side = s_now
                 resting = False
@@ -403,6 +418,7 @@ def _simulate(
                 if not found:
                     # flight too short to resolve: the block settles on its base
                     resting = True
+                    settled = True
                     theta = 0.0
                     omega = 0.0
                     continue
