@@ -68,6 +68,7 @@ _PUBLIC = {
     "floor_motion": "freestand.api",
     "ScreeningResult": "freestand.api",
     "SimulationResult": "freestand.api",
+    "BodyOverturningResult": "freestand.api",
     "BodySimulationResult": "freestand.api",
     "OverturningResult": "freestand.api",
     "FrequencyResult": "freestand.api",

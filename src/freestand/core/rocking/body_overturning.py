@@ -38,6 +38,10 @@ period). The lowest amplitude a that overturns it, against the frequency
   :func:`excitation_plane_block`); a cut motion counts as not overturned and
   is counted in the diagnostics (``undecided``).
 
+A body that friction keeps flat (``mu_0 h < r``, r the distance from G's
+projection to the base's outline: :func:`slides_flat`) slides and never
+lifts: it is not searched, and nothing overturns it.
+
 The margin that the search refines is the energy at the end of the pulse
 over that barrier, ``(E - m g' h) / (m g' (d - h))`` (h the height of the
 centre of gravity at rest): the planar margin for a cylinder or a square box
@@ -138,6 +142,41 @@ def tipping_distance(body: Body) -> float:
     return math.hypot(body.shape.radius - offset, centre[2])
 
 
+def base_inradius(body: Body) -> float:
+    """Horizontal distance [m] from the centre of gravity's projection to the base's outline.
+
+    Box: ``min(b_x - |c_x|, b_y - |c_y|)``; cylinder: ``R - |c_xy|``.
+    """
+    cx, cy = float(body.centre[0]), float(body.centre[1])
+    if isinstance(body.shape, Box):
+        return min(0.5 * body.shape.size[0] - abs(cx), 0.5 * body.shape.size[1] - abs(cy))
+    return body.shape.radius - math.hypot(cx, cy)
+
+
+def slides_flat(body: Body) -> bool:
+    """Whether friction keeps the body flat under any horizontal excitation: ``mu_0 h < r``.
+
+    r from :func:`base_inradius`, h the height of G. Flat on the support, the
+    horizontal contact force is at most ``mu_0 N`` (static, and the kinetic
+    coefficient is not larger), so the centre of pressure stays within
+    ``mu_0 h`` of G's projection, inside the base: the base never lifts,
+    whatever the horizontal pulse and a constant vertical acceleration (as
+    the screening's flat slide, ``docs/three-d.md``). Such a body slides and
+    never overturns.
+    """
+    return body.friction.static * body.centre_height < base_inradius(body)
+
+
+def easiest_direction(body: Body, vertical: float = 0.0, gravity: float = GRAVITY,
+                      count: int = 24) -> float:  # fmt: skip
+    """phi [deg] of the lowest uplift threshold among ``count`` directions evenly over 0-360
+    (the first of equal ones; a cylinder with G on its axis: 0)."""
+    directions = 360.0 * np.arange(count) / count
+    thresholds = [uplift_threshold(body, math.radians(d), vertical, gravity) for d in directions]
+    lowest = min(thresholds)
+    return float(directions[next(k for k, a in enumerate(thresholds) if a <= lowest * (1 + 1e-12))])
+
+
 def excitation_plane_block(
     body: Body, direction: float, gravity: float = GRAVITY, vertical: float = 0.0
 ) -> RockingBlock:
@@ -214,6 +253,9 @@ class BodyOverturningCurve:
         Ratio between the scan's amplitudes and the bisection's relative bracket [-].
     samples_per_pulse : int
         Samples of the pulse [-].
+    slides_flat : bool
+        Friction keeps the base flat (:func:`slides_flat`): no search was
+        run, nothing overturns (``found`` all False).
     simulations, failed, undecided, remedies, stretch_steps : numpy.ndarray
         Per frequency: the 3-D simulations the search ran; those whose
         energy rose above the excitation's work (counted as not overturned:
@@ -235,6 +277,7 @@ class BodyOverturningCurve:
     scan_ratio: float
     rel_tol: float
     samples_per_pulse: int
+    slides_flat: bool
     simulations: np.ndarray
     failed: np.ndarray
     undecided: np.ndarray
@@ -516,8 +559,12 @@ def body_overturning_limits(
     result = np.empty(f.size)
     status = np.empty(f.size, dtype=np.int64)
     counters = np.zeros((f.size, _COUNTERS), dtype=np.int64)
+    flat = slides_flat(body)
+    if flat:
+        result[:] = math.inf
+        status[:] = 1
     batch = max(1, nb.get_num_threads())
-    for start in range(0, f.size, batch):
+    for start in range(0, 0 if flat else f.size, batch):
         part = slice(start, min(start + batch, f.size))
         _lowest_amplitudes(par, units[part], dts[part], along, h_max, rest, tolerances.gap,
                            tolerances.velocity, e_rest, e_barrier, free_time, a_lo, a_hi[part],
@@ -526,6 +573,9 @@ def body_overturning_limits(
         if progress is not None:
             for _ in range(part.stop - part.start):
                 progress()
+    if flat and progress is not None:
+        for _ in range(f.size):
+            progress()
     limits = limits_with_operating(kind, f, {EXACT_3D: result}, status == 0, operating_amplitude)
     return BodyOverturningCurve(
         body=body.name,
@@ -540,6 +590,7 @@ def body_overturning_limits(
         scan_ratio=float(scan_ratio),
         rel_tol=float(rel_tol),
         samples_per_pulse=int(samples_per_pulse),
+        slides_flat=flat,
         simulations=counters[:, _SIMULATIONS].copy(),
         failed=counters[:, _FAILED].copy(),
         undecided=counters[:, _UNDECIDED].copy(),
