@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 
@@ -14,6 +13,7 @@ from freestand.api.simulation import body_configuration
 from freestand.core.contact.screening import Motion, initial_motion
 from freestand.core.model import Block, Excitation, Stack
 from freestand.core.motion.spectra import Spectrum, SpectrumCheck
+from freestand.core.rocking.body_overturning import largest_horizontal
 from freestand.core.rocking.overturning import (
     CURVE_FREQUENCIES,
     TABLE_FREQUENCIES,
@@ -416,7 +416,7 @@ def overturning(
         check_body_options(body, block, pivot, spectrum, amplitudes, restitution)
         return body_overturning(
             what.name, body, _frequencies(frequencies), direction=direction,
-            operating_amplitude=_body_operating_amplitude(what.excitations),
+            operating_amplitude=largest_horizontal(what.excitations),
             vertical_acceleration=(
                 vertical_for_overturning(what.excitations) if include_vertical else 0.0
             ),
@@ -456,13 +456,6 @@ def overturning(
         include_vertical=include_vertical,
         vertical_acceleration=vertical,
     )
-
-
-def _body_operating_amplitude(excitations) -> float | None:
-    """The largest horizontal magnitude |(x, y)| of the excitations [m/s^2], None if none."""
-    if not excitations:
-        return None
-    return max(math.hypot(e.horizontal, e.horizontal_y) for e in excitations)
 
 
 def check_planar_direction(name: str, direction: float | None) -> None:

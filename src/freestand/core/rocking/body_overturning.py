@@ -167,6 +167,13 @@ def slides_flat(body: Body) -> bool:
     return body.friction.static * body.centre_height < base_inradius(body)
 
 
+def largest_horizontal(excitations) -> float | None:
+    """The largest horizontal magnitude |(x, y)| of the excitations [m/s^2], None if none."""
+    if not excitations:
+        return None
+    return max(math.hypot(e.horizontal, e.horizontal_y) for e in excitations)
+
+
 def easiest_direction(body: Body, vertical: float = 0.0, gravity: float = GRAVITY,
                       count: int = 24) -> float:  # fmt: skip
     """phi [deg] of the lowest uplift threshold among ``count`` directions evenly over 0-360
