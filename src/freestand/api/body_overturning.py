@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from freestand.api.base import Result, finite, frame
+from freestand.api.base import Result, finite, frame, weight_text
 from freestand.core.body import BodyConfiguration, Box
 from freestand.core.rocking.body_overturning import (
     BodyOverturningCurve,
@@ -114,9 +114,7 @@ class BodyOverturningResult(Result):
     @property
     def weight(self) -> str:
         """The weight the limits use, in words."""
-        if self.include_vertical:
-            return f"weight m (g - a_v) with a_v = {self.vertical_acceleration:.2f} m/s^2 downward"
-        return "weight m g (the vertical support acceleration not included; see --include-vertical)"
+        return weight_text(self.include_vertical, self.vertical_acceleration)
 
     def to_dict(self) -> dict:
         """The ``freestand overturn --json`` document of a 3-D configuration.

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from freestand.api.base import Result, finite, frame, resolve_spectrum, subject
+from freestand.api.base import Result, finite, frame, resolve_spectrum, subject, weight_text
 from freestand.api.body_overturning import BodyOverturningResult, body_overturning
 from freestand.api.simulation import body_configuration
 from freestand.core.contact.screening import Motion, initial_motion
@@ -132,9 +132,7 @@ class OverturningResult(Result):
     @property
     def weight(self) -> str:
         """The weight the limits use, in words."""
-        if self.include_vertical:
-            return f"weight m (g - a_v) with a_v = {self.vertical_acceleration:.2f} m/s^2 downward"
-        return "weight m g (the vertical support acceleration not included; see --include-vertical)"
+        return weight_text(self.include_vertical, self.vertical_acceleration)
 
     def to_dict(self) -> dict:
         """The ``freestand overturn --json`` document (one configuration).
