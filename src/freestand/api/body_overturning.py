@@ -135,6 +135,12 @@ class BodyOverturningResult(Result):
         ``remedies``, ``stretch_steps``), ``weight``,
         ``vertical_acceleration`` [m/s^2] and ``figures``. None where no
         overturning amplitude was found.
+
+        Returns
+        -------
+        dict
+            JSON-ready: str, int, float, bool, None, lists and dicts
+            (non-finite floats as None).
         """
         curve, plane = self.half_sine, self.plane.about("pivot")
         operating = dict(self.curves.operating_frequency)
@@ -194,6 +200,12 @@ class BodyOverturningResult(Result):
         ``half_sine_planar_exact`` [m/s^2] (inf where none was found).
         ``attrs``: ``model``, ``configuration``, ``block``, ``direction [deg]``,
         ``pivot``, ``weight``, ``operating_amplitude [m/s^2]``.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table described above: units in the column names, metadata in
+            ``attrs``.
         """
         f = self.half_sine.frequency
         values = zip(
