@@ -64,6 +64,20 @@ def test_inputs_summary_figure_and_method(bodies_report):
     assert "3-D bodies" in report.text and "Housner 1963, generalised" in report.text
 
 
+def test_the_3d_bodies_under_half_sine_pulses(bodies_report):
+    """Section 4's pulse table: the cabinet along y is its y-z rectangle (planar exact limit
+    4.7064 m/s^2 at 1 Hz, 7.5454 at 2 Hz; the search's bracket 1e-4); the cask slides."""
+    _, content, report = bodies_report
+    where = {"configuration": "cabinet", "block": "cabinet"}
+    assert report.one("pulse_direction", **where).value == 90.0
+    assert report.one("pulse_limit_1Hz", **where).value == pytest.approx(4.7064, rel=2e-4)
+    assert report.one("pulse_limit_2Hz", **where).value == pytest.approx(7.5454, rel=2e-4)
+    assert math.isinf(report.one("pulse_limit_1Hz", configuration="cask", block="cask").value)
+    summary = " ".join(content.summary)
+    assert "No horizontal pulse overturns the cask (cask)" in summary
+    assert "A half-sine pulse along 90 deg (its lowest uplift threshold)" in summary
+
+
 def test_a_model_with_both_kinds_reports_both():
     text = BODIES.read_text() + PLANAR
     model = load_model_text(text, source="both.toml")

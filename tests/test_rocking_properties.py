@@ -159,3 +159,16 @@ def test_overturned_block_lies_on_its_side():
     assert result.time_overturned == result.time[-1]
     decided = simulate(block, Pulse("half-sine", 0.6 * 9.81, frequency=1.0), decide=True)
     assert decided.overturned and decided.margin >= 1
+
+
+def test_a_pulse_that_just_reaches_the_uplift_threshold_ends():
+    # b / h = 0.5: the threshold (g - a_v) b / h is a round-off above g tan(alpha), so the
+    # pulse's peak starts rocking that cannot be resolved within a step; the block rests
+    # for the step instead of undoing the same start forever (the scan of the exact
+    # limit starts at this amplitude)
+    block = RockingBlock.rectangle(1.0, 0.5, 1.0)
+    result = simulate(block, Pulse("half-sine", block.uplift_threshold, frequency=4.0),
+                      decide=True)  # fmt: skip
+    assert not result.overturned
+    limit = exact_minimum_overturning_amplitude(block, "half-sine", 4.0, scan_ratio=1.05)
+    assert limit.found and limit.amplitude > block.uplift_threshold

@@ -72,6 +72,7 @@ _PUBLIC = {
     "IntensityMeasure": "freestand.core.sweeps.fragility.intensity",
     "ScreeningResult": "freestand.api",
     "SimulationResult": "freestand.api",
+    "BodyOverturningResult": "freestand.api",
     "BodySimulationResult": "freestand.api",
     "OverturningResult": "freestand.api",
     "FrequencyResult": "freestand.api",

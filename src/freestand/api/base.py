@@ -99,6 +99,13 @@ class HistoryResult(Result):
         return {kind: sum(event.kind == kind for event in self.events) for kind in kinds}
 
 
+def weight_text(include_vertical: bool, vertical_acceleration: float) -> str:
+    """The weight an overturning limit uses, in words: m g, or m (g - a_v) with a_v [m/s^2]."""
+    if include_vertical:
+        return f"weight m (g - a_v) with a_v = {vertical_acceleration:.2f} m/s^2 downward"
+    return "weight m g (the vertical support acceleration not included; see --include-vertical)"
+
+
 def frame(rows: Sequence[dict], columns: Sequence[str], attrs: dict):
     """A DataFrame of ``rows`` with exactly ``columns`` (in that order) and ``attrs``."""
     import pandas as pd

@@ -2,15 +2,18 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
-from freestand.api.base import Result, finite, frame, resolve_spectrum, subject
+from freestand.api.base import Result, finite, frame, resolve_spectrum, subject, weight_text
+from freestand.api.body_overturning import BodyOverturningResult, body_overturning
+from freestand.api.simulation import body_configuration
 from freestand.core.contact.screening import Motion, initial_motion
 from freestand.core.model import Block, Excitation, Stack
 from freestand.core.motion.spectra import Spectrum, SpectrumCheck
+from freestand.core.rocking.body_overturning import largest_horizontal
 from freestand.core.rocking.overturning import (
     CURVE_FREQUENCIES,
     TABLE_FREQUENCIES,
@@ -129,9 +132,7 @@ class OverturningResult(Result):
     @property
     def weight(self) -> str:
         """The weight the limits use, in words."""
-        if self.include_vertical:
-            return f"weight m (g - a_v) with a_v = {self.vertical_acceleration:.2f} m/s^2 downward"
-        return "weight m g (the vertical support acceleration not included; see --include-vertical)"
+        return weight_text(self.include_vertical, self.vertical_acceleration)
 
     def to_dict(self) -> dict:
         """The ``freestand overturn --json`` document (one configuration).
@@ -320,7 +321,9 @@ def overturning(
     include_vertical: bool = False,
     excitations: Excitation | Iterable[Excitation] | None = None,
     gravity: float | None = None,
-) -> OverturningResult:
+    direction: float | None = None,
+    progress: Callable[[], None] | None = None,
+) -> OverturningResult | BodyOverturningResult:
     """Overturning of a rocking block with nothing on top, on a steady body (paper section 5).
 
     The block's rocking properties about both pivots (Housner 1963: R,
@@ -334,9 +337,20 @@ def overturning(
     one-sine and one-cosine pulses, and a horizontal spectrum against each
     limit (paper Fig. 8).
 
+    A 3-D configuration (a box or a cylinder): the minimum overturning
+    amplitude of half-sine, one-sine and one-cosine pulses along
+    ``direction`` at the frequencies asked, by the 3-D engine (it may slide,
+    rock about an edge or a corner, roll on its rim) with the planar search
+    (:mod:`freestand.core.rocking.body_overturning`), beside the planar limits
+    of the block in the pulse's vertical plane; the result is a
+    :class:`~freestand.api.body_overturning.BodyOverturningResult`. ``block``
+    may only name the body; ``pivot``, ``spectrum``, ``amplitudes`` and
+    ``restitution`` are for planar blocks. Each frequency costs some tens to
+    hundreds of 3-D simulations (seconds).
+
     Parameters
     ----------
-    model : ModelFile, Stack or Block
+    model : ModelFile, Stack, Block or BodyConfiguration
         A loaded model file, a stack (its top block is checked unless
         ``block`` names it) or a single block on a steady base.
     configuration : str, optional
@@ -362,10 +376,16 @@ def overturning(
         In place of the model's (for a stack or block: give them, or ``amplitudes``).
     gravity : float, optional
         g [m/s^2] (default: the model's, 9.81 otherwise).
+    direction : float, optional
+        3-D configurations: phi [deg] of the pulses' positive acceleration,
+        from +x towards +y (default: the direction of the lowest uplift
+        threshold, every 15 deg). A planar block refuses it.
+    progress : callable, optional
+        3-D configurations: called once per pulse kind and frequency done.
 
     Returns
     -------
-    OverturningResult
+    OverturningResult or BodyOverturningResult
         ``to_dict()`` (the ``freestand overturn --json`` document),
         ``to_frame()`` (limits per frequency) and ``plot()`` (Figs. 6-8).
 
@@ -378,11 +398,30 @@ def overturning(
     ('right', 0.439)
     >>> result.to_frame().columns[:3].tolist()
     ['frequency [Hz]', 'half_sine_duration [s]', 'half_sine_housner [m/s^2]']
+
+    A 3-D cabinet under pulses along y:
+
+    >>> bodies = fs.load_model("examples/bodies.toml")
+    >>> cabinet = fs.overturning(bodies, configuration="cabinet", direction=90, frequencies=[0.5])
+    >>> cabinet.half_sine.pivot, round(float(cabinet.half_sine.amplitude[0]), 2)  # [m/s^2]
+    ('edge -y', 3.32)
     """
     if isinstance(model, Block):
         model = Stack(model.name, (model,))
     what = subject(model, excitations, gravity)
+    body = body_configuration(what, configuration)
+    if body is not None:
+        check_body_options(body, block, pivot, spectrum, amplitudes, restitution)
+        return body_overturning(
+            what.name, body, _frequencies(frequencies), direction=direction,
+            operating_amplitude=largest_horizontal(what.excitations),
+            vertical_acceleration=(
+                vertical_for_overturning(what.excitations) if include_vertical else 0.0
+            ),
+            include_vertical=include_vertical, gravity=what.gravity, progress=progress,
+        )  # fmt: skip
     stack = what.configuration(configuration)
+    check_planar_direction(stack.name, direction)
     block_name = stack.blocks[-1].name if block is None else block
     vertical = vertical_for_overturning(what.excitations) if include_vertical else 0.0
     pivot, rocking = _rocking_block(what, stack, block_name, pivot, vertical, restitution)
@@ -415,6 +454,41 @@ def overturning(
         include_vertical=include_vertical,
         vertical_acceleration=vertical,
     )
+
+
+def check_planar_direction(name: str, direction: float | None) -> None:
+    """FreestandError for a pulse direction given for the planar configuration ``name``."""
+    if direction is not None:
+        raise FreestandError(
+            f"--direction {direction:g} is the direction of the pulses on a 3-D configuration "
+            f"(a box or a cylinder), and {name!r} is planar (its pulses act in its plane); "
+            "leave --direction out, or choose a 3-D configuration",
+            source="--direction",
+        )
+
+
+def check_body_options(configuration, block, pivot, spectrum, amplitudes, restitution) -> None:
+    """FreestandError for an option of a planar block given for a 3-D configuration."""
+    name = configuration.body.name
+    if block is not None and block != name:
+        raise FreestandError(
+            f"no block named {block!r} in the 3-D configuration {configuration.name!r}: its "
+            f"body is {name!r}; leave --block out or give {name!r}",
+            source="--block",
+        )
+    planar_only = {
+        "--pivot": (pivot, "the body tips about the edge, corner or rim point the pulse drives"),
+        "--spectrum": (spectrum, "the 3-D limits are computed at a few frequencies only"),
+        "--amplitudes": (amplitudes, "rectangular pulses are planar"),
+        "--restitution": (restitution, "the 3-D impacts are plastic"),
+    }
+    for option, (value, why) in planar_only.items():
+        if value is not None:
+            raise FreestandError(
+                f"{option} is for planar blocks, and {configuration.name!r} is 3-D ({why}); "
+                f"leave {option} out, or choose a planar configuration",
+                source=option,
+            )
 
 
 def check_block(what, stack: Stack, block_name: str, pivot: str | None) -> Block:

@@ -16,6 +16,7 @@ from freestand.core.rocking.overturning import OverturningLimits, RectangularPul
 from freestand.plot.figures import save_figure
 
 __all__ = [
+    "plot_body_pulse_limits",
     "plot_pulse_limits",
     "plot_rectangular_pulse",
     "plot_spectrum_check",
@@ -106,13 +107,56 @@ def plot_pulse_limits(limits: OverturningLimits, *, title: str | None = None, ax
     return fig
 
 
-def _draw_limits(ax, limits: OverturningLimits) -> None:
+def plot_body_pulse_limits(
+    curve, reference: OverturningLimits, *, title: str | None = None, ax=None
+) -> Figure:
+    """The 3-D body's minimum overturning amplitude over the planar limits of its pulse's plane.
+
+    Parameters
+    ----------
+    curve : freestand.core.rocking.body_overturning.BodyOverturningCurve
+        The 3-D limit (points at its frequencies, joined by a line; a cross
+        on the lower axis where none was found up to the search limit).
+    reference : OverturningLimits
+        The planar limits of the block in the pulse's vertical plane (thin
+        lines, "planar" in the legend).
+    title : str, optional
+        Figure title.
+    ax : matplotlib.axes.Axes, optional
+        Draw into these axes (default: a new figure).
+    """
+    fig, ax = _new_figure(ax)
+    _draw_limits(ax, reference, prefix="planar, pulse's plane: ", operating=False, linewidth=1.0)
+    f, a = curve.frequency, curve.amplitude
+    found = np.isfinite(a)
+    label = f"3-D exact, along {curve.direction:g} deg (tips about {curve.pivot})"
+    ax.loglog(f[found], a[found], "o-", color="k", linewidth=2.0, markersize=6, label=label)
+    if not found.all():
+        low = ax.get_ylim()[0]
+        ax.plot(f[~found], np.full(int((~found).sum()), low), "x", color="k", markersize=9,
+                clip_on=False, label="3-D: none found up to the search limit")  # fmt: skip
+    a0 = curve.limits.operating_amplitude
+    if a0 is not None:
+        ax.axhline(a0, color="0.4", linewidth=0.8, linestyle=":")
+        f0 = curve.limits.operating_frequency["exact-3d"]
+        if np.isfinite(f0):
+            ax.plot([f0], [a0], "s", color="k", markerfacecolor="none", markersize=9,
+                    label=f"{a0:.2f} m/s^2 overturns up to {f0:.2f} Hz (3-D)")  # fmt: skip
+    ax.set_title(title or "Half-sine pulse: overturning above the curves")
+    ax.legend(loc="upper left", fontsize="small")
+    return fig
+
+
+def _draw_limits(
+    ax, limits: OverturningLimits, prefix: str = "", operating: bool = True, **line
+) -> None:
     f = limits.frequency
     for name, values in limits.limits.items():
-        style = _STYLE.get(name, {"label": name})
+        style = dict(_STYLE.get(name, {"label": name}), **line)
+        style["label"] = prefix + style["label"]
         finite = np.isfinite(values)
         ax.loglog(f[finite], values[finite], **style)
-    if limits.operating_amplitude is not None:
+    if operating and limits.operating_amplitude is not None:
         a0 = limits.operating_amplitude
         ax.axhline(a0, color="0.4", linewidth=0.8, linestyle=":")
         for name, f0 in limits.operating_frequency.items():

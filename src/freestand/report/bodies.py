@@ -1,7 +1,10 @@
-"""The report's parts for 3-D configurations: inputs, screening by direction, method.
+"""The report's parts for 3-D configurations: inputs, screening by direction, pulses, method.
 
 :func:`collect_body_cases` screens every 3-D configuration of a model as
-``freestand screen`` does (24 directions); the HTML functions format the
+``freestand screen`` does (24 directions); :func:`collect_body_pulses` finds
+each body's minimum overturning half-sine amplitude at a few frequencies in
+its direction of lowest uplift threshold (``freestand overturn``); the HTML
+functions format the
 result for :mod:`freestand.report.html`: the bodies and the excitations'
 components among the inputs, a table per configuration and excitation with
 the initial motion, uplift threshold and contact forces in every direction
@@ -15,6 +18,12 @@ import math
 
 from freestand.core.body import Body, Box
 from freestand.core.contact.body_screening import BodyScreeningCase, screen_body_configuration
+from freestand.core.rocking.body_overturning import (
+    BodyOverturningCurve,
+    body_overturning_limits,
+    easiest_direction,
+    largest_horizontal,
+)
 from freestand.io.results import degrees
 from freestand.report.markup import Document, data_attrs, esc, number_cell, table_head
 from freestand.report.tables import body_case_sentence, body_direction_rows
@@ -22,7 +31,55 @@ from freestand.report.tables import body_case_sentence, body_direction_rows
 #: Directions of the report's sweep (every 15 deg), as ``freestand screen`` by default.
 REPORT_DIRECTIONS = 24
 
+#: Half-sine frequencies [Hz] of the report's 3-D overturning check: few, as each is a search
+#: of some tens to hundreds of 3-D simulations (about 3 s for the example cabinet on two cores).
+REPORT_PULSE_FREQUENCIES = (0.5, 1.0, 2.0)
+#: Relative bracket of the report's search [-]: the table shows 2 decimals of m/s^2.
+REPORT_PULSE_REL_TOL = 1e-4
+
 _MS2 = "m/s<sup>2</sup>"
+
+
+def collect_body_pulses(model) -> tuple[tuple[str, BodyOverturningCurve], ...]:
+    """(configuration, half-sine curve) of every 3-D configuration of ``model``: weight m g,
+    the direction of lowest uplift threshold, ``REPORT_PULSE_FREQUENCIES``."""
+    operating = largest_horizontal(model.excitations)
+    return tuple(
+        (configuration.name, body_overturning_limits(
+            configuration.body, REPORT_PULSE_FREQUENCIES,
+            easiest_direction(configuration.body, 0.0, model.gravity), gravity=model.gravity,
+            operating_amplitude=operating, rel_tol=REPORT_PULSE_REL_TOL,
+        ))
+        for configuration in model.body_configurations
+    )  # fmt: skip
+
+
+def pulse_sentence(configuration: str, curve: BodyOverturningCurve) -> str:
+    """What a half-sine pulse does to the body, in a sentence of the summary."""
+    name = f"the {curve.body} ({configuration})"
+    if curve.slides_flat:
+        return (
+            f"No horizontal pulse overturns {name}: friction keeps its base flat (mu_0 h is "
+            "less than the distance from its centre of gravity to the base's edge), it slides."
+        )
+    limits = ", ".join(
+        f"{a:.2f} m/s^2 at {f:g} Hz" if math.isfinite(a) else f"none found at {f:g} Hz"
+        for f, a in zip(curve.frequency, curve.amplitude, strict=True)
+    )
+    text = (
+        f"A half-sine pulse along {curve.direction:g} deg (its lowest uplift threshold) "
+        f"overturns {name} from {limits} (3-D engine)"
+    )
+    operating = curve.limits.operating_amplitude
+    if operating is not None:
+        f0 = curve.limits.operating_frequency["exact-3d"]
+        text += (
+            f"; one of the largest excitation's {operating:.2f} m/s^2 overturns it up to about "
+            f"{f0:.2f} Hz" if math.isfinite(f0)
+            else f"; one of the largest excitation's {operating:.2f} m/s^2 does not at these "
+            "frequencies"
+        )  # fmt: skip
+    return text + "."
 
 
 def collect_body_cases(model) -> tuple[BodyScreeningCase, ...]:
@@ -36,10 +93,12 @@ def collect_body_cases(model) -> tuple[BodyScreeningCase, ...]:
     )
 
 
-def body_sentences(model, cases: tuple[BodyScreeningCase, ...], histories: tuple = ()) -> list[str]:
-    """The summary's sentences: what each body does per excitation, what it did under the
-    record (``histories``: one :class:`~freestand.api.body_simulation.BodySimulationResult`
-    per 3-D configuration), or what is not assessed without one."""
+def body_sentences(model, cases: tuple[BodyScreeningCase, ...], histories: tuple = (),
+                   pulses: tuple = ()) -> list[str]:  # fmt: skip
+    """The summary's sentences: what each body does per excitation, what half-sine pulses do
+    to it (``pulses``: :func:`collect_body_pulses`), what it did under the record
+    (``histories``: one :class:`~freestand.api.body_simulation.BodySimulationResult` per
+    3-D configuration), or what is not assessed without one."""
     bodies = {c.name: c.body for c in model.body_configurations}
     sentences = [
         f"3-D configuration {case.configuration}. "
@@ -54,11 +113,12 @@ def body_sentences(model, cases: tuple[BodyScreeningCase, ...], histories: tuple
             if state.motion.value in ("rock", "slide-rock", "free-flight")
         }
     )
+    sentences += [pulse_sentence(name, curve) for name, curve in pulses]
     if lifting and not histories:
         sentences.append(
             f"The 3-D bodies that lift ({', '.join(lifting)}) are not assessed for overturning "
-            "here: that needs their time history under a ground record (freestand report "
-            "--record, or freestand simulate)."
+            "under a ground record here (only under pulses): that needs their time history "
+            "(freestand report --record, or freestand simulate)."
         )
     return sentences + [history_sentence(result) for result in histories]
 
@@ -293,6 +353,65 @@ screening gives the first instant only.</p>
 NO_HISTORY_HTML = """<p>Without a ground record (<code>freestand report --record</code>) the
 rocking and overturning of 3-D bodies over time are not assessed in this report.</p>
 """
+
+
+def pulses_html(doc: Document, pulses: tuple) -> str:
+    """Section 4's part for the 3-D configurations under half-sine pulses: one table."""
+    frequencies = pulses[0][1].frequency
+    parts = [
+        '<h3 id="body-pulses">3-D configurations under half-sine pulses</h3>',
+        "<p>Each 3-D body is shaken from rest by one half-sine pulse of the support "
+        "acceleration in its direction of lowest uplift threshold, weight m g, and simulated "
+        "on after it until it overturns or its energy is below the barrier to tipping (its "
+        "centre of gravity over the nearest point of the base's outline). The lowest "
+        "overturning amplitude is searched as the planar exact limit's (Makris and Roussos "
+        "2000: overturning is not monotone in the amplitude), each amplitude a 3-D "
+        "simulation (section 5; <code>freestand overturn</code> for other directions and "
+        "frequencies). A body that friction keeps flat slides and is not searched.</p>",
+    ]
+    rows = []
+    for configuration, curve in pulses:
+        operating = curve.limits.operating_frequency.get("exact-3d", math.nan)
+        rows.append(
+            f"<tr{data_attrs(configuration=configuration, block=curve.body)}>"
+            f"<td>{esc(configuration)}</td><td>{esc(curve.body)}</td>"
+            + number_cell(curve.direction, 0, "pulse_direction")
+            + f"<td>{esc(curve.pivot)}</td>"
+            + "".join(
+                number_cell(
+                    a, 2, f"pulse_limit_{f:g}Hz", text="slides" if curve.slides_flat else None
+                )  # fmt: skip
+                for f, a in zip(curve.frequency, curve.amplitude, strict=True)
+            )
+            + number_cell(
+                operating,
+                2,
+                "pulse_operating_frequency",
+                text=None if math.isfinite(operating) else "none",
+            )  # fmt: skip
+            + "</tr>"
+        )
+    heads = [f"{f:g} Hz [m/s<sup>2</sup>]" for f in frequencies]
+    parts.append(
+        doc.table(
+            "Lowest overturning amplitude of a half-sine pulse, 3-D (&#8734;: none found up "
+            "to the search limit; slides: friction keeps the base flat), and the frequency up "
+            "to which a pulse of the largest excitation's horizontal magnitude overturns the "
+            "body (interpolated between the frequencies).",
+            table_head(
+                "configuration",
+                "body",
+                "direction [deg]",
+                "tips about",
+                *heads,
+                "largest excitation overturns up to [Hz]",
+            ),  # fmt: skip
+            rows,
+            cls="wide",
+            table="body-pulses",
+        )
+    )
+    return "".join(parts)
 
 
 def histories_html(doc: Document, histories: tuple) -> str:

@@ -44,7 +44,7 @@ from freestand.core.rocking.properties import RockingBlock
 from freestand.core.structure.beam import FrequencySweep, JumpCheck, frequency_sweep, jump_check
 from freestand.errors import FreestandError
 from freestand.io.model_file import ModelFile
-from freestand.report.bodies import body_sentences, collect_body_cases
+from freestand.report.bodies import body_sentences, collect_body_cases, collect_body_pulses
 
 #: Callback told about each step: (description, steps done, steps in all).
 Progress = Callable[[str, int, int], None]
@@ -206,6 +206,9 @@ class ReportContent:
     body_histories : tuple of BodySimulationResult
         The time history of every 3-D configuration under the report's record
         (:func:`freestand.simulate`), when one was given.
+    body_pulses : tuple of (str, BodyOverturningCurve)
+        The half-sine overturning limits of every 3-D configuration
+        (:func:`freestand.report.bodies.collect_body_pulses`).
     """
 
     model: ModelFile
@@ -221,6 +224,7 @@ class ReportContent:
     fragility: object | None = None
     body_cases: tuple = ()
     body_histories: tuple = ()
+    body_pulses: tuple = ()
 
     @property
     def flagged(self) -> tuple[InitialMotion, ...]:
@@ -602,13 +606,14 @@ def summary_sentences(
     frequency: FrequencyAssessment | None,
     body_cases: tuple = (),
     body_histories: tuple = (),
+    body_pulses: tuple = (),
 ) -> tuple[str, ...]:
     """The conclusions at the top of the report, like the paper's section 7."""
     sentences = [f"Warning: {message}." for message in model.warnings()]
     for stack in model.configurations:
         own = [c for c in cases if c.configuration == stack.name]
         sentences.append(_configuration_sentence(stack, own))
-    sentences += body_sentences(model, body_cases, body_histories)
+    sentences += body_sentences(model, body_cases, body_histories, body_pulses)
     flagged = [c for c in cases if c.status in ("ambiguous", "inconsistent")]
     if flagged:
         listed = "; ".join(f"{c.configuration}, {case_label(c)} ({c.status})" for c in flagged)
@@ -682,6 +687,9 @@ def collect_report(
     frequency = assess_frequency(model)
     overturning = tuple(assessments)
     body_cases = collect_body_cases(model)
+    if model.body_configurations:
+        tell("3-D bodies under half-sine pulses", total - 1, total)
+    body_pulses = collect_body_pulses(model)
     return ReportContent(
         model=model,
         model_file=os.path.basename(model.source),
@@ -693,11 +701,19 @@ def collect_report(
         skipped=tuple(skipped),
         frequency=frequency,
         summary=summary_sentences(
-            model, cases, overturning, tuple(skipped), frequency, body_cases, body_histories
+            model,
+            cases,
+            overturning,
+            tuple(skipped),
+            frequency,
+            body_cases,
+            body_histories,
+            body_pulses,
         ),
         fragility=_fragility(model, tell, total),
         body_cases=body_cases,
         body_histories=tuple(body_histories),
+        body_pulses=body_pulses,
     )
 
 

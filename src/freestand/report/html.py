@@ -787,6 +787,10 @@ def _overturning(doc: _Document, content: ReportContent) -> str:
             f'<p id="no-rocking">No {blocks} lifts in any screened case: no overturning '
             "assessment is needed.</p>"
         )
+    if content.body_pulses:
+        from freestand.report.bodies import pulses_html
+
+        parts.append(pulses_html(doc, content.body_pulses))
     if content.body_histories:
         from freestand.report.bodies import histories_html
 
@@ -794,8 +798,8 @@ def _overturning(doc: _Document, content: ReportContent) -> str:
     elif content.body_cases:
         parts.append(
             '<p id="bodies-not-assessed">The 3-D bodies (section 3) are not assessed for '
-            "overturning: that needs their time history under a ground record "
-            "(<code>freestand report --record</code>).</p>"
+            "overturning under a ground record (only under the pulses above): that needs "
+            "their time history (<code>freestand report --record</code>).</p>"
         )
     for number, item in enumerate(content.overturning, start=1):
         parts.append(_assessment(doc, item, number))

@@ -45,6 +45,7 @@ from dataclasses import dataclass
 import numba as nb
 import numpy as np
 
+from freestand.core.rocking.amplitude_search import lowest_overturning_amplitude
 from freestand.core.rocking.properties import RockingBlock
 from freestand.errors import FreestandError
 
@@ -255,6 +256,9 @@ def _simulate(
     omega = omega0
     in_pulse = kind != 5 and dur > 0.0
     resting = theta == 0.0 and omega == 0.0
+    # set when a start of rocking was undone (its flight too short to resolve): the
+    # block then rests for the step even if the excitation still exceeds the threshold
+    settled = False
     side = 1
     if theta < 0.0 or (theta == 0.0 and omega < 0.0):
         side = -1
@@ -323,6 +327,18 @@ def _simulate(
             a_now = _accel(kind, exc, rec, t, in_pulse)
             g_now = _gravity(par, exc, vrec, t, in_pulse) if has_vertical else g
             s_now = _starts(tan_p, tan_m, a_now, g_now)
+            if s_now != 0 and settled:
+                # the excitation barely exceeds the threshold: rest for the step (starting
+                # again at once would undo the same start forever)
+                settled = False
+                t = t + h
+                if n_hist < n_hist_max:
+                    hist_t[n_hist] = t
+                    hist_th[n_hist] = theta
+                    hist_om[n_hist] = omega
+                    n_hist += 1
+                continue
+            settled = False
             if s_now != 0:
                 side = s_now
                 resting = False
@@ -402,6 +418,7 @@ def _simulate(
                 if not found:
                     # flight too short to resolve: the block settles on its base
                     resting = True
+                    settled = True
                     theta = 0.0
                     omega = 0.0
                     continue
@@ -510,87 +527,21 @@ def _pulse_exc(kind, amp, omega):
 
 
 @nb.njit(cache=True)
-def _bisect_amplitude(par, kind, omega, rec, lo, hi, rel_tol, h_max):
-    """Bisect between a safe amplitude lo and an overturning amplitude hi."""
-    for _ in range(200):
-        if hi - lo <= rel_tol * hi:
-            break
-        mid = 0.5 * (lo + hi)
-        ov, _m = _outcome(par, kind, _pulse_exc(kind, mid, omega), rec, h_max)
-        if ov:
-            hi = mid
-        else:
-            lo = mid
-    return hi
+def _pulse_outcome(context, amplitude):
+    """(overturned, margin) under the pulse of ``amplitude`` [m/s^2] (decide mode).
 
-
-@nb.njit(cache=True)
-def _min_amplitude_one(par, kind, omega, a_lo, a_hi, ratio, rel_tol, h_max):
-    """Lowest overturning amplitude of a pulse at angular frequency omega.
-
-    March up in amplitude by ``ratio`` from ``a_lo`` (no rocking); at the
-    first overturning amplitude bisect back. Between grid points, a local
-    maximum of the overturning margin is refined by golden-section search so
-    that a narrow overturning band below the first grid crossing is not
-    missed. Returns (amplitude, status): status 0 found, 1 none up to a_hi.
+    ``context`` = (par, kind, omega, h_max); the simulator of
+    :func:`freestand.core.rocking.amplitude_search.lowest_overturning_amplitude`.
     """
-    rec = np.empty(0)
-    a_pp = a_lo
-    m_pp = -1.0
-    a_p = a_lo
-    _ov, m_p = _outcome(par, kind, _pulse_exc(kind, a_lo, omega), rec, h_max)
-    a = a_lo * ratio
-    gr = 0.5 * (math.sqrt(5.0) - 1.0)
-    while a <= a_hi * ratio:
-        ov, m = _outcome(par, kind, _pulse_exc(kind, a, omega), rec, h_max)
-        # a local maximum of the margin at the previous grid point
-        if m_p > 0.2 and m_p > m_pp and m_p >= m:
-            x0 = a_pp
-            x3 = a
-            x1 = x3 - gr * (x3 - x0)
-            x2 = x0 + gr * (x3 - x0)
-            o1, f1 = _outcome(par, kind, _pulse_exc(kind, x1, omega), rec, h_max)
-            o2, f2 = _outcome(par, kind, _pulse_exc(kind, x2, omega), rec, h_max)
-            hit = -1.0
-            if o1:
-                hit = x1
-            elif o2:
-                hit = x2
-            it = 0
-            while hit < 0.0 and it < 40 and (x3 - x0) > 1e-9 * x3:
-                if f1 >= f2:
-                    x3 = x2
-                    x2 = x1
-                    f2 = f1
-                    x1 = x3 - gr * (x3 - x0)
-                    o1, f1 = _outcome(par, kind, _pulse_exc(kind, x1, omega), rec, h_max)
-                    if o1:
-                        hit = x1
-                else:
-                    x0 = x1
-                    x1 = x2
-                    f1 = f2
-                    x2 = x0 + gr * (x3 - x0)
-                    o2, f2 = _outcome(par, kind, _pulse_exc(kind, x2, omega), rec, h_max)
-                    if o2:
-                        hit = x2
-                it += 1
-            if hit > 0.0:
-                return _bisect_amplitude(par, kind, omega, rec, a_pp, hit, rel_tol, h_max), 0
-        if ov:
-            return _bisect_amplitude(par, kind, omega, rec, a_p, a, rel_tol, h_max), 0
-        a_pp = a_p
-        m_pp = m_p
-        a_p = a
-        m_p = m
-        a = a * ratio
-    return math.inf, 1
+    par, kind, omega, h_max = context
+    return _outcome(par, kind, _pulse_exc(kind, amplitude, omega), np.empty(0), h_max)
 
 
 @nb.njit(cache=True, parallel=True)
 def _min_amplitude_many(par, kind, omegas, a_lo, a_his, ratio, rel_tol, h_maxs, result, status):
     for i in nb.prange(omegas.shape[0]):
-        a, s = _min_amplitude_one(par, kind, omegas[i], a_lo, a_his[i], ratio, rel_tol, h_maxs[i])
+        context = (par, kind, omegas[i], h_maxs[i])
+        a, s = lowest_overturning_amplitude(_pulse_outcome, context, a_lo, a_his[i], ratio, rel_tol)
         result[i] = a
         status[i] = s
 
@@ -1088,7 +1039,8 @@ def exact_minimum_overturning_amplitude(
     steps up by ``scan_ratio``, refines every local maximum of the
     overturning margin (:class:`RockingResult`) by golden-section search to
     catch bands narrower than a step, and bisects to the first overturning
-    amplitude. Frequencies run in parallel (numba prange).
+    amplitude (:mod:`freestand.core.rocking.amplitude_search`, shared with the
+    3-D body). Frequencies run in parallel (numba prange).
     """
     if pulse_kind not in PULSE_KINDS or pulse_kind == "rectangular":
         raise FreestandError(

@@ -230,12 +230,25 @@ def overturning_limits(
         result = exact_minimum_overturning_amplitude(block, kind, f)
         limits["exact"] = np.asarray(result.amplitude, dtype=float)
         found = np.asarray(result.found, dtype=bool)
+    return limits_with_operating(kind, f, limits, found, operating_amplitude)
+
+
+def limits_with_operating(
+    kind: str,
+    frequency: np.ndarray,
+    limits: dict[str, np.ndarray],
+    found: np.ndarray,
+    operating_amplitude: float | None = None,
+) -> OverturningLimits:
+    """:class:`OverturningLimits` of the given limits, with the frequency up to which
+    ``operating_amplitude`` [m/s^2] overturns the block by each (when given)."""
     op: dict[str, float] = {}
     if operating_amplitude is not None:
         op = {
-            name: _crossing_frequency(f, lim, operating_amplitude) for name, lim in limits.items()
+            name: _crossing_frequency(frequency, lim, operating_amplitude)
+            for name, lim in limits.items()
         }
-    return OverturningLimits(kind, f, limits, found, operating_amplitude, op)
+    return OverturningLimits(kind, frequency, limits, found, operating_amplitude, op)
 
 
 def check_spectrum(limits: OverturningLimits, spectrum: Spectrum) -> dict[str, SpectrumCheck]:
