@@ -360,9 +360,41 @@ def _peak_magnitude(time: np.ndarray, value: np.ndarray, rate: np.ndarray) -> fl
     )
 
 
+def history_peaks(
+    time: np.ndarray, rotation: np.ndarray, rate: np.ndarray, slide: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Peak ``|rotation|`` and ``|slide|`` of every block of a sampled history.
+
+    ``rotation``, ``rate`` [rad, rad/s] and ``slide`` [m] have shape (rows,
+    B). The rotation's peak is refined between samples as in
+    :func:`_peak_magnitude`; the slide's is the largest finite ``|slide|``
+    (0 for none; NaN samples, of overturned blocks, skipped). One compiled
+    pass over the columns, the values of :func:`_peak_magnitude` and of
+    ``nan_to_num(nanmax(abs(slide), axis=0, initial=0))``.
+    """
+    return _history_peaks_kernel(np.ascontiguousarray(time, dtype=float), rotation, rate, slide)
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _history_peaks_kernel(time, rotation, rate, slide):
+    """:func:`history_peaks` compiled."""
+    count = rotation.shape[1]
+    max_rotation = np.empty(count)
+    max_slide = np.empty(count)
+    for i in range(count):
+        max_rotation[i] = _peak_kernel(time, rotation[:, i], rate[:, i])
+        peak = 0.0
+        for k in range(slide.shape[0]):
+            value = abs(slide[k, i])
+            if value > peak:
+                peak = value
+        max_slide[i] = np.finfo(np.float64).max if math.isinf(peak) else peak
+    return max_rotation, max_slide
+
+
 @nb.njit(cache=True, error_model="numpy")
 def _peak_kernel(time, value, rate):
-    """:func:`_peak_magnitude` on contiguous float arrays (non-finite samples skipped)."""
+    """:func:`_peak_magnitude` on float arrays (non-finite samples skipped)."""
     peak = 0.0
     count = value.shape[0]
     for k in range(count):
