@@ -968,7 +968,7 @@ def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev,
         if names is None:
             names = motion_names[motions] = tuple(engine.MOTION_NAMES[m] for m in motions)
         events.append(
-            TimeHistoryEvent(
+            TimeHistoryEvent._from_engine(
                 event_time,
                 engine.EVENT_KINDS[kind],
                 interface,
