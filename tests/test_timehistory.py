@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 
 from freestand.core.contact.modes import solve_contact
 from freestand.core.contact.screening import contact_problem_at_rest
+from freestand.core.dynamics.results import TimeHistoryEvent, _peak_magnitude
 from freestand.core.dynamics.timehistory import (
     ContactTolerances,
     SupportMotion,
@@ -214,6 +215,29 @@ def test_result_shapes_and_lookup(crane_model):
     assert result.block_index("cart") == 1
     assert result.time[-1] == pytest.approx(0.05)
     assert result.diagnostics.steps == 50
+
+
+def test_events_and_peaks_of_the_front_end_match_their_plain_definitions(crane_model):
+    # the result is built by compiled passes and a fast event constructor: they give
+    # what the dataclass's constructor, numpy's copies and the per-column peaks give
+    stack = crane_model.configuration("x-z cart right")
+    motion = SupportMotion(0.01, 6.0 * np.sin(np.linspace(0.0, 12.0, 201)))
+    result = simulate(stack, motion)
+    assert len(result.events) >= 5
+    for event in result.events:
+        fields = [getattr(event, name) for name in TimeHistoryEvent.__dataclass_fields__]
+        plain = TimeHistoryEvent(*fields)
+        assert plain == event and repr(plain) == repr(event)
+        with pytest.raises(AttributeError):
+            event.kind = "impact"
+    for quantity in (result.position, result.velocity, result.normal_force, result.slide):
+        assert quantity.flags.c_contiguous
+    rate = result.velocity[:, :, 2].copy()
+    rate[:, 1:] -= result.velocity[:, :-1, 2]
+    for i in range(2):
+        peak = _peak_magnitude(result.time, result.relative_rotation[:, i], rate[:, i])
+        assert result.max_rotation[i] == peak
+    assert np.array_equal(result.max_slide, np.nanmax(np.abs(result.slide), axis=0))
 
 
 def test_energy_never_grows_without_excitation():

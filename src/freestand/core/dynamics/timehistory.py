@@ -68,6 +68,7 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
+import numba as nb
 import numpy as np
 
 from freestand.core.contact.problem import ContactProblem, Interface
@@ -82,7 +83,7 @@ from freestand.core.dynamics.results import (
     TimeHistoryDiagnostics,
     TimeHistoryEvent,
     TimeHistoryResult,
-    _peak_magnitude,
+    history_peaks,
 )
 from freestand.core.model import Sliding, Stack
 
@@ -859,6 +860,36 @@ def _grow(buffers: tuple, rows: int) -> tuple:
     return tuple(grown)
 
 
+@nb.njit(cache=True)
+def _history_columns(values, rows):
+    """The first ``rows`` rows of the engine's history buffer, one array per quantity.
+
+    ``values`` (capacity, B, :data:`~freestand.core.dynamics.engine.R_SIZE`);
+    returns position, velocity (rows, B, 3), normal forces (rows, B, 2),
+    tangential force, relative rotation and slide (rows, B): contiguous
+    copies, in one pass (numpy's copies of the interleaved columns cost several
+    times more).
+    """
+    count = values.shape[1]
+    position = np.empty((rows, count, 3))
+    velocity = np.empty((rows, count, 3))
+    normal = np.empty((rows, count, 2))
+    tangential = np.empty((rows, count))
+    rotation = np.empty((rows, count))
+    slide = np.empty((rows, count))
+    for row in range(rows):
+        for i in range(count):
+            for c in range(3):
+                position[row, i, c] = values[row, i, engine.R_Q + c]
+                velocity[row, i, c] = values[row, i, engine.R_QD + c]
+            normal[row, i, 0] = values[row, i, engine.R_NORMAL]
+            normal[row, i, 1] = values[row, i, engine.R_NORMAL + 1]
+            tangential[row, i] = values[row, i, engine.R_TANGENTIAL]
+            rotation[row, i] = values[row, i, engine.R_ROTATION]
+            slide[row, i] = values[row, i, engine.R_SLIDE]
+    return position, velocity, normal, tangential, rotation, slide
+
+
 def _painleve_reason(stack: Stack, position: np.ndarray, velocity: np.ndarray) -> str:
     """Why no contact mode is consistent at the last recorded state, in words.
 
@@ -915,40 +946,36 @@ def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev,
     rows = int(istate[engine.S_ROWS])
     time = fstate[engine.F_TIME]
     times = rec[0][:rows].copy()
-    values = rec[1][:rows]
-    position = values[:, :, engine.R_Q : engine.R_Q + 3].copy()
-    velocity = values[:, :, engine.R_QD : engine.R_QD + 3].copy()
-    normal = values[:, :, engine.R_NORMAL : engine.R_NORMAL + 2].copy()
-    tangential = values[:, :, engine.R_TANGENTIAL].copy()
-    rotation = values[:, :, engine.R_ROTATION].copy()
-    slides = values[:, :, engine.R_SLIDE].copy()
+    position, velocity, normal, tangential, rotation, slides = _history_columns(rec[1], rows)
     events = []
     count_events = int(istate[engine.S_EVENTS])
     velocity_before = ev[2][:count_events, 0].copy()
     velocity_after = ev[2][:count_events, 1].copy()
     motion_names: dict[tuple[int, ...], tuple[str, ...]] = {}
     codes_of = ev[1][:count_events]
-    for e, (event_time, codes, motions) in enumerate(
-        zip(
-            ev[0][:count_events].tolist(),
-            codes_of[:, : engine.EV_MOTIONS].tolist(),
-            map(tuple, codes_of[:, engine.EV_MOTIONS :].tolist()),
-            strict=True,
-        )
+    # every event's (B, 3) rows as views, taken at once; cut to the active blocks
+    # only where blocks have overturned
+    for event_time, codes, motions, rows_before, rows_after in zip(
+        ev[0][:count_events].tolist(),
+        codes_of[:, : engine.EV_MOTIONS].tolist(),
+        map(tuple, codes_of[:, engine.EV_MOTIONS :].tolist()),
+        list(velocity_before),
+        list(velocity_after),
+        strict=True,
     ):
         kind, interface, contact, status, before, after = codes
         names = motion_names.get(motions)
         if names is None:
             names = motion_names[motions] = tuple(engine.MOTION_NAMES[m] for m in motions)
         events.append(
-            TimeHistoryEvent(
+            TimeHistoryEvent._from_engine(
                 event_time,
                 engine.EVENT_KINDS[kind],
                 interface,
                 contact,
                 names,
-                velocity_before[e, :before],
-                velocity_after[e, :after],
+                rows_before if before == count else rows_before[:before],
+                rows_after if after == count else rows_after[:after],
                 "ambiguous" if status else "unique",
             )
         )
@@ -1000,11 +1027,7 @@ def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev,
     free_flight = (flags[1] > 0.5) & (max_flight > lift_threshold)
     relative_rate = velocity[:, :, 2].copy()
     relative_rate[:, 1:] -= velocity[:, :-1, 2]
-    with np.errstate(all="ignore"):
-        max_rotation = np.array(
-            [_peak_magnitude(times, rotation[:, i], relative_rate[:, i]) for i in range(count)]
-        )
-        max_slide = np.nan_to_num(np.nanmax(np.abs(slides), axis=0, initial=0.0))
+    max_rotation, max_slide = history_peaks(times, rotation, relative_rate, slides)
     return TimeHistoryResult(
         configuration=stack.name,
         block_names=tuple(block.name for block in stack.blocks),
