@@ -86,6 +86,7 @@ CABINET_ARGS = (
     "fragility", "bodies.toml", "-c", "cabinet", "--suite", "suite.toml", "--levels", "3:9:3",
     "--outcome", "rotation:cabinet>0.5alpha", "--outcome", "twist:cabinet>2",
     "--outcome", "slide:cabinet>5mm", "--outcome", "uplift:cabinet", "--bootstrap", "20",
+    "--free-time", "2",
 )  # fmt: skip
 
 
@@ -102,6 +103,7 @@ def test_the_command_runs_a_3d_campaign_and_resumes_its_store(files):
         fs.fragility(
             model, files / "suite.toml", None, "3:9:3", list(CABINET_ARGS[9:17:2]),
             configuration="cabinet", workers=1, store=stopped, chunk=1, progress=stop,
+            free_time=2.0,
         )  # fmt: skip
     assert len(CampaignStore(stopped).chunks()) == 2
     resumed = run_freestand(*CABINET_ARGS, "--workers", "1", "--chunk", "1", "--store", "stopped",
@@ -118,6 +120,7 @@ def test_the_command_runs_a_3d_campaign_and_resumes_its_store(files):
     whole = fs.fragility(
         model, files / "suite.toml", None, "3:9:3", list(CABINET_ARGS[9:17:2]),
         configuration="cabinet", workers=2, store=files / "whole", chunk=1, bootstrap=20,
+        free_time=2.0,
     )  # fmt: skip
     assert whole.to_dict()["outcomes"] == document["outcomes"]
     rows, again = CampaignStore(stopped).read(), CampaignStore(files / "whole").read()
@@ -156,6 +159,42 @@ def test_a_fixed_angle_and_a_sweep(tmp_path):
         for level in (0, 1):
             mine = (rows["record"] == record) & (rows["level"] == level)
             assert rows["angle"][mine].tolist() == [0.0, 90.0, 180.0, 270.0]
+
+
+def test_uncertain_friction_and_mass_of_a_body(tmp_path):
+    records = noise_records(1, duration=3.0)
+    vary = ["box.friction.static=uniform(0.1,0.5)", "box.mass*=uniform(0.5,2)"]
+    result = fs.fragility(BOX, records, "pga", "4,8", ["slide:box>0.01m"], vary=vary, samples=3,
+                          angle=0.0, free_time=1.0, workers=1, bootstrap=0,
+                          store=tmp_path / "s")  # fmt: skip
+    rows = CampaignStore(tmp_path / "s").read()
+    assert result.to_dict()["variations"] == [
+        "box.friction.static = uniform(0.1, 0.5)", "box.mass *= uniform(0.5, 2)"
+    ]  # fmt: skip
+    static = rows["input:box.friction.static"]
+    assert static.size == 6 and np.all((static > 0.1) & (static < 0.5))
+    assert np.unique(static).size == 6 and set(rows["status"]) == {"completed"}
+    # a rigid body's slide does not depend on its mass: the least friction slides farthest
+    at_top = rows["level"] == 1
+    assert np.argmax(rows["box.max_slide"][at_top]) == np.argmin(static[at_top])
+
+
+def test_a_dask_scheduler_gives_the_rows_of_one_process(tmp_path):
+    distributed = pytest.importorskip("distributed", reason="dask.distributed not installed")
+    records = noise_records(2, duration=3.0, y=True)
+    options = dict(levels="4,8", outcomes=["uplift:cylinder", "twist:cylinder>1"], bootstrap=0,
+                   free_time=1.0)  # fmt: skip
+    local = fs.fragility(CYLINDER, records, workers=1, store=tmp_path / "local", **options)
+    with (
+        distributed.LocalCluster(n_workers=1, processes=False, dashboard_address=None) as cluster,
+        distributed.Client(cluster) as client,
+    ):
+        clustered = fs.fragility(CYLINDER, records, scheduler=client, chunk=3,
+                                 store=tmp_path / "dask", **options)  # fmt: skip
+    assert clustered.to_dict()["outcomes"] == local.to_dict()["outcomes"]
+    rows, again = CampaignStore(tmp_path / "local").read(), CampaignStore(tmp_path / "dask").read()
+    for name in rows:
+        assert np.array_equal(rows[name], again[name]), name
 
 
 def test_drawn_angles_are_uniform_reproducible_and_shared_by_both_polarities():
@@ -207,7 +246,8 @@ def test_bad_input_names_the_option(files):
         (stack, {"outcomes": ["twist:cabinet>5"]}, "--outcome", "outcome of 3-D bodies"),
         (BOX, {"outcomes": ["twist:box"]}, "--outcome", "give a threshold, e.g. twist:box>5deg"),
         (BOX, {"im": "pga-alpha"}, "--im", "depends on the direction"),
-        (BOX, {"vary": ["box.friction.static=uniform(0.4,0.6)"]}, "--vary", "not supported yet"),
+        (BOX, {"vary": ["box.centre.x+=normal(0,0.01)"]}, "--vary", "cannot be varied yet"),
+        (BOX, {"vary": ["cart.mass*=uniform(0.9,1.1)"]}, "--vary", "no block 'cart'"),
         (BOX, {"angle": 10.0, "angles": 4}, "--angles", "not both"),
         (BOX, {"angles": 0}, "--angles", "give 1 to 360"),
         (stack, {"angles": 4}, "--angles", "is planar"),

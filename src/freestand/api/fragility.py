@@ -339,9 +339,11 @@ def fragility(
         for a 3-D body ``"twist:BODY>5"`` [deg] (default: per configuration,
         see ``docs/fragility.md``).
     configuration : str, optional
-        Configuration of the model (default: the first).
+        Configuration of the model (default: the first planar one, or the
+        first 3-D one in a model without planar configurations).
     vary : sequence of str or Variation, optional
-        Uncertain block inputs, as for :func:`freestand.sample`.
+        Uncertain block inputs, as for :func:`freestand.sample` (planar
+        configurations only).
     samples : int, optional
         Samples per record and level (default 1; 10 with ``vary``).
     both_polarities : bool

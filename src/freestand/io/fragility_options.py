@@ -303,9 +303,8 @@ def chosen_configuration(model, name: str | None) -> Stack | BodyConfiguration:
     return next((body for body in bodies if body.name == name), None) or model.configuration(name)
 
 
-def check_body_options(kind: str, body: BodyConfiguration, vary, source: str = "") -> None:
-    """FreestandError for an IM kind (``--im`` before its ``:``) or an option that a 3-D
-    campaign cannot take."""
+def check_body_intensity(kind: str, body: BodyConfiguration, source: str = "") -> None:
+    """FreestandError for an IM kind (``--im`` before its ``:``) a 3-D campaign cannot take."""
     if kind == "pga-alpha":
         raise FreestandError(
             f"pga-alpha is a multiple of a planar block's rocking threshold; {body.name!r} is "
@@ -313,12 +312,34 @@ def check_body_options(kind: str, body: BodyConfiguration, vary, source: str = "
             "pga-rotd100, pga-gm, sa-rotd50:F, or pga, pgv, sa:F of the record's x component",
             source=source + "--im",
         )
-    if vary:
-        raise FreestandError(
-            f"{body.name!r} is 3-D: uncertain inputs of 3-D bodies are not supported yet; "
-            "leave --vary out (the incidence angle varies per simulation)",
-            source=source + "--vary",
-        )
+
+
+def check_body_variations(variations, texts, body: BodyConfiguration, option: str) -> None:
+    """FreestandError for an uncertain input a 3-D body does not have or that repeats."""
+    from freestand.core.sweeps.fragility.campaign import BODY_FIELDS
+
+    seen = set()
+    for variation, text in zip(variations, texts, strict=True):
+        parameter = variation.parameter
+        if parameter.field in ("horizontal", "vertical"):
+            continue  # refused below with the planar message
+        if parameter.field not in BODY_FIELDS:
+            raise FreestandError(
+                f"{text!r}: a 3-D body's {parameter.field} cannot be varied yet; vary "
+                f"{', '.join(f'{body.name}.{f}' for f in BODY_FIELDS)}",
+                source=option,
+            )
+        if parameter.block not in (None, body.name):
+            raise FreestandError(
+                f"{text!r}: configuration {body.name!r} has no block {parameter.block!r}; its "
+                f"body is {body.name}",
+                source=option,
+            )
+        if parameter.field in seen:
+            raise FreestandError(
+                f"{text!r}: {parameter.field} is varied twice; give it once", source=option
+            )
+        seen.add(parameter.field)
 
 
 def check_planar_angles(stack: Stack, angle, angles, source: str = "") -> None:
@@ -413,7 +434,7 @@ def build_campaign(
         im = DEFAULT_BODY_IM if three_d else DEFAULT_IM
     if three_d:
         kind = im.kind if isinstance(im, IntensityMeasure) else im.partition(":")[0]
-        check_body_options(kind.strip().lower(), stack, vary, source)
+        check_body_intensity(kind.strip().lower(), stack, source)
     measure = (
         im
         if isinstance(im, IntensityMeasure)
@@ -434,7 +455,9 @@ def build_campaign(
         text if isinstance(text, Variation) else parse_variation(text, "--vary", model.gravity)
         for text in vary or []
     ]
-    if variations:
+    if three_d:
+        check_body_variations(variations, vary or [], stack, source + "--vary")
+    elif variations:
         check_parameters(
             [(v.parameter, str(t)) for v, t in zip(variations, vary or [], strict=True)],
             [stack],

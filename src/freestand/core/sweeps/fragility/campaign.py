@@ -299,6 +299,71 @@ def sample_stacks(stack: Stack, variations, values) -> list[Stack | None]:
     return stacks
 
 
+#: The inputs of a 3-D body a campaign can vary (``--vary``).
+BODY_FIELDS = ("friction.static", "friction.kinetic", "mass")
+
+
+def sample_bodies(
+    configuration: BodyConfiguration, variations, values
+) -> list[BodyConfiguration | None]:
+    """The 3-D configuration with the varied inputs of each sample applied (None: no model).
+
+    Parameters
+    ----------
+    configuration : BodyConfiguration
+        Nominal configuration.
+    variations : sequence of Variation
+        Of :data:`BODY_FIELDS` (set, add or scale).
+    values : sequence of numpy.ndarray
+        The K drawn values of each variation.
+
+    Notes
+    -----
+    The kinetic friction stays at or below the static one as for planar
+    stacks (:func:`freestand.core.contact.batch.kinetic_below_static`); a
+    varied mass scales the inertia with it (the same shape, denser or
+    lighter).
+    """
+    from freestand.core.contact.batch import kinetic_below_static
+
+    if not variations:
+        return [configuration] * (len(values[0]) if values else 1)
+    body = configuration.body
+    count = len(values[0])
+    inputs = {
+        "friction.static": np.full(count, body.friction.static),
+        "friction.kinetic": np.full(count, body.friction.kinetic),
+        "mass": np.full(count, body.mass),
+    }
+    for variation, drawn in zip(variations, values, strict=True):
+        field_name = variation.parameter.field
+        if field_name not in BODY_FIELDS:
+            raise ValueError(f"{field_name} of a 3-D body cannot be varied; vary {BODY_FIELDS}")
+        inputs[field_name] = variation.parameter.applied(inputs[field_name], np.asarray(drawn))
+    varied = {v.parameter.field for v in variations}
+    static = inputs["friction.static"]
+    kinetic = kinetic_below_static(
+        static, inputs["friction.kinetic"], body.friction, "friction.static" in varied,
+        "friction.kinetic" in varied,
+    )  # fmt: skip
+    out: list[BodyConfiguration | None] = []
+    for k in range(count):
+        mass = float(inputs["mass"][k])
+        if not (static[k] >= 0.0 and kinetic[k] >= 0.0):  # no friction below zero (or NaN)
+            out.append(None)
+            continue
+        try:
+            sampled = replace(
+                body, mass=mass, friction=Friction(float(static[k]), float(kinetic[k])),
+                inertia=np.asarray(body.inertia) * (mass / body.mass),
+            )  # fmt: skip
+        except ValueError:  # a FreestandError: a mass or friction that makes no body
+            out.append(None)
+            continue
+        out.append(replace(configuration, bodies=(sampled,)))
+    return out
+
+
 def simulate_task(
     stack: Stack, motion: GroundMotion, factor: float, polarity: int, campaign: Campaign
 ):
@@ -419,11 +484,8 @@ def run_tasks(campaign: Campaign, start: int, stop: int) -> dict[str, np.ndarray
         if (r, level) not in cache:
             cache.clear()
             drawn_values = campaign.input_values(r, level)
-            stacks = (
-                [campaign.stack] * campaign.samples
-                if campaign.three_d
-                else sample_stacks(campaign.stack, campaign.variations, drawn_values)
-            )
+            sample = sample_bodies if campaign.three_d else sample_stacks
+            stacks = sample(campaign.stack, campaign.variations, drawn_values)
             cache[(r, level)] = (drawn_values, stacks)
         drawn_values, stacks = cache[(r, level)]
         drawn = [float(values[k]) for values in drawn_values]
