@@ -19,6 +19,7 @@ from freestand.io.records import write_at2
 from freestand.io.store import CampaignStore
 from freestand.io.suites import suite_text
 from tests.conftest import ROOT, run_freestand
+from tests.test_cli_fragility import MODEL as PLANAR
 
 BODIES = ROOT / "examples" / "bodies.toml"
 
@@ -65,22 +66,6 @@ def files(tmp_path):
     (tmp_path / "suite.toml").write_text(suite_text("three", entries))
     return tmp_path
 
-
-PLANAR = """
-name = "Block"
-[[excitation]]
-name = "none"
-horizontal = 0.0
-[[configuration]]
-name = "block"
-[[configuration.block]]
-name = "block"
-mass = 500
-inertia = 266.7
-centre = [0.0, 1.2]
-base = { left = -0.4, right = 0.4, level = 0.0 }
-friction = { static = 0.8, kinetic = 0.7 }
-"""
 
 CABINET_ARGS = (
     "fragility", "bodies.toml", "-c", "cabinet", "--suite", "suite.toml", "--levels", "3:9:3",
