@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -14,6 +15,7 @@ from freestand.core.model import Friction
 from freestand.core.motion.ground_motion import GroundMotion
 from freestand.core.sweeps.fragility.campaign import Campaign, columns
 from freestand.core.sweeps.fragility.intensity import IntensityMeasure
+from freestand.core.sweeps.fragility.outcomes import body_values
 from freestand.errors import FreestandError
 from freestand.io.records import write_at2
 from freestand.io.store import CampaignStore
@@ -197,6 +199,27 @@ def test_drawn_angles_are_uniform_reproducible_and_shared_by_both_polarities():
                      polarities=(1, -1), seed=5)  # fmt: skip
     assert not np.array_equal(angles, [other.angle(i) for i in range(other.size)])
     assert "angle" in columns(campaign) and "box.tilt_ratio" in columns(campaign)
+
+
+@pytest.mark.parametrize(
+    ("twist", "reach"),
+    [(0.0, 0.4), (math.pi / 2, 0.25), (math.pi / 4, (0.4 + 0.25) / math.sqrt(2))],
+)
+def test_alpha_is_taken_where_the_twisted_box_tilts(twist, reach):
+    # the box twisted about the vertical, then tilted by 0.1 rad towards +x: its pivot
+    # reach along x is b_x, b_y or the diagonal's, and alpha = atan(reach / h)
+    swing, turn = np.array([math.cos(0.05), 0.0, math.sin(0.05), 0.0]), 0.5 * twist
+    w, y = swing[0], swing[2]
+    quaternion = [w * math.cos(turn), y * math.sin(turn), y * math.cos(turn), w * math.sin(turn)]
+    state = np.zeros((1, 13))
+    state[0, 3:7] = quaternion
+    history = SimpleNamespace(
+        tilt=np.array([0.1]), state=state, twist=np.array([twist]), overturned=False,
+        max_rotation=0.1, max_slide=0.0, max_twist=twist, uplift=True, free_flight=False,
+    )  # fmt: skip
+    values = body_values(history, BOX)
+    assert values["box.alpha"] == pytest.approx(math.atan(reach / 1.1), rel=1e-12)
+    assert values["box.tilt_ratio"] == pytest.approx(0.1 / math.atan(reach / 1.1), rel=1e-12)
 
 
 def _median(configuration, angle, levels):
