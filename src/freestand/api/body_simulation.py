@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
@@ -23,17 +23,18 @@ import numpy as np
 from freestand.api.base import HistoryResult, finite, frame
 from freestand.core.body import BodyConfiguration, Box
 from freestand.core.contact.body_kernel import EDGE, FACE, FREE, POINT
-from freestand.core.dynamics.body_history import BodyTimeHistory, SupportMotion3, simulate_body
+from freestand.core.dynamics.body_history import (
+    BodyTimeHistory,
+    SupportMotion3,
+    run_body_history,
+    tilt_vector,
+)
 from freestand.core.dynamics.results import SupportMotion
 from freestand.core.motion.ground_motion import GroundMotion
 from freestand.errors import FreestandError
 
 #: Events listed in :meth:`BodySimulationResult.to_dict` (``first_events``), as for planar.
 LISTED_EVENTS = 50
-
-#: After the record, the body is at rest when it sits flat, sticks and no velocity
-#: component exceeds this [m/s, rad/s] (the planar engine's rest test).
-REST_VELOCITY = 1e-9
 
 #: Patch names by the engine's code.
 PATCH_NAMES = {FREE: "free", POINT: "point", EDGE: "edge", FACE: "face"}
@@ -489,15 +490,6 @@ class BodySimulationResult(HistoryResult):
         return animate_body(self, path, exaggeration=exaggeration)
 
 
-def tilt_vector(quaternions: np.ndarray, tilt: np.ndarray) -> np.ndarray:
-    """(K, 2) [rad]: ``tilt (e_x, e_y) / |(e_x, e_y)|``, e the body axis R e_z (0 when upright)."""
-    w, x, y, z = quaternions.T
-    axis = np.column_stack([2.0 * (x * z + w * y), 2.0 * (y * z - w * x)])
-    size = np.hypot(axis[:, 0], axis[:, 1])
-    scale = np.divide(tilt, size, out=np.zeros_like(tilt), where=size > 0.0)
-    return axis * scale[:, None]
-
-
 def check_body_options(configuration: BodyConfiguration, method: str, restitution) -> None:
     """FreestandError for an option of the planar engine given for a 3-D configuration."""
     if method != "auto":
@@ -539,50 +531,13 @@ def simulate_body_configuration(
     if unknown:
         raise TypeError(f"simulate() got options a 3-D body does not take: {', '.join(unknown)}")
     support = support_motion3(motion, angle=angle)
-    if until_rest and duration is None:
-        if not (free_time >= 0.0 and math.isfinite(free_time)):
-            raise FreestandError(f"free_time must be a finite time >= 0 [s], not {free_time!r}")
-        end = support.duration + free_time
-    else:
-        end = support.duration if duration is None else float(duration)
-    core = simulate_body(configuration.body, support, end, max_step=max_step, gravity=gravity,
-                         **options)  # fmt: skip
+    core, status, message = run_body_history(
+        configuration.body, support, duration, until_rest=until_rest, free_time=free_time,
+        max_step=max_step, gravity=gravity, **options,
+    )  # fmt: skip
     if progress is not None:
         progress(1.0)
-    core, status, message = _verdict(core, support.duration, until_rest)
     record = motion if isinstance(motion, GroundMotion) else None
     return BodySimulationResult(
         model_name, configuration, record, support, float(angle), core, status, message
     )
-
-
-def _verdict(core: BodyTimeHistory, record_end: float, until_rest: bool):
-    """(history, status, message); with ``until_rest`` the history ends where the body rests."""
-    if core.status == "failed":
-        remedies = core.diagnostics.get("remedies", 0)
-        cause = (
-            f" (after {remedies} contact states without an admissible mode, continued in free "
-            "flight: a limitation of this version's 3-D engine)"
-            if remedies
-            else ""
-        )
-        return core, "failed", core.message + cause
-    if core.overturned:
-        return core, "completed", f"overturned at t = {core.overturn_time:.6g} s"
-    end = float(core.time[-1])
-    if not until_rest:
-        return core, "completed", f"simulated to t = {end:.6g} s"
-    moving = (
-        (core.patch != FACE)
-        | core.sliding
-        | (np.max(np.abs(core.state[:, 7:13]), axis=1) > REST_VELOCITY)
-        | (core.time < record_end)
-    )
-    if moving[-1]:
-        return core, "capped", f"still moving at the cap, t = {end:.6g} s"
-    rest = int(np.flatnonzero(moving)[-1]) + 1 if moving.any() else 0
-    kept = slice(0, rest + 1)
-    arrays = ("time", "state", "patch", "sliding", "normal_force", "friction_force", "tilt",
-              "slide", "twist")  # fmt: skip
-    core = replace(core, **{name: getattr(core, name)[kept] for name in arrays})
-    return core, "completed", f"at rest at t = {float(core.time[-1]):.6g} s"

@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from freestand.api.base import Result, frame
+from freestand.core.body import Body, BodyConfiguration
 from freestand.core.model import Stack
 from freestand.core.sweeps.fragility.analysis import FragilityResult as CoreFragilityResult
 from freestand.errors import FreestandError
@@ -206,18 +207,20 @@ class FragilityResult(Result):
         return plot_fragility(self.core, self.im_label, self.title, ax=ax)
 
 
-def _stack_model(stack: Stack, gravity: float | None):
-    """A model file holding one stack, for a campaign on a bare stack."""
+def _stack_model(stack: Stack | BodyConfiguration, gravity: float | None):
+    """A model file holding one stack or 3-D configuration, for a campaign on it alone."""
     from freestand.io.model_file import ModelFile
 
-    digest = hashlib.sha256(repr(stack).encode()).hexdigest()
+    three_d = isinstance(stack, BodyConfiguration)
+    text = repr(stack) + (repr(stack.body.inertia.tolist()) if three_d else "")
     return ModelFile(
         name=stack.name,
         gravity=9.81 if gravity is None else float(gravity),
         excitations=(),
-        configurations=(stack,),
-        source="<stack>",
-        sha256=digest,
+        configurations=() if three_d else (stack,),
+        source="<configuration>" if three_d else "<stack>",
+        sha256=hashlib.sha256(text.encode()).hexdigest(),
+        body_configurations=(stack,) if three_d else (),
     )
 
 
@@ -268,7 +271,7 @@ def check_fit_options(bootstrap: int, confidence: float, seed: int) -> None:
 def fragility(
     model,
     suite,
-    im="pga",
+    im=None,
     levels=None,
     outcomes: Sequence | None = None,
     *,
@@ -287,6 +290,8 @@ def fragility(
     chunk: int | None = None,
     gravity: float | None = None,
     progress: Callable[[int, int], None] | None = None,
+    angle: float | None = None,
+    angles: int | None = None,
 ) -> FragilityResult:
     """Fragility curves: the probability of each outcome against a ground-motion intensity.
 
@@ -301,27 +306,44 @@ def fragility(
     1984). Every task has its own seed: the results do not depend on the
     workers or the scheduler.
 
+    A 3-D configuration (a box or a cylinder) runs under the records' three
+    components (x, y, vertical; a record without y has y = 0), their
+    horizontal pair turned by an incidence angle drawn uniformly over
+    0-360 deg per simulation from ``seed`` (stored with each simulation),
+    fixed (``angle``) or swept (``angles``); its outcomes are judged from
+    its tilt, horizontal slide, twist, uplift and overturning
+    (``docs/fragility.md``, 3-D bodies).
+
     Parameters
     ----------
-    model : ModelFile or Stack
-        A loaded model file (``configuration`` names the stack) or a stack.
+    model : ModelFile, Stack, BodyConfiguration or Body
+        A loaded model file (``configuration`` names the configuration,
+        planar or 3-D), a stack or a 3-D body.
     suite : str, pathlib.Path, RecordSuite or sequence of GroundMotion
         A record suite file (TOML, see ``docs/records.md``), a loaded suite
         (``fs.load_suite``) or records (``fs.load_record``).
-    im : str or IntensityMeasure
+    im : str or IntensityMeasure, optional
         ``"pga"`` [m/s^2], ``"pgv"`` [m/s], ``"sa:F[,DAMPING]"`` [m/s^2] or
-        ``"pga-alpha[:BLOCK]"`` [-] (PGA / (g tan alpha)).
+        ``"pga-alpha[:BLOCK]"`` [-] (PGA / (g tan alpha)) of the record's x
+        component; for 3-D configurations also the two-component
+        ``"pga-rotd50"``, ``"pga-rotd100"``, ``"pga-gm"``, the same of
+        ``pgv``, ``"sa-rotd50:F[,DAMPING]"``, ... (not ``pga-alpha``).
+        Default ``"pga"`` for a planar configuration, ``"pga-rotd50"`` for a
+        3-D one.
     levels : str or sequence of float, optional
         The stripes: ``"A:B:N"`` (N levels from A to B, SI or with units, e.g.
         ``"0.05g:1g:20"``) or the levels [IM unit]. Leave out with ``cloud``.
     outcomes : sequence of str or Outcome, optional
         ``"overturn:BLOCK"``, ``"rotation:BLOCK>0.5alpha"``,
-        ``"slide:BLOCK>0.05m"``, ``"uplift:BLOCK"``, ``"flight:BLOCK"``
-        (default: per configuration, see ``docs/fragility.md``).
+        ``"slide:BLOCK>0.05m"``, ``"uplift:BLOCK"``, ``"flight:BLOCK"``, and
+        for a 3-D body ``"twist:BODY>5"`` [deg] (default: per configuration,
+        see ``docs/fragility.md``).
     configuration : str, optional
-        Configuration of the model (default: the first).
+        Configuration of the model (default: the first planar one, or the
+        first 3-D one in a model without planar configurations).
     vary : sequence of str or Variation, optional
-        Uncertain block inputs, as for :func:`freestand.sample`.
+        Uncertain block inputs, as for :func:`freestand.sample` (planar
+        configurations only).
     samples : int, optional
         Samples per record and level (default 1; 10 with ``vary``).
     both_polarities : bool
@@ -351,6 +373,13 @@ def fragility(
     progress : callable, optional
         Called with the number of simulations just finished and the number
         in the campaign.
+    angle : float, optional
+        3-D configurations: a fixed incidence angle [deg] by which every
+        record's horizontal pair is turned, counter-clockwise from +x
+        (:func:`freestand.support_motion3`).
+    angles : int, optional
+        3-D configurations: every record, level and sample at N angles,
+        every 360/N deg.
 
     Returns
     -------
@@ -371,6 +400,21 @@ def fragility(
     2            3.0      0      2
     3            4.0      2      2
     4            5.0      2      2
+
+    A 3-D body: the cabinet of ``examples/bodies.toml`` under a record with x
+    and y, scaled by its PGA RotD50 (the default IM of a 3-D configuration),
+    at four incidence angles every 90 deg:
+
+    >>> bodies = fs.load_model("examples/bodies.toml")
+    >>> record = fs.load_record("examples/records/synthetic_H.AT2",
+    ...                         horizontal_y="examples/records/synthetic_H.AT2")
+    >>> cabinet = fs.fragility(bodies, [record], levels="2,4,6", configuration="cabinet",
+    ...                        outcomes=["uplift:cabinet", "twist:cabinet>1"], angles=4,
+    ...                        free_time=2.0, bootstrap=0, workers=1)
+    >>> cabinet.to_dict()["angles"], cabinet.to_dict()["im"]["kind"]
+    ([0.0, 90.0, 180.0, 270.0], 'pga-rotd50')
+    >>> cabinet.to_frame()["count"].tolist()  # of 4 at 2, 4, 6 m/s^2: uplift, then twist
+    [0, 4, 4, 0, 0, 4]
     """
     from freestand.io.campaign_runner import run_fragility
     from freestand.io.fragility_options import build_campaign
@@ -378,15 +422,18 @@ def fragility(
 
     _check_options(levels, cloud, workers, scheduler, free_time, chunk, bootstrap, confidence,
                    seed)  # fmt: skip
-    if isinstance(model, Stack):
+    if isinstance(model, Body):
+        model = BodyConfiguration(model.name, (model,))
+    if isinstance(model, Stack | BodyConfiguration):
         model = _stack_model(model, gravity)
     elif not isinstance(model, ModelFile):
         raise TypeError(
-            f"expected a model file (fs.load_model) or a Stack, not {type(model).__name__}"
+            "expected a model file (fs.load_model), a Stack or a BodyConfiguration, not "
+            f"{type(model).__name__}"
         )
     campaign, records = build_campaign(
         model, configuration, _suite(suite), im, levels, vary, samples, outcomes, both_polarities,
-        seed, free_time,
+        seed, free_time, angle=angle, angles=angles,
     )  # fmt: skip
     definition, result = run_fragility(
         campaign, model_name=model.name, model_source=model.source, model_sha256=model.sha256,
@@ -455,7 +502,9 @@ def fragility_from_store(
         raise FreestandError(f"{str(store)!r} holds no simulation yet", source="--from-store")
     blocks = definition["blocks"]
     chosen = [
-        text if not isinstance(text, str) else parse_outcome(text, blocks)
+        text
+        if not isinstance(text, str)
+        else parse_outcome(text, blocks, three_d="shape" in definition)
         for text in (outcomes or definition["outcomes"])
     ]
     result = analyse(

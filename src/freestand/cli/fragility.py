@@ -80,13 +80,14 @@ def fragility(
     ),
     suite: Path = typer.Option(None, "--suite", help="Record suite file (TOML)."),
     im: str = typer.Option(
-        "pga",
+        None,
         "--im",
-        help="Intensity measure of planar models: pga, pgv, sa:F[,DAMPING], "
-        "pga-alpha[:BLOCK]; of two horizontal components (records with x and y, for 3-D "
-        "configurations): pga-gm, pga-rotd50, pga-rotd100, "
+        help="Intensity measure of the record's x component: pga, pgv, sa:F[,DAMPING], "
+        "pga-alpha[:BLOCK] (planar); of two horizontal components (3-D configurations): "
+        "pga-gm, pga-rotd50, pga-rotd100, "
         "pgv-gm, pgv-rotd50, pgv-rotd100, sa-gm:F[,DAMPING], sa-rotd50:F[,DAMPING], "
-        "sa-rotd100:F[,DAMPING].",
+        "sa-rotd100:F[,DAMPING]. Default: pga (planar), pga-rotd50 (3-D).",
+        show_default=False,
     ),
     levels: str = typer.Option(
         None,
@@ -103,10 +104,20 @@ def fragility(
         None,
         "--outcome",
         help="Outcome, repeatable: overturn:BLOCK, rotation:BLOCK>0.5alpha, "
-        "slide:BLOCK>0.05m, uplift:BLOCK, flight:BLOCK (default: per configuration).",
+        "slide:BLOCK>0.05m, uplift:BLOCK, flight:BLOCK; 3-D also twist:BODY>DEG "
+        "(default: per configuration).",
     ),
     both_polarities: bool = typer.Option(
         False, "--both-polarities", help="Run every record with both signs."
+    ),
+    angle: float = typer.Option(
+        None,
+        "--angle",
+        help="3-D: a fixed incidence angle [deg] of the records' x axis, from +x towards +y "
+        "(default: drawn uniformly over 0-360 deg per simulation).",
+    ),
+    angles: int = typer.Option(
+        None, "--angles", help="3-D: every record at N incidence angles, every 360/N deg."
     ),
     cloud: bool = typer.Option(False, "--cloud", help="Unscaled records (cloud analysis)."),
     workers: int = typer.Option(None, "--workers", help="Local worker processes (default: all)."),
@@ -149,7 +160,7 @@ def fragility(
         result = _run(
             model_file, configuration, suite, im, levels, vary, samples, outcome,
             both_polarities, cloud, workers, scheduler, store, seed, free_time, bootstrap,
-            confidence, chunk, as_json,
+            confidence, chunk, as_json, angle, angles,
         )  # fmt: skip
     document = result.to_dict()
     written = None
@@ -172,7 +183,7 @@ def fragility(
 
 def _run(model_file, configuration, suite, im, levels, vary, samples, outcome, both_polarities,
          cloud, workers, scheduler, store, seed, free_time, bootstrap, confidence, chunk,
-         quiet):  # fmt: skip
+         quiet, angle, angles):  # fmt: skip
     from freestand.api.fragility import fragility as run_fragility
     from freestand.io.model_file import load_model
     from freestand.io.store import CampaignStore
@@ -194,7 +205,7 @@ def _run(model_file, configuration, suite, im, levels, vary, samples, outcome, b
                 vary=vary or None, samples=samples, both_polarities=both_polarities, cloud=cloud,
                 seed=seed, free_time=free_time, bootstrap=bootstrap, confidence=confidence,
                 workers=workers, scheduler=scheduler, store=store, chunk=chunk,
-                progress=advance,
+                progress=advance, angle=angle, angles=angles,
             )  # fmt: skip
     except KeyboardInterrupt:
         if store is not None and (store / "campaign.json").is_file():
@@ -223,6 +234,14 @@ def _print(document: dict, written) -> None:
         f"{document['simulations']} simulations ({escape(document['suite']['name'])}, "
         f"{len(document['suite']['records'])} records), IM {escape(im_label(document['im']))}"
     )
+    if "shape" in document:
+        angles = document["angles"]
+        turned = (
+            "drawn uniformly over 0-360 deg per simulation"
+            if angles == "uniform"
+            else ", ".join(f"{a:g}" for a in angles) + " deg"
+        )
+        out.print(f"3-D {document['shape']}; incidence angle of the records' x axis: {turned}")
     if document["failed"]:
         out.print(
             f"[yellow]{document['failed']} simulation(s) failed or invalid[/] (left out of the "

@@ -34,8 +34,9 @@ class CampaignInterrupted(RuntimeError):
 
 
 def default_chunk_size(campaign: Campaign) -> int:
-    """Simulations per chunk: 200 for one block (about 0.2 s of work), else 8; at most size / 16."""
-    preferred = 200 if len(campaign.stack.blocks) == 1 else 8
+    """Simulations per chunk: 200 for one planar block (about 0.2 s of work), else 8 (a stack
+    or a 3-D body); at most size / 16."""
+    preferred = 200 if not campaign.three_d and len(campaign.stack.blocks) == 1 else 8
     return max(1, min(preferred, math.ceil(campaign.size / 16)))
 
 

@@ -10,6 +10,9 @@ Syntax::
                                  0.05g:1g:20), or a list 1,2,4,8
     --outcome overturn:cart | rotation:cart>0.5alpha | rotation:cart>0.1rad
               | slide:cart>0.05m | slide:cart>5cm | uplift:bridge | flight:cart
+              | twist:cask>5 (3-D bodies; deg, or with a unit: 0.1rad)
+    --angle 30 | --angles 8      3-D: a fixed incidence angle [deg], or N angles every
+                                 360/N deg (default: drawn uniformly per simulation)
 
 Every problem raises :class:`freestand.errors.FreestandError` naming the
 option, the value and the fix.
@@ -17,14 +20,16 @@ option, the value and the fix.
 
 from __future__ import annotations
 
+import math
 import re
 
 import numpy as np
 
+from freestand.core.body import BodyConfiguration
 from freestand.core.model import Stack
 from freestand.core.sweeps.fragility.intensity import KINDS, IntensityMeasure
+from freestand.core.sweeps.fragility.outcomes import BODY_ONLY_KINDS, Outcome
 from freestand.core.sweeps.fragility.outcomes import KINDS as OUTCOME_KINDS
-from freestand.core.sweeps.fragility.outcomes import Outcome
 from freestand.errors import FreestandError
 from freestand.io.table_keys import TableKey
 from freestand.io.units import to_si
@@ -56,6 +61,13 @@ FRAGILITY_KEYS = {
 #: Most samples per record and level: with 1000 levels and a suite of 30 records, 3e8
 #: simulations already; beyond, a typo (--samples 100000000) would not finish.
 MAX_SAMPLES = 10_000
+
+#: Most incidence angles of a sweep (--angles): every degree.
+MAX_ANGLES = 360
+
+#: The default IM of a planar configuration and of a 3-D one.
+DEFAULT_IM = "pga"
+DEFAULT_BODY_IM = "pga-rotd50"
 
 
 def parse_intensity(text: str, stack: Stack | None, option: str = "--im") -> IntensityMeasure:
@@ -177,8 +189,10 @@ _OUTCOME = re.compile(
 )
 
 
-def parse_outcome(text: str, blocks, option: str = "--outcome") -> Outcome:
-    """Read an outcome such as ``overturn:cart`` or ``slide:cart>0.05m``.
+def parse_outcome(
+    text: str, blocks, option: str = "--outcome", *, three_d: bool = False
+) -> Outcome:
+    """Read an outcome such as ``overturn:cart``, ``slide:cart>0.05m`` or ``twist:cask>5``.
 
     Parameters
     ----------
@@ -187,15 +201,25 @@ def parse_outcome(text: str, blocks, option: str = "--outcome") -> Outcome:
         The block names of the configuration.
     option : str, optional
         Option name for messages.
+    three_d : bool, optional
+        Whether the configuration is a 3-D body (``twist`` is refused for
+        planar stacks).
     """
     match = _OUTCOME.match(text)
     if not match or match["kind"] not in OUTCOME_KINDS:
         raise FreestandError(
             f"{text!r} is not an outcome; use overturn:BLOCK, rotation:BLOCK>0.5alpha, "
-            "slide:BLOCK>0.05m, uplift:BLOCK or flight:BLOCK",
+            "slide:BLOCK>0.05m, uplift:BLOCK or flight:BLOCK, or for a 3-D body "
+            "twist:BODY>DEGREES",
             source=option,
         )
     kind, block, threshold = match["kind"], match["block"], match["threshold"]
+    if kind in BODY_ONLY_KINDS and not three_d:
+        raise FreestandError(
+            f"{text!r}: {kind} (the rotation about the vertical) is an outcome of 3-D bodies; "
+            "this configuration is planar: use overturn, rotation, slide, uplift or flight",
+            source=option,
+        )
     if block not in blocks:
         raise FreestandError(
             f"{text!r}: no block {block!r}; the blocks are {', '.join(blocks)}", source=option
@@ -205,11 +229,14 @@ def parse_outcome(text: str, blocks, option: str = "--outcome") -> Outcome:
             raise FreestandError(f"{text!r}: {kind} takes no threshold", source=option)
         return Outcome(kind, block)
     if threshold is None:
-        example = "0.5alpha" if kind == "rotation" else "0.05m"
+        example = {"rotation": "0.5alpha", "slide": "0.05m", "twist": "5deg"}[kind]
         raise FreestandError(
             f"{text!r}: give a threshold, e.g. {kind}:{block}>{example}", source=option
         )
     threshold = threshold.replace(" ", "")
+    if kind == "twist":
+        value = float(threshold) if _is_float(threshold) else _pint(threshold, "deg", option)
+        return _outcome(text, kind, block, value, "deg", option)
     if kind == "rotation":
         if threshold.endswith("alpha"):
             number, unit = threshold[: -len("alpha")] or "1", "alpha"
@@ -230,6 +257,10 @@ def parse_outcome(text: str, blocks, option: str = "--outcome") -> Outcome:
             else to_si(threshold, "length", field="threshold", source=option)
         )
         unit = "m"
+    return _outcome(text, kind, block, value, unit, option)
+
+
+def _outcome(text: str, kind: str, block: str, value: float, unit: str, option: str) -> Outcome:
     try:
         return Outcome(kind, block, value, unit)
     except ValueError as error:
@@ -261,9 +292,96 @@ def check_planar_intensity(measure: IntensityMeasure, stack: Stack, option: str 
         )
 
 
+def chosen_configuration(model, name: str | None) -> Stack | BodyConfiguration:
+    """The configuration called ``name`` (planar or 3-D); None: the first planar one, or the
+    first 3-D one in a model that has no planar configuration."""
+    bodies = model.body_configurations
+    if name is None:
+        if bodies and not model.configurations:
+            return bodies[0]
+        return model.first_configuration()
+    return next((body for body in bodies if body.name == name), None) or model.configuration(name)
+
+
+def check_body_intensity(kind: str, body: BodyConfiguration, source: str = "") -> None:
+    """FreestandError for an IM kind (``--im`` before its ``:``) a 3-D campaign cannot take."""
+    if kind == "pga-alpha":
+        raise FreestandError(
+            f"pga-alpha is a multiple of a planar block's rocking threshold; {body.name!r} is "
+            "3-D, its threshold depends on the direction: use pga-rotd50 (the default), "
+            "pga-rotd100, pga-gm, sa-rotd50:F, or pga, pgv, sa:F of the record's x component",
+            source=source + "--im",
+        )
+
+
+def check_body_variations(variations, texts, body: BodyConfiguration, option: str) -> None:
+    """FreestandError for an uncertain input a 3-D body does not have or that repeats."""
+    from freestand.core.sweeps.fragility.campaign import BODY_FIELDS
+
+    seen = set()
+    for variation, text in zip(variations, texts, strict=True):
+        parameter = variation.parameter
+        if parameter.field in ("horizontal", "vertical"):
+            continue  # refused below with the planar message
+        if parameter.field not in BODY_FIELDS:
+            raise FreestandError(
+                f"{text!r}: a 3-D body's {parameter.field} cannot be varied yet; vary "
+                f"{', '.join(f'{body.name}.{f}' for f in BODY_FIELDS)}",
+                source=option,
+            )
+        if parameter.block not in (None, body.name):
+            raise FreestandError(
+                f"{text!r}: configuration {body.name!r} has no block {parameter.block!r}; its "
+                f"body is {body.name}",
+                source=option,
+            )
+        if parameter.field in seen:
+            raise FreestandError(
+                f"{text!r}: {parameter.field} is varied twice; give it once", source=option
+            )
+        seen.add(parameter.field)
+
+
+def check_planar_angles(stack: Stack, angle, angles, source: str = "") -> None:
+    """FreestandError for an incidence angle given for a planar configuration."""
+    for option, value in (("--angle", angle), ("--angles", angles)):
+        if value is not None:
+            raise FreestandError(
+                f"{option} {value:g} turns the horizontal pair of a 3-D configuration; "
+                f"configuration {stack.name!r} is planar and moves under x alone: leave "
+                f"{option} out, or choose a 3-D configuration",
+                source=source + option,
+            )
+
+
+def incidence_angles(angle, angles, source: str = "") -> tuple[float, ...]:
+    """The fixed incidence angles [deg] of ``--angle A`` or ``--angles N`` (every 360/N deg);
+    empty for neither (one drawn per simulation)."""
+    if angle is not None and angles is not None:
+        raise FreestandError(
+            "give --angle (one fixed angle) or --angles N (a sweep), not both",
+            source=source + "--angles",
+        )
+    if angle is not None:
+        if not math.isfinite(angle):
+            raise FreestandError(
+                f"{angle!r} is not an angle; give degrees, e.g. --angle 30",
+                source=source + "--angle",
+            )
+        return (float(angle),)
+    if angles is not None:
+        if not 1 <= angles <= MAX_ANGLES:
+            raise FreestandError(
+                f"{angles} angles: give 1 to {MAX_ANGLES} (every 360/N deg), e.g. --angles 8",
+                source=source + "--angles",
+            )
+        return tuple(360.0 * k / angles for k in range(angles))
+    return ()
+
+
 def build_campaign(
     model, configuration, suite, im, levels, vary, samples, outcome, both_polarities, seed,
-    free_time, *, source: str = "",
+    free_time, *, source: str = "", angle: float | None = None, angles: int | None = None,
 ):  # fmt: skip
     """The campaign of the command-line options (or of a model's ``[fragility]`` table).
 
@@ -274,8 +392,9 @@ def build_campaign(
         Configuration name (None: the first).
     suite : str, Path or RecordSuite
         Record suite file (or the suite, loaded).
-    im : str or IntensityMeasure
-        ``--im``.
+    im : str, IntensityMeasure or None
+        ``--im`` (None: ``pga`` for a planar configuration, ``pga-rotd50``
+        for a 3-D one).
     levels : str, sequence of float or None
         ``--levels`` (``"A:B:N"`` or a list) or the levels [IM unit]; None for
         a cloud analysis.
@@ -291,6 +410,11 @@ def build_campaign(
         Cap on the time simulated after a record [s].
     source : str, optional
         Prefix of option names in messages (e.g. the model file's table).
+    angle : float, optional
+        3-D: a fixed incidence angle [deg] (``--angle``).
+    angles : int, optional
+        3-D: N incidence angles every 360/N deg (``--angles``); with neither,
+        one angle per simulation drawn uniformly over [0, 360).
 
     Returns
     -------
@@ -298,17 +422,28 @@ def build_campaign(
         (Campaign, RecordSuite).
     """
     from freestand.core.sweeps.fragility.campaign import Campaign
-    from freestand.core.sweeps.fragility.outcomes import default_outcomes
+    from freestand.core.sweeps.fragility.outcomes import default_body_outcomes, default_outcomes
     from freestand.core.sweeps.sampling import Variation
     from freestand.io.parameters import check_parameters, parse_variation
     from freestand.io.suites import RecordSuite, load_suite
 
     cloud = levels is None
-    stack = model.configuration(configuration) if configuration else model.first_configuration()
+    stack = chosen_configuration(model, configuration)
+    three_d = isinstance(stack, BodyConfiguration)
+    if im is None:
+        im = DEFAULT_BODY_IM if three_d else DEFAULT_IM
+    if three_d:
+        kind = im.kind if isinstance(im, IntensityMeasure) else im.partition(":")[0]
+        check_body_intensity(kind.strip().lower(), stack, source)
     measure = (
-        im if isinstance(im, IntensityMeasure) else parse_intensity(im, stack, source + "--im")
+        im
+        if isinstance(im, IntensityMeasure)
+        else parse_intensity(im, None if three_d else stack, source + "--im")
     )
-    check_planar_intensity(measure, stack, source + "--im")
+    if not three_d:
+        check_planar_intensity(measure, stack, source + "--im")
+        check_planar_angles(stack, angle, angles, source)
+    incidence = incidence_angles(angle, angles, source) if three_d else ()
     level_values = (
         []
         if cloud
@@ -320,11 +455,14 @@ def build_campaign(
         text if isinstance(text, Variation) else parse_variation(text, "--vary", model.gravity)
         for text in vary or []
     ]
-    check_parameters(
-        [(v.parameter, str(t)) for v, t in zip(variations, vary or [], strict=True)],
-        [stack],
-        "--vary",
-    )
+    if three_d:
+        check_body_variations(variations, vary or [], stack, source + "--vary")
+    elif variations:
+        check_parameters(
+            [(v.parameter, str(t)) for v, t in zip(variations, vary or [], strict=True)],
+            [stack],
+            "--vary",
+        )
     for variation, text in zip(variations, vary or [], strict=True):
         if variation.parameter.field in ("horizontal", "vertical"):
             raise FreestandError(
@@ -338,20 +476,29 @@ def build_campaign(
             f"{count} samples: give 1 to {MAX_SAMPLES} per record and level, e.g. --samples 10",
             source=source + "--samples",
         )
+    names = [b.name for b in (stack.bodies if three_d else stack.blocks)]
     if count > 1 and not variations:
+        hint = (
+            "leave --samples out (the incidence angles are drawn per simulation; --angles N "
+            "runs each at N angles)"
+            if three_d
+            else f"vary an input (e.g. --vary {names[-1]}.friction.static=uniform(0.4,0.6)) or "
+            "leave --samples out"
+        )
         raise FreestandError(
-            f"{count} samples without --vary would be {count} identical simulations; vary an "
-            f"input (e.g. --vary {stack.blocks[-1].name}.friction.static=uniform(0.4,0.6)) or "
-            "leave --samples out",
+            f"{count} samples without --vary would be {count} identical simulations; {hint}",
             source=source + "--samples",
         )
-    names = [b.name for b in stack.blocks]
     outcomes = (
         tuple(
-            text if isinstance(text, Outcome) else parse_outcome(text, names, source + "--outcome")
+            text
+            if isinstance(text, Outcome)
+            else parse_outcome(text, names, source + "--outcome", three_d=three_d)
             for text in outcome
         )
         if outcome
+        else default_body_outcomes(stack)
+        if three_d
         else default_outcomes(stack)
     )
     keys = [o.key for o in outcomes]
@@ -373,6 +520,7 @@ def build_campaign(
             outcomes=outcomes,
             gravity=model.gravity,
             free_time=free_time,
+            angles=incidence,
         )
     except ValueError as error:
         raise FreestandError(f"{error}", source=records.source) from None

@@ -58,14 +58,19 @@ def campaign_definition(
     """Everything that defines the simulations, with a fingerprint over it.
 
     Two runs with the same fingerprint compute the same rows; the store
-    refuses to mix runs with different fingerprints.
+    refuses to mix runs with different fingerprints. A 3-D campaign adds
+    ``shape`` (``box`` or ``cylinder``) and ``angles`` (the fixed incidence
+    angles [deg], or ``"uniform"`` for one drawn per simulation).
     """
     stack = campaign.stack
+    im = campaign.measure.to_dict()
+    if campaign.three_d:
+        im["components"] = "x, y" if campaign.measure.two_components else "x"
     defining = {
         "model_sha256": model_sha256,
         "configuration": stack.name,
         "records": [_record_hash(m) for m in campaign.motions],
-        "im": campaign.measure.to_dict(),
+        "im": im,
         "levels": [float(x) for x in campaign.levels],
         "cloud": campaign.cloud,
         "variations": [v.describe() for v in campaign.variations],
@@ -79,6 +84,9 @@ def campaign_definition(
         "chunk_size": chunk_size,
         "freestand": _versions()["freestand"],
     }
+    if campaign.three_d:
+        defining["shape"] = type(stack.body.shape).__name__.lower()
+        defining["angles"] = list(campaign.angles) or "uniform"
     fingerprint = hashlib.sha256(json.dumps(defining, sort_keys=True).encode()).hexdigest()
     return {
         "format": "freestand fragility store 1",
@@ -91,7 +99,7 @@ def campaign_definition(
             "records": [m.name for m in campaign.motions],
             "record_intensity": [float(x) for x in campaign.record_intensity],
         },
-        "blocks": [b.name for b in stack.blocks],
+        "blocks": list(campaign.block_names),
         "simulations": campaign.size,
         "versions": _versions(),
         **defining,
@@ -131,9 +139,11 @@ def fragility_document(definition: dict, result: FragilityResult, bootstrap: int
             hclpf=_number(f.hclpf) if f.fitted else None,
         )  # fmt: skip
         outcomes.append(data)
+    three_d = {key: definition[key] for key in ("shape", "angles") if key in definition}
     return {
         "model": definition["model"],
         "configuration": definition["configuration"],
+        **three_d,
         "suite": definition["suite"],
         "im": definition["im"],
         "levels": definition["levels"],
@@ -167,4 +177,5 @@ def im_label(im: dict) -> str:
         damping=im.get("damping", 0.05),
         block=im.get("block"),
     )
-    return f"{measure.describe()} [{im['unit']}]"
+    on_x = " of x" if im.get("components") == "x" else ""
+    return f"{measure.describe()}{on_x} [{im['unit']}]"

@@ -118,6 +118,30 @@ EXCITATION_FIELDS: tuple[str, ...] = ("horizontal", "vertical")
 OPERATIONS: tuple[str, ...] = ("set", "add", "scale")
 
 
+def kinetic_below_static(static, kinetic, nominal, static_varied: bool, kinetic_varied: bool):
+    """The kinetic friction coefficients [-] of varied inputs, never above the static ones.
+
+    Where the kinetic coefficient is varied it is clipped to ``min(mu, mu_0)``;
+    where only the static one is, the kinetic one follows it in the model's
+    proportion ``mu = mu_0 (mu_model / mu_0,model)``; else it is unchanged.
+
+    Parameters
+    ----------
+    static, kinetic : numpy.ndarray
+        mu_0 and mu of the cases [-].
+    nominal : Friction
+        The model's friction.
+    static_varied, kinetic_varied : bool
+        Which coefficients were varied.
+    """
+    if kinetic_varied:
+        return np.minimum(kinetic, static)
+    if static_varied:
+        ratio = nominal.kinetic / nominal.static if nominal.static > 0 else 1.0
+        return static * ratio
+    return kinetic
+
+
 @dataclass(frozen=True)
 class Parameter:
     """An input that a map or a sweep varies.
@@ -406,15 +430,10 @@ def case_inputs(
             elif parameter.field == "friction.kinetic":
                 kinetic_set[column] = True
     for column, block in enumerate(stack.blocks):
-        static = arrays["static_friction"][:, column]
-        if kinetic_set[column]:
-            arrays["kinetic_friction"][:, column] = np.minimum(
-                arrays["kinetic_friction"][:, column], static
-            )
-        elif static_set[column]:
-            nominal = block.friction
-            ratio = nominal.kinetic / nominal.static if nominal.static > 0 else 1.0
-            arrays["kinetic_friction"][:, column] = static * ratio
+        arrays["kinetic_friction"][:, column] = kinetic_below_static(
+            arrays["static_friction"][:, column], arrays["kinetic_friction"][:, column],
+            block.friction, static_set[column], kinetic_set[column],
+        )  # fmt: skip
     return CaseInputs(stack=replace(batch, **arrays), horizontal=h, vertical=v, sense=int(sense))
 
 

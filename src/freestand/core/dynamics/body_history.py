@@ -9,12 +9,12 @@ uplift, free flight, overturning).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from freestand.core.body import Body, Box
-from freestand.core.contact.body_kernel import FREE, STATE_SIZE, body_parameters
+from freestand.core.contact.body_kernel import FACE, FREE, STATE_SIZE, body_parameters
 from freestand.core.dynamics import body_engine as engine
 from freestand.core.dynamics.results import ContactTolerances
 from freestand.core.dynamics.single_block import UPLIFT_GAP_FRACTION
@@ -23,6 +23,10 @@ from freestand.errors import FreestandError
 GRAVITY = 9.81
 
 MOTION_NAMES = {0: "free-flight", 1: "rock-corner", 2: "rock-edge", 3: "rest"}
+
+#: After the record, the body is at rest when it sits flat, sticks and no velocity
+#: component exceeds this [m/s, rad/s] (the planar engine's rest test).
+REST_VELOCITY = 1e-9
 
 #: A base point deeper below the support than this fraction of the base width [-] means the
 #: contact was lost (round-off stays below 1e-11 of it): the simulation failed there.
@@ -401,3 +405,97 @@ def _base_heights(body, rot, base) -> tuple[np.ndarray, np.ndarray]:
         return z.min(axis=1), z.max(axis=1)
     reach = body.shape.radius * np.hypot(rot[:, 2, 0], rot[:, 2, 1])
     return base[:, 2] - reach, base[:, 2] + reach
+
+
+def run_body_history(
+    body: Body,
+    motion: SupportMotion3,
+    duration: float | None = None,
+    *,
+    until_rest: bool = False,
+    free_time: float = 10.0,
+    max_step: float | None = None,
+    gravity: float = GRAVITY,
+    **options,
+) -> tuple[BodyTimeHistory, str, str]:
+    """The time history of a body with its verdict: (history, status, message).
+
+    The run of :func:`freestand.simulate` on a 3-D configuration and of a
+    3-D fragility campaign's simulations: :func:`simulate_body` to
+    ``duration`` (default the record; with ``until_rest``, the record plus
+    ``free_time`` [s]), then :func:`body_verdict`.
+
+    Parameters
+    ----------
+    body : Body
+    motion : SupportMotion3
+        Support accelerations [m/s^2], turned as wished.
+    duration : float, optional
+        End time [s].
+    until_rest : bool, optional
+        Go on after the record until the body rests, at most ``free_time`` [s].
+    free_time : float, optional
+        Cap on the time after the record [s] (``until_rest``).
+    max_step, gravity, options
+        As for :func:`simulate_body` (``tolerances``, ``initial``, ``restitution``).
+
+    Returns
+    -------
+    tuple
+        (BodyTimeHistory, status, message) of :func:`body_verdict`.
+    """
+    if until_rest and duration is None:
+        if not (free_time >= 0.0 and math.isfinite(free_time)):
+            raise FreestandError(f"free_time must be a finite time >= 0 [s], not {free_time!r}")
+        end = motion.duration + free_time
+    else:
+        end = motion.duration if duration is None else float(duration)
+    history = simulate_body(body, motion, end, max_step=max_step, gravity=gravity, **options)
+    return body_verdict(history, motion.duration, until_rest)
+
+
+def body_verdict(history: BodyTimeHistory, record_end: float, until_rest: bool):
+    """(history, status, message); with ``until_rest`` the history ends where the body rests.
+
+    Status ``"completed"`` (to the end, at rest, or overturned), ``"capped"``
+    (``until_rest`` and still moving at the end) or ``"failed"`` (the contact
+    was lost). At rest: flat, sticking, no velocity component above
+    :data:`REST_VELOCITY`, after the record.
+    """
+    if history.status == "failed":
+        remedies = history.diagnostics.get("remedies", 0)
+        cause = (
+            f" (after {remedies} contact states without an admissible mode, continued in free "
+            "flight: a limitation of this version's 3-D engine)"
+            if remedies
+            else ""
+        )
+        return history, "failed", history.message + cause
+    if history.overturned:
+        return history, "completed", f"overturned at t = {history.overturn_time:.6g} s"
+    end = float(history.time[-1])
+    if not until_rest:
+        return history, "completed", f"simulated to t = {end:.6g} s"
+    moving = (
+        (history.patch != FACE)
+        | history.sliding
+        | (np.max(np.abs(history.state[:, 7:13]), axis=1) > REST_VELOCITY)
+        | (history.time < record_end)
+    )
+    if moving[-1]:
+        return history, "capped", f"still moving at the cap, t = {end:.6g} s"
+    rest = int(np.flatnonzero(moving)[-1]) + 1 if moving.any() else 0
+    kept = slice(0, rest + 1)
+    arrays = ("time", "state", "patch", "sliding", "normal_force", "friction_force", "tilt",
+              "slide", "twist")  # fmt: skip
+    history = replace(history, **{name: getattr(history, name)[kept] for name in arrays})
+    return history, "completed", f"at rest at t = {float(history.time[-1]):.6g} s"
+
+
+def tilt_vector(quaternions: np.ndarray, tilt: np.ndarray) -> np.ndarray:
+    """(K, 2) [rad]: ``tilt (e_x, e_y) / |(e_x, e_y)|``, e the body axis R e_z (0 when upright)."""
+    w, x, y, z = quaternions.T
+    axis = np.column_stack([2.0 * (x * z + w * y), 2.0 * (y * z - w * x)])
+    size = np.hypot(axis[:, 0], axis[:, 1])
+    scale = np.divide(tilt, size, out=np.zeros_like(tilt), where=size > 0.0)
+    return axis * scale[:, None]
