@@ -23,6 +23,7 @@ from freestand.errors import FreestandError
 GRAVITY = 9.81
 
 MOTION_NAMES = {0: "free-flight", 1: "rock-corner", 2: "rock-edge", 3: "rest"}
+EVENT_ROWS = 200_000  # events kept (the engine counts the others)
 
 
 @dataclass(frozen=True)
@@ -251,9 +252,11 @@ def simulate_body(
     mode = np.zeros(3, dtype=np.int64)
     data = np.zeros(4)
     istate = np.zeros(engine.I_SIZE, dtype=np.int64)
-    capacity = int(end / step * 1.2) + 1000
+    # a step ends at max_step, at every break of the record and at every event
+    capacity = int(end / step * 1.1) + 2 * int(np.count_nonzero(breaks < end)) + 64
     buffers = _buffers(capacity)
-    events = (np.zeros(200_000),) + tuple(np.zeros(200_000, dtype=np.int64) for _ in range(3))
+    # written by the engine before they are read: not zeroed
+    events = (np.empty(EVENT_ROWS),) + tuple(np.empty(EVENT_ROWS, dtype=np.int64) for _ in range(3))
     t = 0.0
     chunks = []
     while True:
@@ -276,23 +279,76 @@ def simulate_body(
 
 
 def _buffers(capacity: int):
-    return (np.zeros(capacity), np.zeros((capacity, STATE_SIZE)),
-            np.zeros((capacity, 3), dtype=np.int64), np.zeros((capacity, 2)))  # fmt: skip
+    return (np.empty(capacity), np.empty((capacity, STATE_SIZE)),
+            np.empty((capacity, 3), dtype=np.int64), np.empty((capacity, 2)))  # fmt: skip
 
 
-def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHistory:
+@dataclass(frozen=True)
+class BodyMotion:
+    """The motion of a body read from its states (:func:`body_motion`).
+
+    Attributes
+    ----------
+    tilt : numpy.ndarray
+        (K,) angle of the body's z axis from the vertical [rad].
+    slide : numpy.ndarray
+        (K, 2) horizontal displacement of the base centre from the first state [m].
+    twist : numpy.ndarray
+        (K,) rotation about the vertical from the first state (swing-twist
+        decomposition of the orientation, unwrapped) [rad].
+    lowest, highest : numpy.ndarray
+        (K,) height of the lowest and of the highest point of the base's
+        outline above the support [m] (a box's corners, a cylinder's rim).
+    """
+
+    tilt: np.ndarray
+    slide: np.ndarray
+    twist: np.ndarray
+    lowest: np.ndarray
+    highest: np.ndarray
+
+
+def body_motion(body: Body, state: np.ndarray) -> BodyMotion:
+    """Tilt, slide, twist and base heights of ``body`` from its states.
+
+    Parameters
+    ----------
+    body : Body
+    state : numpy.ndarray
+        (K, >= 7): the centre of gravity r [m] and the orientation quaternion
+        (w, x, y, z) [-] of the body frame (origin at the base centre, z
+        along the body's axis) in the support frame, as
+        :attr:`BodyTimeHistory.state`.
+
+    Returns
+    -------
+    BodyMotion
+
+    Notes
+    -----
+    With the quaternion q = (w, x, y, z): ``cos(tilt) = 1 - 2 (x^2 + y^2)``
+    (the z component of the body's axis), ``twist = 2 atan2(z, w)`` (the
+    rotation about the vertical when the orientation is split into a twist
+    about the vertical followed by a swing of the axis), the base centre
+    ``r - R c`` with c the centre of gravity in the body frame.
+    """
+    state = np.asarray(state, dtype=float)
     w, qx, qy, qz = state[:, 3], state[:, 4], state[:, 5], state[:, 6]
     cos_tilt = 1.0 - 2.0 * (qx**2 + qy**2)
     tilt = np.arccos(np.clip(cos_tilt, -1.0, 1.0))
     twist = np.unwrap(2.0 * np.arctan2(qz, w))
     twist -= twist[0]
-    # base centre = r - R c
-    c = np.asarray(body.centre)
     rot = _matrices(state[:, 3:7])
-    base = state[:, 0:3] - rot @ c
-    slide = base[:, 0:2] - base[0, 0:2]
+    base = state[:, 0:3] - rot @ np.asarray(body.centre)
+    lowest, highest = _base_heights(body, rot, base)
+    return BodyMotion(tilt, base[:, 0:2] - base[0, 0:2], twist, lowest, highest)
+
+
+def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHistory:
+    motion = body_motion(body, state)
+    tilt, slide, twist = motion.tilt, motion.slide, motion.twist
     width = min(body.shape.size[:2]) if isinstance(body.shape, Box) else 2.0 * body.shape.radius
-    lift = _highest_base_gap(body, rot, base)
+    lift = motion.highest
     count = int(istate[engine.I_EVENTS])
     names = ("free", "point", "edge", "face")
     event_list = tuple(
@@ -338,11 +394,11 @@ def _matrices(quaternions: np.ndarray) -> np.ndarray:
     ], axis=1)  # fmt: skip
 
 
-def _highest_base_gap(body, rot, base) -> np.ndarray:
-    """Height [m] of the highest base point above the support, per sample."""
+def _base_heights(body, rot, base) -> tuple[np.ndarray, np.ndarray]:
+    """Heights [m] of the lowest and of the highest base point above the support, per sample."""
     if isinstance(body.shape, Box):
         corners = body.shape.base_corners()
         z = np.einsum("kj,nj->kn", rot[:, 2, :], corners) + base[:, 2:3]
-        return z.max(axis=1)
-    sin_t = np.hypot(rot[:, 2, 0], rot[:, 2, 1])
-    return base[:, 2] + body.shape.radius * sin_t
+        return z.min(axis=1), z.max(axis=1)
+    reach = body.shape.radius * np.hypot(rot[:, 2, 0], rot[:, 2, 1])
+    return base[:, 2] - reach, base[:, 2] + reach
