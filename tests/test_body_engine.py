@@ -50,6 +50,7 @@ def test_box_released_on_a_corner_never_gains_energy():
     box = Body("b", Box((1.0, 0.6, 2.0)), 1000.0, Friction(0.7, 0.7))
     result = simulate_body(box, SupportMotion3(DT, np.zeros(301)), 3.0,
                            initial=initial_state(box, (0.08, -0.2)))  # fmt: skip
+    assert result.status == "completed", result.message
     parameters = body_parameters(box, 9.81)
     values = np.array([energy(parameters, state) for state in result.state])
     assert np.all(np.diff(values) <= 1e-9 * values[0])

@@ -24,6 +24,8 @@ GRAVITY = 9.81
 
 MOTION_NAMES = {0: "free-flight", 1: "rock-corner", 2: "rock-edge", 3: "rest"}
 EVENT_ROWS = 200_000  # events kept (the engine counts the others)
+#: A base point this far below the support (times the base's width) means the contact was lost.
+PENETRATION_FRACTION = 1e-3
 
 
 @dataclass(frozen=True)
@@ -87,7 +89,10 @@ class BodyTimeHistory:
     body : str
         The body's name.
     status : str
-        ``"completed"`` or ``"overturned"``.
+        ``"completed"``, ``"overturned"`` or ``"failed"`` (the state stopped
+        being finite, or a base point passed below the support by more than
+        ``PENETRATION_FRACTION`` of the base's width: a defect of the engine;
+        the histories and peaks stop before it, ``message`` says when).
     time : numpy.ndarray
         (K,) [s].
     state : numpy.ndarray
@@ -117,6 +122,8 @@ class BodyTimeHistory:
     diagnostics : dict
         steps, events, impacts, remedies (modes without an admissible
         candidate, continued in free flight).
+    message : str
+        Why a simulation failed; empty otherwise.
     """
 
     body: str
@@ -138,6 +145,7 @@ class BodyTimeHistory:
     overturned: bool
     overturn_time: float | None
     diagnostics: dict = field(default_factory=dict)
+    message: str = ""
 
 
 def default_body_step(body: Body, gravity: float = GRAVITY) -> float:
@@ -344,11 +352,29 @@ def body_motion(body: Body, state: np.ndarray) -> BodyMotion:
     return BodyMotion(tilt, base[:, 0:2] - base[0, 0:2], twist, lowest, highest)
 
 
+def _valid_rows(time, state, lowest, width) -> tuple[int, str]:
+    """Rows before the first state that is not finite or lies below the support; why."""
+    finite = np.all(np.isfinite(state), axis=1)
+    below = lowest < -PENETRATION_FRACTION * width
+    bad = np.flatnonzero(~finite | below)
+    if bad.size == 0:
+        return time.size, ""
+    k = max(int(bad[0]), 1)
+    if not finite[bad[0]]:
+        why = "the state stopped being finite"
+    else:
+        why = f"a base point passed {-lowest[bad[0]]:.3g} m below the support (contact lost)"
+    return k, (f"{why} at t = {time[bad[0]]:.6g} s, a defect of the 3-D engine; the "
+               f"histories and peaks stop at t = {time[k - 1]:.6g} s")  # fmt: skip
+
+
 def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHistory:
     motion = body_motion(body, state)
-    tilt, slide, twist = motion.tilt, motion.slide, motion.twist
     width = min(body.shape.size[:2]) if isinstance(body.shape, Box) else 2.0 * body.shape.radius
-    lift = motion.highest
+    rows, message = _valid_rows(time, state, motion.lowest, width)
+    time, state, modes, forces = time[:rows], state[:rows], modes[:rows], forces[:rows]
+    tilt, slide, twist = motion.tilt[:rows], motion.slide[:rows], motion.twist[:rows]
+    lift = motion.highest[:rows]
     count = int(istate[engine.I_EVENTS])
     names = ("free", "point", "edge", "face")
     event_list = tuple(
@@ -356,10 +382,11 @@ def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHi
          names[events[2][i]] if events[2][i] >= 0 else "", names[events[3][i]])
         for i in range(min(count, events[0].shape[0]))
     )  # fmt: skip
-    overturned = istate[engine.I_STATUS] == engine.STATUS_OVERTURNED
+    overturned = istate[engine.I_STATUS] == engine.STATUS_OVERTURNED and not message
+    status = "failed" if message else ("overturned" if overturned else "completed")
     return BodyTimeHistory(
         body=body.name,
-        status="overturned" if overturned else "completed",
+        status=status,
         time=time,
         state=state,
         patch=modes[:, 0].copy(),
@@ -382,6 +409,7 @@ def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHi
             "impacts": int(istate[engine.I_IMPACTS]),
             "remedies": int(istate[engine.I_REMEDIES]),
         },
+        message=message,
     )
 
 
