@@ -70,4 +70,7 @@ def test_the_readme_python_tour_runs(monkeypatch, capsys, tmp_path):
     assert (tmp_path / "crane-fragility.png").stat().st_size > 10_000
     assert "uplift_threshold [m/s^2]" in printed  # the 3-D bodies by direction
     assert (tmp_path / "bodies-polar.png").stat().st_size > 10_000
+    assert namespace["cask"].status == "completed"  # the 3-D time history
+    assert namespace["cask"].max_slide[0] > 0.0
+    assert (tmp_path / "cask-plan.png").stat().st_size > 10_000
     assert "['rock', 'rock']" in printed  # the cabinet at SL-2, both senses

@@ -63,7 +63,7 @@ def test_a_history_is_cut_before_a_state_below_the_support_or_not_finite():
     lowest = np.array([0.0, -1e-9, -0.01, 0.0, 0.0])
     rows, message = _valid_rows(time, state, lowest, 0.6)
     assert rows == 2
-    assert "0.01 m below the support (contact lost) at t = 2 s" in message
+    assert "0.01 m below the support at t = 2 s: the contact was lost" in message
     state[1, 4] = math.nan
     rows, message = _valid_rows(time, state, np.zeros(5), 0.6)
     assert rows == 1

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import datetime
+import json
 import math
 
 import pytest
@@ -81,3 +82,50 @@ def test_report_command_on_a_3d_model(tmp_path):
     html = target.read_text()
     assert html.count('data-figure="uplift-polar"') == 2
     assert "Traceback" not in result.stderr
+
+
+def test_report_with_a_record_gives_the_time_history_of_each_3d_body(tmp_path):
+    """freestand report --record: section 4 has the peaks (the API's numbers) and the figures."""
+    records = ROOT / "examples" / "records"
+    target = tmp_path / "bodies.html"
+    result = run_freestand(
+        "report", str(BODIES), "-o", str(target), "--date", "2024-05-31", "--json",
+        "--record", str(records / "synthetic_H.AT2"), "--record-y", str(records / "synthetic_H.AT2"),
+        "--peak", "5", "--angle", "30",
+    )  # fmt: skip
+    assert result.returncode == 0, result.stderr
+    report = parse_report(target.read_text())
+    record = fs.load_record(records / "synthetic_H.AT2", horizontal_y=records / "synthetic_H.AT2")
+    model = fs.load_model(BODIES)
+    for name in ("cask", "cabinet"):
+        history = fs.simulate(model, record.scaled_to_peak(5.0), configuration=name, angle=30.0,
+                              until_rest=True)  # fmt: skip
+        where = {"configuration": name, "block": name}
+        assert report.one("max_rotation", **where).value == history.max_rotation[0]
+        assert report.one("max_slide_mm", **where).value == 1000.0 * history.max_slide[0]
+        assert report.one("end_time", **where).value == history.core.time[-1]
+    kinds = [
+        (f.attrs.get("data-figure"), f.attrs.get("data-configuration")) for f in report.figures
+    ]
+    for name in ("cask", "cabinet"):
+        assert ("body-history", name) in kinds and ("body-plan", name) in kinds
+    summary = " ".join(json.loads(result.stdout)["summary"])
+    assert "Under the record synthetic_H.AT2 (turned 30 deg) the cabinet (cabinet) lifts" in summary
+    assert "not assessed for overturning" not in summary
+    assert "body-histories" in report.ids and "bodies-not-assessed" not in report.ids
+
+
+@pytest.mark.parametrize(
+    ("model_file", "args", "option"),
+    [
+        (BODIES, ("--record-y", "y.AT2"), "--record-y"),
+        (ROOT / "examples" / "crane.toml", ("--record", "x.AT2"), "--record"),
+    ],
+)
+def test_report_record_options_need_a_record_and_a_3d_configuration(model_file, args, option,
+                                                                      tmp_path):  # fmt: skip
+    records = ROOT / "examples" / "records"
+    (tmp_path / "x.AT2").write_text((records / "synthetic_H.AT2").read_text())
+    result = run_freestand("report", str(model_file), "-o", "out.html", *args, cwd=tmp_path)
+    assert result.returncode == 2 and option in result.stderr
+    assert "Traceback" not in result.stderr and not (tmp_path / "out.html").exists()

@@ -41,7 +41,10 @@ def test_impacts_are_located_to_the_time_tolerance():
     result = simulate(stack, motion, 10.0, method="general")
     assert result.status == "completed"
     impacts = result.events_of("impact")
-    assert len(impacts) > 100  # the rocking's decaying impacts, down to 1e-4 m/s
+    # the rocking's decaying impacts, each located, until the Zeno tail is summed once
+    # the support is still (95 impacts, then one landing: docs/timehistory.md)
+    assert len(impacts) > 90
+    assert result.diagnostics.zeno_landings == 1
     threshold = 1e-3 * ContactTolerances().gap  # the gap an impact must pass [m]
     for event in impacts:
         row = int(np.flatnonzero(result.time == event.time)[0])

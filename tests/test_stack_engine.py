@@ -69,8 +69,9 @@ def compiled_solve(stack: Stack, q, qd, inertial: float, vertical: float):
     qdd = np.empty((engine.MAX_DISTINCT, 3 * count))
     lam = np.empty((engine.MAX_DISTINCT, count, 3))
     distinct = engine.solve_contact_problem(
-        count, model[1], free, kin.normal_jacobian, kin.normal_bias, kin.tangential_jacobian,
-        kin.tangential_bias, active, slip, sliding, model[3], model[4], force_tol, accel_tol,
+        count, model.masses[engine.INVERSE_MASS], free, kin.normal_jacobian, kin.normal_bias,
+        kin.tangential_jacobian, kin.tangential_bias, active, slip, sliding,
+        model.properties[engine.MU_S], model.properties[engine.MU_K], force_tol, accel_tol,
         modes, qdd, lam,
     )  # fmt: skip
     return problem, distinct, modes, qdd, lam

@@ -5,6 +5,7 @@ API"); they are loaded on first use, so the command line starts fast:
 
 - models and records: :func:`load_model`, :func:`load_record`,
   :func:`load_suite`, :func:`load_station`, :class:`GroundMotion`, :class:`SupportMotion`,
+  :class:`SupportMotion3` (and :func:`support_motion3`),
   :class:`Block`, :class:`Stack`, :class:`Friction`, :class:`Sliding`,
   :class:`Excitation`;
 - analyses, one per command, each returning a result with ``to_dict()``
@@ -53,6 +54,8 @@ _PUBLIC = {
     "screen": "freestand.api",
     "simulate": "freestand.api",
     "support_motion": "freestand.api",
+    "support_motion3": "freestand.api",
+    "SupportMotion3": "freestand.core.dynamics.body_history",
     "overturning": "freestand.api",
     "frequency": "freestand.api",
     "mode_map": "freestand.api",
@@ -65,6 +68,7 @@ _PUBLIC = {
     "floor_motion": "freestand.api",
     "ScreeningResult": "freestand.api",
     "SimulationResult": "freestand.api",
+    "BodySimulationResult": "freestand.api",
     "OverturningResult": "freestand.api",
     "FrequencyResult": "freestand.api",
     "ModeMapResult": "freestand.api",

@@ -100,16 +100,16 @@ def test_squat_cylinder_slides_as_newmarks_block_and_on_the_circular_cone():
     assert slides[1] == pytest.approx(slides[0], rel=1e-9)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="known defect (#18): at a 1 rad incidence the slide leaves "
-    "the motion's line by about 1e-4 m of 0.09 m",
-)
 def test_squat_cylinder_slides_along_the_line_of_an_oblique_motion():
+    # the slip restarts from a stick (at 0.69 s) along the onset's direction: a residual
+    # slip velocity of round-off size once steered it 0.04 rad off the line (1.8e-4 m)
     body = Body("s", Cylinder(1.0, 0.5), 1000.0, Friction(0.2, 0.2))
+    axis = simulate_body(body, SupportMotion3(DT, PULSE), 3.0)
     result = simulate_body(body, SupportMotion3(DT, PULSE).rotated(1.0), 3.0)
     final = result.slide[-1]
-    assert abs(final[0] * math.sin(1.0) - final[1] * math.cos(1.0)) <= 1e-9
+    # tolerance 2e-9 m of 0.089 m: round-off grown over the slip (measured 1e-9)
+    assert abs(final[0] * math.sin(1.0) - final[1] * math.cos(1.0)) <= 2e-9
+    assert result.max_slide == pytest.approx(axis.max_slide, rel=1e-6)
 
 
 def test_square_box_slides_as_far_along_the_diagonal():
@@ -118,3 +118,20 @@ def test_square_box_slides_as_far_along_the_diagonal():
     diagonal = simulate_body(body, SupportMotion3(DT, PULSE).rotated(0.25 * math.pi), 3.0)
     assert diagonal.max_slide == pytest.approx(axis.max_slide, rel=1e-9)
     assert diagonal.max_twist < 1e-12
+
+
+def test_a_slide_that_outlasts_its_pulse_stops_as_newmarks_block():
+    # Newmark (1965) rigid sliding block; a cask-like cylinder (R 1.7 m, H 6 m) under one
+    # cycle of 7 m/s^2 at 1 Hz, static 0.3 and kinetic 0.25: it slides on after the pulse
+    # and must stop (a friction that flipped with the slip inside an RK4 step once froze it
+    # at 5 mm/s). Tolerance 1e-6: both integrate the same piecewise-linear record exactly
+    # up to the located slip-stop.
+    dt = 0.005
+    time = np.arange(0.0, 3.0, dt)
+    pulse = np.where(time < 0.5, 7.0 * np.sin(2.0 * np.pi * time), 0.0)
+    body = Body("cask", Cylinder(1.7, 6.0), 1.8e5, Friction(0.3, 0.25))
+    result = simulate_body(body, SupportMotion3(dt, pulse), 5.0)
+    newmark = slide_block(GroundMotion(dt, pulse), 0.3, 0.25)
+    assert result.events[-1][1] == "stick"
+    assert np.abs(result.state[-1, 7:13]).max() < 1e-12
+    assert result.max_slide == pytest.approx(newmark.max_slide, rel=1e-6)

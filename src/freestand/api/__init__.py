@@ -10,6 +10,7 @@ command line (:mod:`freestand.cli`) is a shell over them: a command's
 
 from __future__ import annotations
 
+from freestand.api.body_simulation import BodySimulationResult, support_motion3
 from freestand.api.fragility import FragilityResult, fragility, fragility_from_store
 from freestand.api.frequency import FrequencyResult, frequency
 from freestand.api.maps import ModeMapResult, SampleResult, mode_map, sample
@@ -27,6 +28,7 @@ from freestand.api.screening import ScreeningResult, screen
 from freestand.api.simulation import SimulationResult, simulate, support_motion
 
 __all__ = [
+    "BodySimulationResult",
     "FloorMotion",
     "FragilityResult",
     "FrequencyResult",
@@ -50,5 +52,6 @@ __all__ = [
     "screen",
     "simulate",
     "support_motion",
+    "support_motion3",
     "write_report",
 ]

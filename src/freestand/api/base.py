@@ -76,6 +76,29 @@ class Result:
         raise NotImplementedError
 
 
+class HistoryResult(Result):
+    """Base of the time-history results (a planar stack's and a 3-D body's): what they
+    share, from their ``motion`` (the record given, or None) and their ``events``."""
+
+    @property
+    def record(self) -> str:
+        """The record's name (``"samples"`` for samples given directly)."""
+        return self.motion.name if self.motion is not None and self.motion.name else "samples"
+
+    @property
+    def title(self) -> str:
+        """The figure title: model, configuration (once when they share a name), record, peak."""
+        same = self.model == self.configuration
+        name = self.model if same else f"{self.model} / {self.configuration}"
+        turned = f", turned {self.angle:g} deg" if getattr(self, "angle", 0.0) else ""
+        return f"{name}: {self.record}{turned}, peak {self.peak_horizontal:.2f} m/s^2"
+
+    def event_counts(self) -> dict[str, int]:
+        """Number of events of each kind (sorted by kind)."""
+        kinds = sorted({event.kind for event in self.events})
+        return {kind: sum(event.kind == kind for event in self.events) for kind in kinds}
+
+
 def frame(rows: Sequence[dict], columns: Sequence[str], attrs: dict):
     """A DataFrame of ``rows`` with exactly ``columns`` (in that order) and ``attrs``."""
     import pandas as pd
@@ -122,7 +145,7 @@ class Subject:
             if not self.configurations:
                 raise FreestandError(
                     "a 3-D body is given; this analysis takes planar stacks only (3-D bodies: "
-                    "fs.screen)"
+                    "fs.screen, fs.simulate)"
                 )
             return self.configurations[0]
         for stack in self.configurations:

@@ -113,6 +113,8 @@ def write_report(
     pdf: bool = False,
     date: _dt.date | str | None = None,
     progress: Callable[[str, int, int], None] | None = None,
+    record=None,
+    angle: float = 0.0,
 ) -> ReportResult:
     """Write the engineer's screening report of a model file (HTML, and PDF on request).
 
@@ -121,8 +123,9 @@ def write_report(
     SHA-256, the analogues of the paper's Tables 2-5 for every
     configuration, excitation and sense, the overturning assessment of every
     rocking block (Figs. 6-8: Housner 1963, Makris and Roussos 2000, exact),
-    the vertical frequency and jump check (Fig. 9), a fragility appendix for
-    a ``[fragility]`` table, and the method, limits and references
+    the time history of every 3-D configuration under a ``record`` when one
+    is given, the vertical frequency and jump check (Fig. 9), a fragility
+    appendix for a ``[fragility]`` table, and the method, limits and references
     (``docs/report.md``). It is written to a temporary file and renamed into
     place, so a failure leaves nothing behind.
 
@@ -140,6 +143,16 @@ def write_report(
         if set, else today): the same date gives the same bytes.
     progress : callable, optional
         Called with (what is being done, steps done, steps in all).
+    record : GroundMotion, optional
+        A ground record (``fs.load_record(x, horizontal_y=..., vertical=...)``,
+        scaled as wished): every 3-D configuration is simulated under it, and
+        after it until it rests (:func:`freestand.simulate` with
+        ``until_rest``), and section 4 shows its peaks and figures. Planar
+        configurations are not simulated (``freestand simulate`` is their
+        time history).
+    angle : float, optional
+        The angle [deg] the record's horizontal pair is turned by, counter-clockwise
+        from +x towards +y (:func:`freestand.support_motion3`).
 
     Returns
     -------
@@ -181,9 +194,42 @@ def write_report(
         if progress is not None:
             progress(description, done, total + 2)
 
-    content = collect_report(model, date=day, progress=step)
+    histories = _body_histories(model, record, angle, progress)
+    content = collect_report(model, date=day, progress=step, body_histories=histories)
     files = _write(content, target, pdf, as_pdf, progress, steps[0])
     return ReportResult(tuple(files), content)
+
+
+def _body_histories(model, record, angle: float, progress) -> tuple:
+    """The time history of every 3-D configuration under ``record`` (none without one)."""
+    from freestand.api.body_simulation import support_motion3
+    from freestand.api.simulation import simulate
+
+    if record is None:
+        if angle:
+            raise FreestandError(
+                "--angle turns the record's horizontal pair; give the record (--record)",
+                source="--angle",
+            )
+        return ()
+    if not model.body_configurations:
+        raise FreestandError(
+            "the report simulates the 3-D configurations under the record, and this model has "
+            "none; leave --record out (freestand simulate gives the time history of a planar "
+            "configuration)",
+            source="--record",
+        )
+    support_motion3(record, angle=angle)  # an angle that is not a number: before any work
+    histories = []
+    for configuration in model.body_configurations:
+        if progress is not None:
+            progress(f"time history of {configuration.name} under the record", 0, 1)
+        histories.append(
+            simulate(
+                model, record, configuration=configuration.name, angle=angle, until_rest=True
+            )  # fmt: skip
+        )
+    return tuple(histories)
 
 
 def _write(content, target: Path, pdf: bool, as_pdf: bool, progress, total: int) -> list[Path]:

@@ -1,4 +1,7 @@
-"""Public time history: :func:`simulate`, its result, and :func:`support_motion`."""
+"""Public time history: :func:`simulate`, its result, and :func:`support_motion`.
+
+3-D configurations are simulated by :mod:`freestand.api.body_simulation`.
+"""
 
 from __future__ import annotations
 
@@ -8,7 +11,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from freestand.api.base import Result, finite, frame, subject
+from freestand.api.base import HistoryResult, finite, frame, subject
+from freestand.api.body_simulation import (
+    BodySimulationResult,
+    check_body_options,
+    simulate_body_configuration,
+    support_motion3,
+)
+from freestand.core.body import BodyConfiguration
+from freestand.core.dynamics.body_history import SupportMotion3
 from freestand.core.dynamics.timehistory import (
     FREE_TIME,
     METHODS,
@@ -64,7 +75,7 @@ def support_motion(motion: GroundMotion | SupportMotion) -> SupportMotion:
 
 
 @dataclass(frozen=True)
-class SimulationResult(Result):
+class SimulationResult(HistoryResult):
     """The time history of one configuration under one support motion.
 
     The peaks and the verdict are attributes (``status``, ``max_rotation``,
@@ -167,26 +178,9 @@ class SimulationResult(Result):
         return self.core.diagnostics
 
     @property
-    def record(self) -> str:
-        """The record's name (``"samples"`` for samples given directly)."""
-        return self.motion.name if self.motion is not None and self.motion.name else "samples"
-
-    @property
     def peak_horizontal(self) -> float:
         """Peak horizontal support acceleration [m/s^2]."""
         return float(np.max(np.abs(self.support.horizontal)))
-
-    @property
-    def title(self) -> str:
-        """The figure title: model, configuration (once when they share a name), record, peak."""
-        same = self.model == self.configuration
-        name = self.model if same else f"{self.model} / {self.configuration}"
-        return f"{name}: {self.record}, peak {self.peak_horizontal:.2f} m/s^2"
-
-    def event_counts(self) -> dict[str, int]:
-        """Number of events of each kind (sorted by kind)."""
-        kinds = sorted({event.kind for event in self.events})
-        return {kind: sum(event.kind == kind for event in self.events) for kind in kinds}
 
     def blocks(self) -> list[dict]:
         """The peaks of every block, bottom to top, JSON-ready."""
@@ -373,7 +367,7 @@ class SimulationResult(Result):
 
 def simulate(
     model,
-    motion: GroundMotion | SupportMotion,
+    motion,
     duration: float | None = None,
     *,
     configuration: str | None = None,
@@ -384,52 +378,76 @@ def simulate(
     until_rest: bool = False,
     free_time: float = FREE_TIME,
     progress: Callable[[float], None] | None = None,
+    angle: float = 0.0,
     **options,
-) -> SimulationResult:
-    """Time history of a stack under a support motion (exact rigid contact).
+) -> SimulationResult | BodySimulationResult:
+    """Time history of a configuration under a support motion (exact rigid contact).
 
-    Every block's rocking, sliding (static friction to hold, kinetic to
-    slide), end stops, free flight, impacts (perfectly plastic; Housner 1963
-    for a single block) and overturning are followed: the screening's contact
-    problem, extended by the velocity terms, is solved at every event and the
-    equations of motion are integrated between events; a single block on the
-    support takes the exact rocking or sliding equation (Zhang and Makris
-    2001, eqs. 10-12) where it applies (``diagnostics.method`` says which).
+    A planar stack: every block's rocking, sliding (static friction to hold,
+    kinetic to slide), end stops, free flight, impacts (perfectly plastic;
+    Housner 1963 for a single block) and overturning are followed: the
+    screening's contact problem, extended by the velocity terms, is solved at
+    every event and the equations of motion are integrated between events; a
+    single block on the support takes the exact rocking or sliding equation
+    (Zhang and Makris 2001, eqs. 10-12) where it applies
+    (``diagnostics.method`` says which).
+
+    A 3-D configuration (a box or a cylinder): the body under the three
+    components x, y and vertical, with exact rigid contact on the circular
+    friction cone: it rests, slides and twists, rocks about an edge or a
+    corner, rocks and rolls on its rim, flies and overturns
+    (:func:`freestand.core.dynamics.body_history.simulate_body`,
+    ``docs/three-d.md``); the result is a :class:`BodySimulationResult`.
 
     Parameters
     ----------
-    model : ModelFile or Stack
-        A loaded model file (then ``configuration`` names the stack) or a stack.
-    motion : GroundMotion or SupportMotion
-        Horizontal and downward vertical support accelerations [m/s^2]
-        (``fs.load_record(...)``, scaled as wished).
+    model : ModelFile, Stack, BodyConfiguration or Body
+        A loaded model file (then ``configuration`` names the configuration),
+        a stack or a 3-D body.
+    motion : GroundMotion, SupportMotion or SupportMotion3
+        Support accelerations [m/s^2] (``fs.load_record(...)``, scaled as
+        wished): horizontal x and downward vertical; for a 3-D configuration
+        also y (``fs.load_record(..., horizontal_y=...)``, or
+        :func:`support_motion3`).
     duration : float, optional
         Simulated time [s]; by default the record (and, with ``until_rest``,
         free motion after it).
     configuration : str, optional
-        Configuration of the model (default: the first).
+        Configuration of the model (default: the first planar one, or the
+        first 3-D one in a model that has no planar configuration).
     method : {"auto", "general", "single-block"}
-        Solver path; ``"auto"`` takes the single-block equations where they apply.
+        Solver path of a planar stack; ``"auto"`` takes the single-block
+        equations where they apply (a 3-D configuration has one engine:
+        ``"auto"``).
     max_step : float, optional
-        Largest integration step [s] (default 0.02 / p).
+        Largest integration step [s] (default 0.05 / p for a 3-D body, 0.02 /
+        p for a planar one).
     gravity : float, optional
         g [m/s^2] (default: the model's, 9.81 for a stack).
     restitution : float, optional
-        Factor [-] in [0, 1] on the post-impact relative velocities.
+        Factor [-] in [0, 1] on the post-impact relative velocities (planar
+        stacks only).
     until_rest : bool, optional
-        Go on after the record until the stack is at rest or has overturned,
-        at most ``free_time`` [s] after it (status ``"capped"`` if still moving).
+        Go on after the record until the configuration is at rest or has
+        overturned, at most ``free_time`` [s] after it (status ``"capped"``
+        if still moving).
     free_time : float, optional
         Cap [s] on the time simulated after the record with ``until_rest``.
     progress : callable, optional
         Called with the fraction [-] simulated.
+    angle : float, optional
+        3-D configurations: the angle [deg] by which the horizontal pair of
+        the record is turned, counter-clockwise from +x towards +y
+        (:func:`support_motion3`).
     **options
         Passed to :func:`freestand.core.dynamics.timehistory.simulate`
-        (``initial_position``, ``tolerances``, ...).
+        (``initial_position``, ``tolerances``, ...) or, for a 3-D body, to
+        :func:`~freestand.core.dynamics.body_history.simulate_body`
+        (``tolerances``, ``initial``).
 
     Returns
     -------
-    SimulationResult
+    SimulationResult or BodySimulationResult
         Status, peaks, events, the histories (``to_frame()``), the
         ``freestand simulate --json`` document (``to_dict()``) and the figure
         (``plot()``).
@@ -444,12 +462,33 @@ def simulate(
     'completed'
     >>> result.to_frame("peaks")["block"].tolist()
     ['bridge', 'cart']
+
+    A 3-D body under two horizontal components and the vertical, the pair
+    turned by 30 deg:
+
+    >>> bodies = fs.load_model("examples/bodies.toml")
+    >>> record = fs.load_record("examples/records/synthetic_H.AT2",
+    ...                         horizontal_y="examples/records/synthetic_H.AT2",
+    ...                         vertical="examples/records/synthetic_UP.AT2")
+    >>> cask = fs.simulate(bodies, record.scaled_to_peak(8.0), configuration="cask", angle=30.0)
+    >>> cask.status, bool(cask.overturned[0]), round(float(cask.max_slide[0]), 3)  # [m]
+    ('completed', False, 0.09)
     """
     what = subject(model, gravity=gravity)
+    body = body_configuration(what, configuration)
+    if body is not None:
+        check_body_options(body, method, restitution)
+        check_steps(support_motion3(motion).duration, duration, max_step)
+        return simulate_body_configuration(
+            what.name, body, motion, duration, angle=angle, max_step=max_step,
+            gravity=what.gravity, until_rest=until_rest, free_time=free_time, progress=progress,
+            **options,
+        )  # fmt: skip
     stack = what.configuration(configuration)
+    check_planar_motion(stack, motion, angle)
     support = support_motion(motion)
     check_options(stack, support, duration, method, max_step)
-    core = _simulate_configuration(
+    core = _simulate_stack(
         stack, support, duration, method=method, max_step=max_step, gravity=what.gravity,
         restitution=restitution, until_rest=until_rest, free_time=free_time,
         progress=progress, **options,
@@ -459,23 +498,35 @@ def simulate(
     )
 
 
-def _simulate_configuration(stack, support, duration, **options) -> TimeHistoryResult:
-    """The time history of one configuration (the place to dispatch another kind)."""
-    return _simulate_stack(stack, support, duration, **options)
+def body_configuration(what, name: str | None) -> BodyConfiguration | None:
+    """The 3-D configuration called ``name`` (for None: the first, when there is no planar
+    one), or None for a planar configuration."""
+    if name is None:
+        return what.bodies[0] if what.bodies and not what.configurations else None
+    return next((body for body in what.bodies if body.name == name), None)
+
+
+def check_planar_motion(stack, motion, angle: float) -> None:
+    """FreestandError for a second horizontal component or an angle given to a planar stack."""
+    planar = f"{stack.name!r} is planar: it takes the x component (in its plane) alone"
+    if angle:
+        raise FreestandError(
+            f"--angle {angle:g} turns the horizontal pair of a 3-D configuration; {planar}. "
+            "Leave --angle out, or choose a 3-D configuration",
+            source="--angle",
+        )
+    y = getattr(motion, "horizontal_y", None)
+    if y is not None or isinstance(motion, SupportMotion3):
+        raise FreestandError(
+            f"the record has a y component, which only a 3-D configuration takes; {planar}. "
+            "Leave --record-y out, or choose a 3-D configuration",
+            source="--record-y",
+        )
 
 
 def check_options(stack, support, duration, method, max_step) -> None:
-    """FreestandError for a step, duration or solver that cannot be used."""
-    if max_step is not None and not (math.isfinite(max_step) and max_step > 0):
-        raise FreestandError(
-            f"{max_step} is not a positive step [s]; e.g. --step 0.001", source="--step"
-        )
-    if duration is not None and not (math.isfinite(duration) and duration > 0):
-        raise FreestandError(
-            f"{duration} is not a positive duration [s]; give the simulated time, e.g. "
-            "--duration 10, or leave it out to simulate the whole record",
-            source="--duration",
-        )
+    """FreestandError for a step, duration or solver that cannot be used on a planar stack."""
+    check_steps(support.duration, duration, max_step)
     if method not in METHODS:
         raise FreestandError(
             f"{method!r} is not a solver; use " + ", ".join(METHODS), source="--method"
@@ -486,7 +537,21 @@ def check_options(stack, support, duration, method, max_step) -> None:
             "blocks); use auto, general, or single-block for a one-block configuration",
             source="--method",
         )
-    end = support.duration if duration is None else duration
+
+
+def check_steps(record_duration: float, duration: float | None, max_step: float | None) -> None:
+    """FreestandError for a step or duration that cannot be used (any configuration)."""
+    if max_step is not None and not (math.isfinite(max_step) and max_step > 0):
+        raise FreestandError(
+            f"{max_step} is not a positive step [s]; e.g. --step 0.001", source="--step"
+        )
+    if duration is not None and not (math.isfinite(duration) and duration > 0):
+        raise FreestandError(
+            f"{duration} is not a positive duration [s]; give the simulated time, e.g. "
+            "--duration 10, or leave it out to simulate the whole record",
+            source="--duration",
+        )
+    end = record_duration if duration is None else duration
     if max_step is not None and end / max_step > MAX_STEPS:
         raise FreestandError(
             f"{end:g} s in steps of {max_step:g} s is {end / max_step:.3g} integration steps, "

@@ -1,4 +1,4 @@
-"""``freestand simulate``: time history of a stack under a recorded ground motion."""
+"""``freestand simulate``: time history of a stack or a 3-D body under a recorded ground motion."""
 
 from __future__ import annotations
 
@@ -13,7 +13,8 @@ from rich.markup import escape
 from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from freestand.api.simulation import check_options, support_motion
+from freestand.api.body_simulation import BodySimulationResult, check_body_options
+from freestand.api.simulation import check_options, check_steps, support_motion
 from freestand.api.simulation import simulate as simulate_model
 from freestand.cli.common import (
     Staging,
@@ -25,8 +26,20 @@ from freestand.cli.common import (
     staging,
     warn,
 )
+from freestand.cli.record_options import (
+    ANGLE,
+    DT,
+    PEAK,
+    RECORD_Y,
+    SCALE,
+    SPECTRAL,
+    UNIT,
+    VERTICAL,
+    check_angle,
+    read_record,
+)
+from freestand.core.model import Stack
 from freestand.errors import FreestandError
-from freestand.io.records import check_record_values, load_record, parse_spectral_target
 
 
 def simulate(
@@ -38,30 +51,16 @@ def simulate(
         help="Configuration name (repeatable: one simulation each; not with --plot/--animate).",
     ),
     record: Path = typer.Option(
-        ..., "--record", help="Horizontal record (.AT2, CSV with units, or one column)."
+        ..., "--record", help="Horizontal record, along x (.AT2, CSV with units, or one column)."
     ),
-    vertical: Path = typer.Option(
-        None, "--vertical", help="Vertical record (positive up, as recorded)."
-    ),
-    dt: str = typer.Option(
-        None, "--dt", help="Time step of single-column records, e.g. 0.005 [s] or '5 ms'."
-    ),
-    unit: str = typer.Option(
-        None, "--unit", help="Unit of single-column records, e.g. g or m/s^2."
-    ),
-    scale: float = typer.Option(None, "--scale", help="Multiply the record(s) by this factor [-]."),
-    peak: str = typer.Option(
-        None,
-        "--peak",
-        help="Scale the horizontal record to this peak, e.g. 0.3g or '2.9 m/s^2' (bare "
-        "numbers in m/s^2; instead of --scale).",
-    ),
-    spectral: str = typer.Option(
-        None,
-        "--spectral",
-        help="Scale the records so that the horizontal pseudo-acceleration at one "
-        "frequency is A: 'A@F[,DAMPING]', e.g. '1.05g@2.5Hz,5%' (instead of --scale).",
-    ),
+    record_y: Path = RECORD_Y,
+    vertical: Path = VERTICAL,
+    angle: float = ANGLE,
+    dt: str = DT,
+    unit: str = UNIT,
+    scale: float = SCALE,
+    peak: str = PEAK,
+    spectral: str = SPECTRAL,
     duration: str = typer.Option(
         None, "--duration", help="Simulated time, e.g. 10 [s] or '10 s' (default: the record)."
     ),
@@ -69,88 +68,77 @@ def simulate(
         None,
         "--step",
         help="Largest integration step, e.g. 0.001 [s] or '1 ms' (default 1 ms; single block "
-        "0.02/p).",
+        "0.02/p; 3-D body 0.05/p).",
     ),
     method: str = typer.Option(
-        "auto", "--method", help="Solver: auto, general or single-block (one block only)."
+        "auto", "--method", help="Solver of planar stacks: auto, general or single-block."
     ),
     plot: Path = typer.Option(
         None,
         "--plot",
-        help="Folder to write the time-history figure into (time-history.png, .svg); "
-        "created if missing.",
+        help="Folder to write the figures into (time-history.png, .svg; a 3-D configuration "
+        "also plan-view.png, .svg); created if missing.",
     ),
     animate: Path = typer.Option(
-        None, "--animate", help="Write an animated GIF of the blocks moving (FILE.gif)."
+        None, "--animate", help="Write an animated GIF of the blocks or the body moving (FILE.gif)."
     ),
     exaggerate: float = typer.Option(
-        1.0, "--exaggerate", help="Draw rotations this many times larger in the GIF [-]."
+        1.0,
+        "--exaggerate",
+        help="Draw rotations (a 3-D body's tilt) this many times larger in the GIF [-].",
     ),
     as_json: bool = typer.Option(False, "--json", help="Write one JSON document to stdout."),
 ) -> None:
-    """Sliding, rocking, impacts and overturning of every block under a record.
+    """Sliding, rocking, impacts and overturning of every block (or a 3-D body) under a record.
 
-    With several ``-c``, each configuration is simulated under the same record
-    in turn (a table each; with ``--json`` a list of documents, one per
-    configuration); the command exits with 1 if any simulation failed.
+    A 3-D configuration (a box or a cylinder) takes the three components:
+    --record (x), --record-y and --vertical, the horizontal pair turned by
+    --angle. With several ``-c``, each configuration is simulated under the
+    same record in turn (a table each; with ``--json`` a list of documents,
+    one per configuration); the command exits with 1 if any simulation failed.
     """
     model = load(model_file)
     names = list(dict.fromkeys(configuration))
-    stacks = [model.configuration(name) for name in names]
+    configurations = [_configuration(model, name) for name in names]
     for option, value in (("--plot", plot), ("--animate", animate)):
-        if value is not None and len(stacks) > 1:
+        if value is not None and len(configurations) > 1:
             raise FreestandError(
-                f"{option} draws one simulation, and {len(stacks)} configurations are given "
-                f"({', '.join(repr(name) for name in names)}); give one -c with {option}",
+                f"{option} draws one simulation, and {len(configurations)} configurations are "
+                f"given ({', '.join(repr(name) for name in names)}); give one -c with {option}",
                 source=option,
             )
-    if sum(option is not None for option in (scale, peak, spectral)) > 1:
-        raise FreestandError(
-            "give one of --scale, --peak and --spectral, not several", source="--scale"
-        )
-    target = None if spectral is None else parse_spectral_target(spectral, gravity=model.gravity)
-    peak_value = number(peak, "--peak", "acceleration", model.gravity)
-    dt = number(dt, "--dt", "time")
+    planar = [item.name for item in configurations if isinstance(item, Stack)]
+    for option, value in (("--record-y", record_y), ("--angle", angle)):
+        if value is not None and planar:
+            raise FreestandError(
+                f"{option} is for 3-D configurations (a box or a cylinder under two horizontal "
+                f"components), and {', '.join(repr(name) for name in planar)} "
+                f"{'is' if len(planar) == 1 else 'are'} planar (the x component in its plane "
+                f"alone); leave {option} out, or choose a 3-D configuration"
+                + _choice(model.body_configurations),
+                source=option,
+            )
+    check_angle(angle)
     duration = number(duration, "--duration", "time")
     step = number(step, "--step", "time")
-    if scale is not None and not (math.isfinite(scale) and scale != 0):
-        raise FreestandError(
-            f"{scale} is not a scale factor; give a finite, non-zero number, e.g. --scale 1.5",
-            source="--scale",
-        )
-    if peak_value is not None and not peak_value > 0:
-        raise FreestandError(
-            f"{peak} is not a positive peak; e.g. --peak 0.3g or --peak 2.9", source="--peak"
-        )
-    if dt is not None and not (math.isfinite(dt) and dt > 0):
-        raise FreestandError(
-            f"{dt} is not a positive time step [s]; e.g. --dt 0.005", source="--dt"
-        )
     check_drawing_options(plot, animate, exaggerate)
-    motion = load_record(record, dt=dt, unit=unit, gravity=model.gravity, vertical=vertical)
-    try:
-        if scale is not None:
-            motion = motion.scaled(scale)
-        if peak_value is not None:
-            motion = motion.scaled_to_peak(peak_value)
-        if target is not None:
-            motion = motion.scaled_to_spectral(
-                target.acceleration, target.frequency, target.damping
-            )
-    except ValueError as error:  # an all-zero record cannot be scaled
-        raise FreestandError(str(error), source=str(record)) from None
-    check_record_values(motion.horizontal, str(record), model.gravity, "scaled horizontal")
-    if motion.vertical is not None:
-        check_record_values(motion.vertical, str(record), model.gravity, "scaled vertical")
-    support = support_motion(motion)
-    for stack in stacks:
-        check_options(stack, support, duration, method, step)
+    motion = read_record(
+        model, record, record_y=record_y, vertical=vertical, dt=dt, unit=unit, scale=scale,
+        peak=peak, spectral=spectral,
+    )  # fmt: skip
+    for item in configurations:
+        if isinstance(item, Stack):
+            check_options(item, support_motion(motion), duration, method, step)
+        else:
+            check_body_options(item, method, None)
+            check_steps(motion.duration, duration, step)
     documents = []
     results = []
-    for stack in stacks:
+    for item in configurations:
         result, document = _simulate_one(
-            model, stack, motion, duration, method, step, plot, animate, exaggerate, as_json
-        )
+            model, item.name, motion, duration, method, step, angle or 0.0, plot, animate,
+            exaggerate, as_json,
+        )  # fmt: skip
         results.append(result)
         documents.append(document)
     if as_json:
@@ -158,7 +146,21 @@ def simulate(
     _exit_if_failed(results)
 
 
-def _simulate_one(model, stack, motion, duration, method, step, plot, animate, exaggerate,
+def _configuration(model, name: str):
+    """The planar stack or the 3-D configuration called ``name`` (an error lists the names)."""
+    for body in model.body_configurations:
+        if body.name == name:
+            return body
+    return model.configuration(name)
+
+
+def _choice(bodies) -> str:
+    if not bodies:
+        return " (this model has none)"
+    return " (" + ", ".join(repr(body.name) for body in bodies) + ")"
+
+
+def _simulate_one(model, name, motion, duration, method, step, angle, plot, animate, exaggerate,
                   as_json):  # fmt: skip
     """Simulate one configuration; print its tables unless ``as_json``.
 
@@ -166,8 +168,8 @@ def _simulate_one(model, stack, motion, duration, method, step, plot, animate, e
     """
     with _progress_bar(as_json) as progress:
         result = simulate_model(
-            model, motion, duration, configuration=stack.name, method=method, max_step=step,
-            progress=progress,
+            model, motion, duration, configuration=name, method=method, max_step=step,
+            progress=progress, angle=angle,
         )  # fmt: skip
     with staging() as stage:
         draw(result, plot, animate, exaggerate, stage)
@@ -176,42 +178,30 @@ def _simulate_one(model, stack, motion, duration, method, step, plot, animate, e
         document = result.to_dict()
         document["figures"] = [str(path) for path in written]
         return result, document
-    blocks = result.blocks()
+    three_d = isinstance(result, BodySimulationResult)
     out = console()
+    turned = f", turned {angle:g} deg" if angle else ""
     out.print(
         f"[bold]{escape(model.name)}[/] / "
         + escape(
-            f"{result.configuration}: {result.record}, {motion.duration:.2f} s, "
+            f"{result.configuration}: {result.record}{turned}, {motion.duration:.2f} s, "
             f"peak {result.peak_horizontal:.2f} m/s^2; status {result.status}"
             + (f" ({result.message})" if result.message else "")
         )
     )
-    table = Table(title="Peak response (blocks bottom to top)")
-    for header in (
-        "block",
-        "max rotation [rad]",
-        "max slide [m]",
-        "uplift",
-        "free flight",
-        "overturned",
-    ):
-        table.add_column(escape(header))
-    for block in blocks:
-        overturned = f"at {block['overturn_time']:.3f} s" if block["overturned"] else "no"
-        table.add_row(
-            escape(block["name"]),
-            f"{block['max_rotation']:.4g}" if block["max_rotation"] is not None else "-",
-            f"{block['max_slide']:.4g}" if block["max_slide"] is not None else "-",
-            "yes" if block["uplift"] else "no",
-            "yes" if block["free_flight"] else "no",
-            overturned,
-        )
-    out.print(table)
-    out.print(escape(
-        f"Solver: {result.diagnostics.method}"
-        + (f" (single-block path not used: {result.diagnostics.fallback})"
-           if result.diagnostics.fallback else "")
-    ))  # fmt: skip
+    out.print(_peak_table(result.blocks(), three_d))
+    if three_d:
+        counts = result.diagnostics
+        out.print(escape(
+            f"Engine: 3-D, exact rigid contact ({counts['steps']} steps, {counts['impacts']} "
+            f"impacts, {counts['remedies']} states without an admissible contact mode)"
+        ))  # fmt: skip
+    else:
+        out.print(escape(
+            f"Solver: {result.diagnostics.method}"
+            + (f" (single-block path not used: {result.diagnostics.fallback})"
+               if result.diagnostics.fallback else "")
+        ))  # fmt: skip
     counts = result.event_counts()
     out.print(
         "Events: " + (", ".join(f"{kind} x{count}" for kind, count in counts.items()) or "none")
@@ -221,14 +211,35 @@ def _simulate_one(model, stack, motion, duration, method, step, plot, animate, e
     return result, None
 
 
+def _peak_table(blocks: list[dict], three_d: bool) -> Table:
+    """The peaks of every block (a 3-D body: its tilt, slide and twist)."""
+    table = Table(title="Peak response" + ("" if three_d else " (blocks bottom to top)"))
+    rotation = "max tilt [rad]" if three_d else "max rotation [rad]"
+    headers = ["block", rotation, "max slide [m]"] + (["max twist [rad]"] if three_d else [])
+    for header in (*headers, "uplift", "free flight", "overturned"):
+        table.add_column(escape(header))
+    keys = ("max_rotation", "max_slide") + (("max_twist",) if three_d else ())
+    for block in blocks:
+        overturned = f"at {block['overturn_time']:.3f} s" if block["overturned"] else "no"
+        table.add_row(
+            escape(block["name"]),
+            *(f"{block[key]:.4g}" if block[key] is not None else "-" for key in keys),
+            "yes" if block["uplift"] else "no",
+            "yes" if block["free_flight"] else "no",
+            overturned,
+        )
+    return table
+
+
 def _exit_if_failed(results) -> None:
     """A simulation that failed ends the command with exit status 1 (and says why)."""
     failed = [result for result in results if result.status == "failed"]
     for result in failed:
+        hint = "" if isinstance(result, BodySimulationResult) else " (try a smaller --step)"
         warn(
             f"the simulation of {result.configuration!r} failed"
             + (f": {result.message}" if result.message else "")
-            + "; the results above stop where it failed (try a smaller --step)"
+            + f"; the results above stop where it failed{hint}"
         )
     if failed:
         raise typer.Exit(1)
@@ -270,7 +281,10 @@ def draw(result, plot, animate, exaggerate, stage: Staging) -> None:
     if plot is not None:
         from freestand.plot.figures import save_figure
 
-        save_figure(result.plot(), stage.folder(plot) / "time-history")
+        folder = stage.folder(plot)
+        save_figure(result.plot(), folder / "time-history")
+        if isinstance(result, BodySimulationResult):
+            save_figure(result.plot(view="plan"), folder / "plan-view")
     if animate is not None:
         result.animate(stage.file(animate), exaggeration=exaggerate)
 

@@ -225,3 +225,39 @@ def base_ray_distance(shape: Shape, origin, direction) -> float:
     if ox**2 + oy**2 >= radius**2:
         return 0.0
     return -reach + math.sqrt(inside)
+
+
+def tipping_tilt(body: Body, directions) -> np.ndarray:
+    """Tilt [rad] at which the centre of gravity stands over the pivot, per tilt direction.
+
+    A body tilted by theta towards the horizontal unit vector u (its axis's
+    horizontal projection; no twist) pivots on the base points farthest along
+    u, at the support function ``s(u) = max_c c . u`` (box ``b_x |u_x| +
+    b_y |u_y|``, disc R). Its centre of gravity G = (g, h) is over them when
+    ``(s(u) - g . u) cos theta = h sin theta``:
+
+        theta*(u) = atan((s(u) - g . u) / h),
+
+    beyond which the weight turns it over (Housner 1963's slenderness alpha
+    in a plane, a corner's ``atan(sqrt(b_x^2 + b_y^2)/h)`` on the diagonal).
+
+    Parameters
+    ----------
+    body : Body
+        The body.
+    directions : array_like
+        Angles psi [rad] of the tilt directions u = (cos psi, sin psi).
+
+    Returns
+    -------
+    numpy.ndarray
+        theta* [rad] per direction.
+    """
+    psi = np.asarray(directions, dtype=float)
+    ux, uy = np.cos(psi), np.sin(psi)
+    if isinstance(body.shape, Box):
+        reach = 0.5 * (body.shape.size[0] * np.abs(ux) + body.shape.size[1] * np.abs(uy))
+    else:
+        reach = np.full_like(psi, body.shape.radius)
+    offset = body.centre[0] * ux + body.centre[1] * uy
+    return np.arctan((reach - offset) / body.centre[2])

@@ -136,7 +136,8 @@ class ModelFile:
             raise FreestandError(
                 f"configuration {name!r} is 3-D (a block with shape); this analysis takes "
                 f"planar configurations only{self._planar_choice()}. 3-D configurations are "
-                "screened by `freestand screen` (fs.screen) and reported by `freestand report`",
+                "screened by `freestand screen` (fs.screen), simulated by `freestand simulate` "
+                "(fs.simulate) and reported by `freestand report`",
                 source=self.source,
             )
         raise FreestandError(
@@ -159,7 +160,8 @@ class ModelFile:
                 "has only 3-D configurations "
                 f"({', '.join(repr(b.name) for b in self.body_configurations)}); this analysis "
                 "takes planar configurations only. 3-D configurations are screened by "
-                "`freestand screen` (fs.screen) and reported by `freestand report`",
+                "`freestand screen` (fs.screen), simulated by `freestand simulate` (fs.simulate) "
+                "and reported by `freestand report`",
                 source=self.source,
             )
         return self.configurations[0]

@@ -323,18 +323,9 @@ def animate_time_history(
     pathlib.Path
         The file written.
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.patches import Polygon, Rectangle
-    from PIL import Image
 
-    if not fps > 0:
-        raise ValueError(f"fps must be positive, not {fps!r}")
-    if max_frames < 2:
-        raise ValueError(f"max_frames must be at least 2, not {max_frames!r}")
-    if not exaggeration > 0:
-        raise ValueError(f"exaggeration must be positive, not {exaggeration!r}")
-    target = Path(path)
-    target.parent.mkdir(parents=True, exist_ok=True)
+    target = animation_target(path, fps, max_frames, exaggeration)
     names = result.block_names
     count = len(names)
     outlines = block_outlines(stack)
@@ -425,19 +416,10 @@ def animate_time_history(
         )  # fmt: skip
 
     event_times = np.array([event.time for event in result.events])
-    # Lay the figure out and draw what does not move once; each frame then draws
-    # only the moving artists over that background (blitting) and the frames are
-    # written by Pillow as one looping GIF (as matplotlib.animation.PillowWriter).
     moving = [*patches, *centre_marks, *contact_marks, arrow, arrow_head, clock, *states]
-    for artist in moving:
-        artist.set_animated(True)
-    figure.set_dpi(dpi)
-    canvas = FigureCanvasAgg(figure)
-    canvas.draw()
-    figure.set_layout_engine("none")
-    background = canvas.copy_from_bbox(figure.bbox)
-    frames = []
-    for frame, instant in enumerate(instants):
+
+    def draw_frame(frame: int) -> None:
+        instant = instants[frame]
         for block in range(count):
             pose = poses[frame, block]
             patches[block].set_xy(place(pose, outlines[block]))
@@ -471,6 +453,47 @@ def animate_time_history(
             else:
                 motion = "rest"
             states[block].set_text(f"{name}: {motion}")
+
+    return write_gif(figure, moving, len(instants), draw_frame, target, fps=fps, dpi=dpi)
+
+
+def animation_target(path: str | Path, fps: float, max_frames: int, exaggeration: float) -> Path:
+    """The GIF's path, its folder made; ValueError for a frame rate, frame count or factor
+    an animation cannot take."""
+    if not fps > 0:
+        raise ValueError(f"fps must be positive, not {fps!r}")
+    if max_frames < 2:
+        raise ValueError(f"max_frames must be at least 2, not {max_frames!r}")
+    if not exaggeration > 0:
+        raise ValueError(f"exaggeration must be positive, not {exaggeration!r}")
+    target = Path(path)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    return target
+
+
+def write_gif(figure: Figure, moving, count: int, draw_frame, path: Path, *, fps: float,
+              dpi: int) -> Path:  # fmt: skip
+    """Write ``count`` frames of ``figure`` as one looping GIF at ``path``.
+
+    The figure is laid out and what does not move is drawn once; each frame
+    ``draw_frame(k)`` updates the ``moving`` artists, which alone are drawn
+    over that background (blitting), and Pillow writes the frames as one GIF
+    (as :class:`matplotlib.animation.PillowWriter`), the last held for
+    :data:`HOLD_LAST_FRAME`.
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from PIL import Image
+
+    for artist in moving:
+        artist.set_animated(True)
+    figure.set_dpi(dpi)
+    canvas = FigureCanvasAgg(figure)
+    canvas.draw()
+    figure.set_layout_engine("none")
+    background = canvas.copy_from_bbox(figure.bbox)
+    frames = []
+    for frame in range(count):
+        draw_frame(frame)
         canvas.restore_region(background)
         for artist in moving:
             figure.draw_artist(artist)
@@ -479,8 +502,8 @@ def animate_time_history(
         )
     durations = [round(1000.0 / fps)] * len(frames)
     durations[-1] = max(durations[-1], HOLD_LAST_FRAME)
-    frames[0].save(target, save_all=True, append_images=frames[1:], duration=durations, loop=0)
-    return target
+    frames[0].save(path, save_all=True, append_images=frames[1:], duration=durations, loop=0)
+    return path
 
 
 def time_history_figures(

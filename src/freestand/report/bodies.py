@@ -11,6 +11,8 @@ summary, and the polar figure of each configuration.
 
 from __future__ import annotations
 
+import math
+
 from freestand.core.body import Body, Box
 from freestand.core.contact.body_screening import BodyScreeningCase, screen_body_configuration
 from freestand.io.results import degrees
@@ -34,8 +36,10 @@ def collect_body_cases(model) -> tuple[BodyScreeningCase, ...]:
     )
 
 
-def body_sentences(model, cases: tuple[BodyScreeningCase, ...]) -> list[str]:
-    """The summary's sentences: what each body does per excitation, and what is not assessed."""
+def body_sentences(model, cases: tuple[BodyScreeningCase, ...], histories: tuple = ()) -> list[str]:
+    """The summary's sentences: what each body does per excitation, what it did under the
+    record (``histories``: one :class:`~freestand.api.body_simulation.BodySimulationResult`
+    per 3-D configuration), or what is not assessed without one."""
     bodies = {c.name: c.body for c in model.body_configurations}
     sentences = [
         f"3-D configuration {case.configuration}. "
@@ -50,12 +54,48 @@ def body_sentences(model, cases: tuple[BodyScreeningCase, ...]) -> list[str]:
             if state.motion.value in ("rock", "slide-rock", "free-flight")
         }
     )
-    if lifting:
+    if lifting and not histories:
         sentences.append(
             f"The 3-D bodies that lift ({', '.join(lifting)}) are not assessed for overturning "
-            "here: that needs the 3-D time history, which this version does not provide."
+            "here: that needs their time history under a ground record (freestand report "
+            "--record, or freestand simulate)."
         )
-    return sentences
+    return sentences + [history_sentence(result) for result in histories]
+
+
+def history_sentence(result) -> str:
+    """What the body did under the record, in words (its status when it did not complete)."""
+    core = result.core
+    name = f"the {core.body} ({result.configuration})"
+    record = f"Under the record {result.record}{_turned(result)}"
+    if result.status == "failed":
+        return (
+            f"{record} the time history of {name} failed ({result.message}); up to there its "
+            f"largest tilt is {core.max_rotation:.3g} rad and its largest slide "
+            f"{1000.0 * core.max_slide:.1f} mm."
+        )
+    if core.overturned:
+        verdict = f"overturns at t = {core.overturn_time:.2f} s"
+    else:
+        verdict = "does not overturn" + (
+            ""
+            if result.status == "completed"
+            else f" by the end of the simulation ({result.message})"
+        )
+    motion = (
+        f"lifts (largest tilt {core.max_rotation:.3g} rad, {math.degrees(core.max_rotation):.1f} "
+        "deg)"
+        if core.uplift
+        else "does not lift"
+    )
+    return (
+        f"{record} {name} {motion}, slides {1000.0 * core.max_slide:.1f} mm at most, twists "
+        f"{1000.0 * core.max_twist:.1f} mrad at most and {verdict}."
+    )
+
+
+def _turned(result) -> str:
+    return f" (turned {result.angle:g} deg)" if result.angle else ""
 
 
 def _dimensions(body: Body) -> str:
@@ -246,6 +286,109 @@ corner or rim point when a &gt; a* and static friction holds the pivot; it slide
 base breaks away and the kinetic friction's moment keeps it flat (&#956; h &#8804; &#961;), in the
 direction of the inertial force; it slides and rocks otherwise. Each excitation's horizontal
 magnitude &#8730;(x<sup>2</sup> + y<sup>2</sup>) is applied in every direction of the sweep. The
-screening gives the first instant only; the rocking and overturning of 3-D bodies over time are
-not assessed in this report.</p>
+screening gives the first instant only.</p>
+"""
+
+#: The method section's sentence on the 3-D time history without a record.
+NO_HISTORY_HTML = """<p>Without a ground record (<code>freestand report --record</code>) the
+rocking and overturning of 3-D bodies over time are not assessed in this report.</p>
+"""
+
+
+def histories_html(doc: Document, histories: tuple) -> str:
+    """Section 4's part for the 3-D configurations under the record: a peak table, the
+    figures of each (time history and plan view)."""
+    from freestand.plot.body_history import plan_view_figure, time_history_figure
+
+    first = histories[0]
+    support = first.support
+    parts = [
+        '<h3 id="body-histories">3-D configurations under the record</h3>',
+        f"<p>Each 3-D configuration is simulated under the record "
+        f"<b>{esc(first.record)}</b>{esc(_turned(first))}: x, y and the downward vertical "
+        f"support acceleration at a step of {support.time_step:g} s over {support.duration:g} s "
+        f"(peaks |(a<sub>x</sub>, a<sub>y</sub>)| = {first.peak_horizontal:.2f} {_MS2}, "
+        f"|a<sub>v</sub>| = {float(abs(support.vertical).max()):.2f} {_MS2}), and after it "
+        "until the body rests (at most 10 s): exact rigid contact with Coulomb friction on the "
+        "circular cone, plastic impacts (section 5).</p>",
+    ]
+    rows = []
+    for result in histories:
+        core = result.core
+        overturn = core.overturn_time if core.overturned else math.nan
+        rows.append(
+            f"<tr{data_attrs(configuration=result.configuration, block=core.body)}>"
+            f"<td>{esc(result.configuration)}</td><td>{esc(core.body)}</td>"
+            f"<td>{esc(result.status)}</td>"
+            + number_cell(core.max_rotation, 4, "max_rotation")
+            + number_cell(1000.0 * core.max_slide, 1, "max_slide_mm")
+            + number_cell(1000.0 * core.max_twist, 1, "max_twist_mrad")
+            + f"<td>{'yes' if core.uplift else 'no'}</td>"
+            + f"<td>{'yes' if core.free_flight else 'no'}</td>"
+            + number_cell(overturn, 2, "overturn_time", text=None if core.overturned else "no")
+            + number_cell(float(core.time[-1]), 2, "end_time")
+            + "</tr>"
+        )
+    parts.append(
+        doc.table(
+            "Peak response of the 3-D bodies under the record: the largest tilt (angle of the "
+            "body's axis from the vertical), slide of the base centre and twist about the "
+            "vertical; uplift (a base point lifted), free flight (the body left the support), "
+            "overturning, and the time simulated (to rest, overturning, the cap, or the failure "
+            "the status says).",
+            table_head(
+                "configuration",
+                "body",
+                "status",
+                "max tilt [rad]",
+                "max slide [mm]",
+                "max twist [mrad]",
+                "uplift",
+                "free flight",
+                "overturned at [s]",
+                "simulated to [s]",
+            ),
+            rows,
+            cls="wide",
+            table="body-histories",
+        )
+    )
+    for result in histories:
+        name = f"the {esc(result.core.body)} (<i>{esc(result.configuration)}</i>)"
+        parts.append(f"<p>{esc(history_sentence(result)).replace('m/s^2', _MS2)}</p>")
+        parts.append(
+            doc.figure(
+                time_history_figure(result),
+                f"Time history of {name} under the record: support accelerations, the motion "
+                "(rest, slide, rocking about an edge or a corner, rolling on the rim, free "
+                "flight), the tilt with lift-offs and impacts, the slide of the base centre "
+                "with slips, the twist and the contact forces.",
+                figure="body-history",
+                configuration=result.configuration,
+            )
+        )
+        parts.append(
+            doc.figure(
+                plan_view_figure(result),
+                f"{name[0].upper()}{name[1:]} seen from above: the path of the base centre and "
+                "the tilt vector (the tilt along the horizontal projection of the body's axis), "
+                "coloured by time.",
+                figure="body-plan",
+                configuration=result.configuration,
+            )
+        )
+    return "".join(parts)
+
+
+#: The method section's paragraph on the 3-D time history (with a record).
+HISTORY_METHOD_HTML = """<p>Under a ground record (<code>freestand report --record</code>), each
+3-D body is simulated from rest under the three components (x, y and the downward vertical),
+event by event: it rests, slides and twists on its base (Coulomb friction on the circular cone,
+a uniform pressure's twist torque with the ellipsoidal limit surface of Howe and Cutkosky 1996),
+rocks about an edge or a corner, rocks and rolls on its rim (a cylinder), flies and overturns;
+the contact is rigid and exact (no compliance), impacts are plastic at the impacting points
+(Housner's law in a plane), and every event is located in time. The simulation goes on after the
+record until the body rests (at most 10 s). A history whose contact the engine lost (a base
+point more than 10<sup>-6</sup> of the base width below the support) stops there with the status
+<i>failed</i>, and its peaks are those up to there.</p>
 """

@@ -203,6 +203,9 @@ class ReportContent:
     body_cases : tuple of BodyScreeningCase
         The screening of the 3-D configurations by direction
         (:mod:`freestand.report.bodies`).
+    body_histories : tuple of BodySimulationResult
+        The time history of every 3-D configuration under the report's record
+        (:func:`freestand.simulate`), when one was given.
     """
 
     model: ModelFile
@@ -217,6 +220,7 @@ class ReportContent:
     summary: tuple[str, ...]
     fragility: object | None = None
     body_cases: tuple = ()
+    body_histories: tuple = ()
 
     @property
     def flagged(self) -> tuple[InitialMotion, ...]:
@@ -597,13 +601,14 @@ def summary_sentences(
     skipped: tuple[SkippedBlock, ...],
     frequency: FrequencyAssessment | None,
     body_cases: tuple = (),
+    body_histories: tuple = (),
 ) -> tuple[str, ...]:
     """The conclusions at the top of the report, like the paper's section 7."""
     sentences = [f"Warning: {message}." for message in model.warnings()]
     for stack in model.configurations:
         own = [c for c in cases if c.configuration == stack.name]
         sentences.append(_configuration_sentence(stack, own))
-    sentences += body_sentences(model, body_cases)
+    sentences += body_sentences(model, body_cases, body_histories)
     flagged = [c for c in cases if c.status in ("ambiguous", "inconsistent")]
     if flagged:
         listed = "; ".join(f"{c.configuration}, {case_label(c)} ({c.status})" for c in flagged)
@@ -636,6 +641,7 @@ def collect_report(
     *,
     date: _dt.date | None = None,
     progress: Progress | None = None,
+    body_histories: tuple = (),
 ) -> ReportContent:
     """Run every check of the screening report on ``model`` and gather the results.
 
@@ -647,6 +653,9 @@ def collect_report(
         Date printed on the report (default :func:`report_date`).
     progress : callable, optional
         Called as ``progress(description, done, total)`` before each step.
+    body_histories : tuple of BodySimulationResult, optional
+        The time histories of the 3-D configurations under a record
+        (:func:`freestand.write_report` simulates them), shown in section 4.
 
     Returns
     -------
@@ -683,9 +692,12 @@ def collect_report(
         overturning=overturning,
         skipped=tuple(skipped),
         frequency=frequency,
-        summary=summary_sentences(model, cases, overturning, tuple(skipped), frequency, body_cases),
+        summary=summary_sentences(
+            model, cases, overturning, tuple(skipped), frequency, body_cases, body_histories
+        ),
         fragility=_fragility(model, tell, total),
         body_cases=body_cases,
+        body_histories=tuple(body_histories),
     )
 
 

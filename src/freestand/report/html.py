@@ -787,11 +787,15 @@ def _overturning(doc: _Document, content: ReportContent) -> str:
             f'<p id="no-rocking">No {blocks} lifts in any screened case: no overturning '
             "assessment is needed.</p>"
         )
-    if content.body_cases:
+    if content.body_histories:
+        from freestand.report.bodies import histories_html
+
+        parts.append(histories_html(doc, content.body_histories))
+    elif content.body_cases:
         parts.append(
             '<p id="bodies-not-assessed">The 3-D bodies (section 3) are not assessed for '
-            "overturning: that needs their time history, which this version does not "
-            "provide.</p>"
+            "overturning: that needs their time history under a ground record "
+            "(<code>freestand report --record</code>).</p>"
         )
     for number, item in enumerate(content.overturning, start=1):
         parts.append(_assessment(doc, item, number))
@@ -921,9 +925,9 @@ def _method(content: ReportContent) -> str:
     number = 6 if content.frequency is not None else 5
     bodies = ""
     if content.body_cases:
-        from freestand.report.bodies import METHOD_HTML
+        from freestand.report.bodies import HISTORY_METHOD_HTML, METHOD_HTML, NO_HISTORY_HTML
 
-        bodies = METHOD_HTML
+        bodies = METHOD_HTML + (HISTORY_METHOD_HTML if content.body_histories else NO_HISTORY_HTML)
     return f"""<section id="method"><h2>{number} Method, assumptions and limits</h2>
 <h4>Initial motion and contact forces</h4>
 <p>Each configuration is a plane stack of rigid blocks, each resting on the one below through

@@ -113,6 +113,7 @@ STATE_SIZE = 13  # r (3), q (4), v (3), omega (3)
 
 # row scratch: W (6, 6) columns, bias (6); normal rows first, then tangential ones
 TILT_EPSILON = 1e-9  # sin(tilt) below which a cylinder counts as flat for its rim point
+PIVOT_LEAN = 1e-6  # sin(tilt) below which a rocking cylinder keeps its rim point (see rim_angle)
 
 
 def rectangle_twist_radius(half_x: float, half_y: float) -> float:
@@ -223,13 +224,33 @@ def box_corner(par, k):
 
 @nb.njit(cache=True)
 def rim_angle(par, rot, psi_stored):
-    """Body-frame angle psi [rad] of the cylinder's lowest rim point.
+    """Body-frame angle psi [rad] of the rim point a cylinder rolls on.
 
-    ``(cos psi, sin psi) = -(R_31, R_32) / sin(tilt)``; the stored angle when
-    the base is flat (the pivot chosen when the body left the face).
+    The lowest rim point, ``(cos psi, sin psi) = -(R_31, R_32) / sin(tilt)``,
+    while it lies on the side of the stored angle ``psi_stored`` (the pivot at
+    the step's start); past a landing (the axis has crossed the vertical
+    within a step) the highest rim point, which continues the rocking about
+    the same side smoothly, as a planar block's rotation continues through
+    zero about its corner until the landing is located. Within ``PIVOT_LEAN``
+    of flat (the opposite edge within 2 R 1e-6 of the support) the stored
+    angle: there the lowest point's direction is set by round-off and, where
+    the lean passes the vertical at a distance, swings round the rim faster
+    than any step follows; the body rocks about the stored rim point, as a
+    planar block about its corner.
     """
     s = sin_tilt(rot)
-    if s <= TILT_EPSILON:
+    if s <= PIVOT_LEAN:
+        return psi_stored
+    lowest = math.atan2(-rot[2, 1], -rot[2, 0])
+    if math.cos(lowest - psi_stored) < 0.0:
+        return lowest + math.pi
+    return lowest
+
+
+@nb.njit(cache=True)
+def lowest_rim_angle(rot, psi_stored):
+    """Body-frame angle [rad] of the cylinder's lowest rim point (the stored one when flat)."""
+    if sin_tilt(rot) <= PIVOT_LEAN:
         return psi_stored
     return math.atan2(-rot[2, 1], -rot[2, 0])
 
@@ -334,13 +355,15 @@ def _angular_row(e0, e1, e2, rows, bias, k):
 def rim_terms(par, y, rot, psi):
     """The moving rim point's extra acceleration terms (z, x, y) [m/s^2].
 
-    With t the rim tangent at the contact point, ``psi' = -e_z.(omega x R t)/sin(tilt)``
+    With t the rim tangent at the contact point, ``psi' = -e_z.(omega x R t)/sigma``
     and ``R s*' = R_b psi' R t``: the terms are ``omega x (R s*')``; zero when
-    the base is flat (the contact point then does not move).
+    the base is flat (the contact point then does not move). ``sigma =
+    -(R_31 cos psi + R_32 sin psi)`` is sin(tilt) at the lowest rim point and
+    -sin(tilt) at the highest (the continuation past a landing, :func:`rim_angle`).
     """
-    s = sin_tilt(rot)
-    if s <= TILT_EPSILON:
+    if sin_tilt(rot) <= PIVOT_LEAN:
         return 0.0, 0.0, 0.0
+    s = -(rot[2, 0] * math.cos(psi) + rot[2, 1] * math.sin(psi))
     tx = -math.sin(psi)
     ty = math.cos(psi)
     t0 = rot[0, 0] * tx + rot[0, 1] * ty
@@ -634,16 +657,28 @@ def prepare(par, record, dt, t, y, kind, index, psi, sc):
 
 @nb.njit(cache=True)
 def slip_direction(y, n_tangent, data, sc):
-    """The sliding direction u: the slip velocity's, or the stored one when it has none."""
+    """The sliding direction u: the slip velocity's while it points on the stored one's side.
+
+    The stored direction (``data[D_SLIP:]``, the slip's direction at the
+    step's start) is kept where the slip velocity has none or has turned
+    against it: the kinetic friction then goes on decelerating the slip
+    through zero, as a planar block's friction keeps its sign within a step,
+    until the slip-stop event is located. Without it the friction flips with
+    the velocity inside an RK4 step and the stages cancel: the slip freezes
+    at a small constant velocity.
+    """
     svel = sc[SC_SVEL]
     direction = sc[SC_DIR]
     tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
     size = 0.0
+    along = 0.0
     for k in range(n_tangent):
         size += svel[k] ** 2
+        along += svel[k] * data[D_SLIP + k]
     size = math.sqrt(size)
+    own = size > SLIP_FLOOR and along > 0.0
     for k in range(n_tangent):
-        direction[k] = svel[k] / size if size > SLIP_FLOOR else data[D_SLIP + k]
+        direction[k] = svel[k] / size if own else data[D_SLIP + k]
     return direction
 
 

@@ -84,7 +84,10 @@ from freestand.core.contact.body_kernel import (
 ACCELERATION = 0
 VELOCITY = 1
 RELATIVE_TOLERANCE = 1e-9
-ONSET_ITERATIONS = 60
+ONSET_ITERATIONS = 20  # fixed-point iterations before the fallbacks
+ONSET_SCAN = 72  # directions sampled on the circle (a point's slip onset)
+ONSET_RINGS = 8  # latitude rings sampled on the sphere (an edge's or face's onset)
+ONSET_STARTS = 6  # Newton starts from the best samples on the sphere
 MAX_CANDIDATES = 9
 
 NONE_ADMISSIBLE = -1
@@ -186,34 +189,236 @@ def _tangential_rate(sc, n_tangent, level, out):
 
 
 @nb.njit(cache=True)
+def _onset_rate(par, y, sc, level, n_normal, n_tangent, direction):
+    """Slip rate under the kinetic friction along ``-direction``: (along, across, size).
+
+    ``along`` is its component along the direction, ``across`` the length of
+    the rest, ``size`` its length; ``size`` is -1 when the mode's system is
+    singular. The rate itself is left in ``sc[SC_SACC]``.
+    """
+    rate = sc[SC_SACC]
+    if not _solve(par, y, sc, level, 1, direction, n_normal, n_tangent):
+        return 0.0, 0.0, -1.0
+    size = _tangential_rate(sc, n_tangent, level, rate)
+    along = 0.0
+    for k in range(n_tangent):
+        along += rate[k] * direction[k]
+    across = 0.0
+    for k in range(n_tangent):
+        across += (rate[k] - along * direction[k]) ** 2
+    return along, math.sqrt(across), size
+
+
+@nb.njit(cache=True)
+def _onset_consistent(along, across, size, rate_tol):
+    return size >= 0.0 and across <= rate_tol + 1e-10 * size and along >= -rate_tol
+
+
+@nb.njit(cache=True)
+def _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol):
+    """Two tangential rows (a point): the onset angle by a scan and bisection.
+
+    f(theta) = u_perp . s'(u), u = (cos theta, sin theta), changes sign at every
+    direction the slip rate is parallel to; of those where it points along u
+    (kappa >= 0), the one nearest ``start`` is returned.
+    """
+    theta0 = math.atan2(start[1], start[0])
+    best = -1.0
+    best_theta = 0.0
+    previous = 0.0
+    for i in range(ONSET_SCAN + 1):
+        theta = theta0 + 2.0 * math.pi * i / ONSET_SCAN
+        value = _onset_sign(par, y, sc, level, n_normal, theta, direction)
+        if i > 0 and value * previous <= 0.0:
+            root = _onset_bisect(par, y, sc, level, n_normal, theta - 2.0 * math.pi / ONSET_SCAN,
+                                 theta, previous, direction)  # fmt: skip
+            direction[0] = math.cos(root)
+            direction[1] = math.sin(root)
+            along, across, size = _onset_rate(par, y, sc, level, n_normal, 2, direction)
+            distance = abs(math.atan2(math.sin(root - theta0), math.cos(root - theta0)))
+            if _onset_consistent(along, across, size, rate_tol) and (best < 0.0 or distance < best):
+                best = distance
+                best_theta = root
+        previous = value
+    if best < 0.0:
+        return False
+    direction[0] = math.cos(best_theta)
+    direction[1] = math.sin(best_theta)
+    along, across, size = _onset_rate(par, y, sc, level, n_normal, 2, direction)
+    return True
+
+
+@nb.njit(cache=True)
+def _onset_sign(par, y, sc, level, n_normal, theta, direction):
+    direction[0] = math.cos(theta)
+    direction[1] = math.sin(theta)
+    _, _, size = _onset_rate(par, y, sc, level, n_normal, 2, direction)
+    if size < 0.0:
+        return math.nan
+    rate = sc[SC_SACC]
+    return -direction[1] * rate[0] + direction[0] * rate[1]
+
+
+@nb.njit(cache=True)
+def _onset_bisect(par, y, sc, level, n_normal, low, high, f_low, direction):
+    for _ in range(60):
+        middle = 0.5 * (low + high)
+        f_mid = _onset_sign(par, y, sc, level, n_normal, middle, direction)
+        if f_mid * f_low <= 0.0:
+            high = middle
+        else:
+            low, f_low = middle, f_mid
+        if high - low < 1e-14:
+            break
+    return 0.5 * (low + high)
+
+
+@nb.njit(cache=True)
+def _tangent_basis(u, e1, e2):
+    """Two unit vectors completing the unit 3-vector ``u`` to an orthonormal basis."""
+    ax, ay, az = (1.0, 0.0, 0.0) if abs(u[0]) < 0.9 else (0.0, 1.0, 0.0)
+    dot = ax * u[0] + ay * u[1] + az * u[2]
+    e1[0], e1[1], e1[2] = ax - dot * u[0], ay - dot * u[1], az - dot * u[2]
+    size = math.sqrt(e1[0] ** 2 + e1[1] ** 2 + e1[2] ** 2)
+    for k in range(3):
+        e1[k] /= size
+    e2[0], e2[1], e2[2] = cross(u[0], u[1], u[2], e1[0], e1[1], e1[2])
+
+
+@nb.njit(cache=True)
+def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol):
+    """Three tangential rows: Newton on the rate's components across u, from ``direction``.
+
+    u(a, b) = normalise(u + a e1 + b e2) with (e1, e2) across u; the residual
+    (e1 . s', e2 . s') is driven to zero with a finite-difference Jacobian and
+    step halving. True when consistent (``direction`` holds u).
+    """
+    e1 = np.empty(3)
+    e2 = np.empty(3)
+    trial = np.empty(3)
+    jac = np.empty((2, 2))
+    for _ in range(30):
+        along, across, size = _onset_rate(par, y, sc, level, n_normal, 3, direction)
+        if size < 0.0:
+            return False
+        if _onset_consistent(along, across, size, rate_tol):
+            return True
+        _tangent_basis(direction, e1, e2)
+        r1, r2 = _onset_across(sc, e1, e2)
+        h = 1e-7
+        for j in range(2):
+            for k in range(3):
+                trial[k] = direction[k] + h * (e1[k] if j == 0 else e2[k])
+            _normalise3(trial)
+            _onset_rate(par, y, sc, level, n_normal, 3, trial)
+            f1, f2 = _onset_across(sc, e1, e2)
+            jac[0, j] = (f1 - r1) / h
+            jac[1, j] = (f2 - r2) / h
+        det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
+        if det == 0.0 or not math.isfinite(det):
+            return False
+        da = -(jac[1, 1] * r1 - jac[0, 1] * r2) / det
+        db = -(-jac[1, 0] * r1 + jac[0, 0] * r2) / det
+        norm0 = math.hypot(r1, r2)
+        factor = 1.0
+        for _ in range(20):
+            for k in range(3):
+                trial[k] = direction[k] + factor * (da * e1[k] + db * e2[k])
+            _normalise3(trial)
+            _onset_rate(par, y, sc, level, n_normal, 3, trial)
+            f1, f2 = _onset_across(sc, e1, e2)
+            if math.hypot(f1, f2) < norm0:
+                break
+            factor *= 0.5
+        for k in range(3):
+            direction[k] = trial[k]
+    along, across, size = _onset_rate(par, y, sc, level, n_normal, 3, direction)
+    return _onset_consistent(along, across, size, rate_tol)
+
+
+@nb.njit(cache=True)
+def _onset_across(sc, e1, e2):
+    rate = sc[SC_SACC]
+    return (rate[0] * e1[0] + rate[1] * e1[1] + rate[2] * e1[2],
+            rate[0] * e2[0] + rate[1] * e2[1] + rate[2] * e2[2])  # fmt: skip
+
+
+@nb.njit(cache=True)
+def _normalise3(u):
+    size = math.sqrt(u[0] ** 2 + u[1] ** 2 + u[2] ** 2)
+    for k in range(3):
+        u[k] /= size
+
+
+@nb.njit(cache=True)
+def _onset_on_sphere(par, y, sc, level, n_normal, start, direction, rate_tol):
+    """Three tangential rows (an edge or face with twist): Newton from the best sampled u.
+
+    The sphere is sampled on ``ONSET_RINGS`` latitude rings; Newton starts from
+    the samples in order of increasing relative residual (across / size, with
+    the rate along u) until one converges.
+    """
+    count = ONSET_RINGS * 2 * ONSET_RINGS
+    score = np.empty(count)
+    samples = np.empty((count, 3))
+    for i in range(ONSET_RINGS):
+        polar = math.pi * (i + 0.5) / ONSET_RINGS
+        for j in range(2 * ONSET_RINGS):
+            azimuth = math.pi * j / ONSET_RINGS
+            n = i * 2 * ONSET_RINGS + j
+            samples[n, 0] = math.sin(polar) * math.cos(azimuth)
+            samples[n, 1] = math.sin(polar) * math.sin(azimuth)
+            samples[n, 2] = math.cos(polar)
+            along, across, size = _onset_rate(par, y, sc, level, n_normal, 3, samples[n])
+            score[n] = across / size if (size > 0.0 and along > 0.0) else math.inf
+    order = np.argsort(score)
+    for n in order[:ONSET_STARTS]:
+        if not math.isfinite(score[n]):
+            break
+        for k in range(3):
+            direction[k] = samples[n, k]
+        if _onset_newton(par, y, sc, level, n_normal, direction, rate_tol):
+            return True
+    return False
+
+
+@nb.njit(cache=True)
 def _slip_onset(par, y, sc, level, n_normal, n_tangent, start, direction, rate_tol):
     """Direction u of a slip starting from rest; True when consistent.
 
     The slip acceleration under the friction ``-mu N u`` it produces must lie
     along u: ``s'(u) = kappa u`` with ``kappa >= 0`` (within ``rate_tol``;
-    kappa is near zero at the very onset). Fixed-point iteration
-    ``u <- s'(u)/|s'(u)|`` from ``start`` (the sticking friction reversed).
+    kappa is near zero at the very onset). First the fixed-point iteration
+    ``u <- s'(u)/|s'(u)|`` from ``start`` (the sticking friction reversed);
+    where it does not settle (it can cycle), a point's angle by a scan and
+    bisection, an edge's or face's u (with twist) by Newton from the best
+    sampled direction.
     """
     rate = sc[SC_SACC]
     for k in range(n_tangent):
         direction[k] = start[k]
     for _ in range(ONSET_ITERATIONS):
-        if not _solve(par, y, sc, level, 1, direction, n_normal, n_tangent):
+        along, across, size = _onset_rate(par, y, sc, level, n_normal, n_tangent, direction)
+        if size < 0.0:
             return False
-        size = _tangential_rate(sc, n_tangent, level, rate)
-        along = 0.0
-        for k in range(n_tangent):
-            along += rate[k] * direction[k]
-        across = 0.0
-        for k in range(n_tangent):
-            across += (rate[k] - along * direction[k]) ** 2
-        if math.sqrt(across) <= rate_tol + 1e-10 * size and along >= -rate_tol:
+        if _onset_consistent(along, across, size, rate_tol):
             return True
-        if size <= 0.0:
-            return False
+        if size == 0.0:
+            break
         for k in range(n_tangent):
             direction[k] = rate[k] / size
-    return False
+    if n_tangent == 2:
+        return _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol)
+    if _onset_newton(par, y, sc, level, n_normal, _restart(start, direction), rate_tol):
+        return True
+    return _onset_on_sphere(par, y, sc, level, n_normal, start, direction, rate_tol)
+
+
+@nb.njit(cache=True)
+def _restart(start, direction):
+    for k in range(3):
+        direction[k] = start[k]
+    return direction
 
 
 @nb.njit(cache=True)

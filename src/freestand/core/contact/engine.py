@@ -54,6 +54,8 @@ tangential state of a mode
 
 from __future__ import annotations
 
+from collections import namedtuple
+
 import numba as nb
 import numpy as np
 
@@ -124,6 +126,42 @@ def solve_in_place(matrix, rhs, k):
 
 
 @nb.njit(cache=True, inline="always")
+def solve_symmetric_in_place(matrix, rhs, k):
+    """Solve ``matrix x = rhs`` for a symmetric positive definite leading k x k block.
+
+    ``L D L^T`` factorisation (no pivoting, no square root) from the lower
+    triangle, which it overwrites; ``x`` in ``rhs``. Returns False, with
+    ``rhs`` untouched, when a pivot is not positive (the matrix is not
+    positive definite: solve it with :func:`solve_in_place` instead).
+    """
+    for j in range(k):
+        d = matrix[j, j]
+        for p in range(j):
+            d -= matrix[j, p] * matrix[j, p] * matrix[p, p]
+        if not d > 0.0:
+            return False
+        matrix[j, j] = d
+        for i in range(j + 1, k):
+            total = matrix[i, j]
+            for p in range(j):
+                total -= matrix[i, p] * matrix[j, p] * matrix[p, p]
+            matrix[i, j] = total / d
+    for i in range(k):
+        total = rhs[i]
+        for p in range(i):
+            total -= matrix[i, p] * rhs[p]
+        rhs[i] = total
+    for i in range(k):
+        rhs[i] /= matrix[i, i]
+    for i in range(k - 1, -1, -1):
+        total = rhs[i]
+        for p in range(i + 1, k):
+            total -= matrix[p, i] * rhs[p]
+        rhs[i] = total
+    return True
+
+
+@nb.njit(cache=True, inline="always")
 def _row(i, kind, reference):
     """Row of the 4-per-interface Delassus matrix: gap left, gap right, slip left, slip right."""
     if kind < 2:
@@ -131,7 +169,7 @@ def _row(i, kind, reference):
     return 4 * i + 2 + reference
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def delassus(active, inverse_mass, free_acc, jn, bn, jt, bt, w, h):
     """``W = J M^-1 J^T`` and ``h = J M^-1 f + b`` over the rows (gap L, gap R, slip L, slip R).
 
@@ -186,7 +224,7 @@ def _slide_coefficient(left, right, tangential, mu):
     return reference, -direction * mu[0]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full,
                with_accelerations=True):  # fmt: skip
     """Forces ``lam`` (N_L, N_R, T per interface) and contact accelerations of one mode.
@@ -242,7 +280,7 @@ def solve_mode(active, w, h, mode, mu, lam, a, matrix, rhs, index, coeff, full,
     return True
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def contact_accelerations(active, w, h, mode, full, a):
     """Gap accelerations (left, right) and slip acceleration of every interface, ``W lam + h``."""
     for i in range(active):
@@ -259,7 +297,7 @@ def contact_accelerations(active, w, h, mode, full, a):
             a[i, 1] = 0.0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def accelerations(active, inverse_mass, free_acc, jn, jt, mode, lam, qdd):
     """``qdd = M^-1 f + M^-1 J^T Lambda`` (the tangential force along the reference row)."""
     n = 3 * active
@@ -278,7 +316,7 @@ def accelerations(active, inverse_mass, free_acc, jn, jt, mode, lam, qdd):
         qdd[c] = free_acc[c] + inverse_mass[c] * qdd[c]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _local_modes(active_left, active_right, kinetic, sliding, out):
     """Modes of one interface in the order of ``Interface.modes``; returns their count.
 
@@ -319,7 +357,7 @@ def _local_modes(active_left, active_right, kinetic, sliding, out):
     return count
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def forces_admissible(active, mode, sliding, mu_static, lam, force_tol):
     """Force inequalities of a mode's solution ``lam`` (B, 3): finite, ``N >= 0`` where
     closed, ``|T| <= mu_0 (N_L + N_R)`` where sticking (an engaged end stop adds an
@@ -341,7 +379,7 @@ def forces_admissible(active, mode, sliding, mu_static, lam, force_tol):
     return True
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def accelerations_admissible(active, mode, contact_active, a, accel_tol):
     """Acceleration inequalities of a mode's contact accelerations ``a`` (B, 3: gap left,
     gap right, slip): finite, ``a_n >= 0`` at the open touching contacts, slip in the
@@ -362,7 +400,7 @@ def accelerations_admissible(active, mode, contact_active, a, accel_tol):
     return True
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def slides_with_static(active, mode, a_static, accel_tol):
     """Break-away test: the starting slides still slide with ``mu_0`` acting."""
     for i in range(active):
@@ -374,7 +412,7 @@ def slides_with_static(active, mode, a_static, accel_tol):
     return True
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def choose(order, candidate, physical, lam_all, qdd_all, force_tol, accel_tol, kept):
     """Choice rule, relaxation and deduplication over solved modes.
 
@@ -423,7 +461,7 @@ def choose(order, candidate, physical, lam_all, qdd_all, force_tol, accel_tol, k
     return distinct, relaxed
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _local_unknowns(active, local, local_count, mu, count, index, slip_row, coeff):
     """The unknowns of every local mode, as :func:`solve_mode` orders them.
 
@@ -453,15 +491,79 @@ def _local_unknowns(active, local, local_count, mu, count, index, slip_row, coef
             count[i, m] = k
 
 
-@nb.njit(cache=True)
-def _grown(array, rows):
-    """A copy of ``array`` with ``rows`` rows (the first ones copied)."""
-    bigger = np.empty((rows,) + array.shape[1:], dtype=array.dtype)
-    bigger[: array.shape[0]] = array
-    return bigger
+#: Work arrays of :func:`solve_states_into`, made by :func:`contact_work` for ``B``
+#: interfaces (``S = 4 B`` Delassus rows, ``n = 3 B`` coordinates) and a capacity of
+#: ``K`` admissible modes:
+#:
+#: - ``w`` (S, S) the Delassus matrix; ``vectors`` (5, S): ``V_H`` (its free term),
+#:   ``V_FULL`` (the forces of a mode on the Delassus rows), and on their first ``n``
+#:   entries ``V_RHS``, ``V_COEFF``, ``V_QDD``; ``matrix`` (n, n) a mode's equations;
+#: - ``friction`` (2, B, 2): the kinetic coefficient and slip sign of each interface
+#:   (``[0]``) and the coefficients of the break-away test (``[1]``); ``forces``
+#:   (4, B, 3): a mode's forces, contact accelerations, and both again with static
+#:   friction (break-away test); ``mode`` (B, 3) int;
+#: - ``local`` (3, B, MAX_LOCAL, 3) int: each interface's local modes and, per local
+#:   mode, the Delassus rows and slip rows of its unknowns; ``local_coeff`` (B,
+#:   MAX_LOCAL, 3) their friction coefficients; ``local_unknowns`` (B, MAX_LOCAL) int
+#:   their number;
+#:   ``digits`` (2, B) int: each interface's local-mode count and current local mode;
+#:   ``gather`` (2, n) int: a mode's unknowns' rows and slip rows;
+#: - ``cand_lam``, ``cand_acc`` (K, B, 3), ``cand_qdd`` (K, n): the admissible modes;
+#:   ``cand_codes`` (4, K) int: their choice keys, enumeration indices, order and
+#:   the kept distinct ones; ``cand_flags`` (2, K) bool: physical (break-away test
+#:   passed) and candidate.
+ContactWork = namedtuple(
+    "ContactWork",
+    (
+        "w", "vectors", "matrix", "friction", "forces", "mode", "local", "local_coeff",
+        "local_unknowns", "digits", "gather", "cand_lam", "cand_acc", "cand_qdd", "cand_codes",
+        "cand_flags",
+    ),
+)  # fmt: skip
+V_H, V_FULL, V_RHS, V_COEFF, V_QDD = range(5)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
+def contact_work(count, capacity):
+    """The :data:`ContactWork` arrays for ``count`` interfaces and ``capacity`` modes."""
+    size = 4 * count
+    n = 3 * count
+    return ContactWork(
+        np.zeros((size, size)),
+        np.zeros((5, size)),
+        np.zeros((n, n)),
+        np.zeros((2, count, 2)),
+        np.zeros((4, count, 3)),
+        np.zeros((count, 3), dtype=np.int64),
+        np.zeros((3, count, MAX_LOCAL, 3), dtype=np.int64),
+        np.zeros((count, MAX_LOCAL, 3)),
+        np.zeros((count, MAX_LOCAL), dtype=np.int64),
+        np.zeros((2, count), dtype=np.int64),
+        np.zeros((2, n), dtype=np.int64),
+        np.zeros((capacity, count, 3)),
+        np.zeros((capacity, count, 3)),
+        np.zeros((capacity, n)),
+        np.zeros((4, capacity), dtype=np.int64),
+        np.zeros((2, capacity), dtype=np.bool_),
+    )
+
+
+@nb.njit(cache=True, _nrt=False)
+def _sort_by_key(keys, count, order):
+    """``order[:count]``: the indices of ``keys[:count]`` by increasing key (distinct keys)."""
+    for position in range(count):
+        order[position] = position
+    for position in range(1, count):
+        current = order[position]
+        key = keys[current]
+        j = position - 1
+        while j >= 0 and keys[order[j]] > key:
+            order[j + 1] = order[j]
+            j -= 1
+        order[j + 1] = current
+
+
+@nb.njit(cache=True, _nrt=True)
 def solve_contact_states(
     active,
     inverse_mass,
@@ -520,14 +622,90 @@ def solve_contact_states(
     int
         Number of distinct admissible states (0: inconsistent, more than one:
         ambiguous); only the first K are written.
+
+    Notes
+    -----
+    :func:`solve_states_into` on work arrays made here, with room for 16
+    admissible modes, then four times more as long as they do not fit.
+    """
+    capacity = 16
+    while True:
+        work = contact_work(active, capacity)
+        distinct = solve_states_into(
+            work, active, inverse_mass, free_acc, jn, bn, jt, bt, contact_active, slip,
+            sliding, mu_static, mu_kinetic, force_tol, accel_tol, out_modes, out_qdd, out_lam,
+            out_acc, out_index, info,
+        )  # fmt: skip
+        if distinct >= 0:
+            return distinct
+        capacity *= 4
+
+
+@nb.njit(cache=True, _nrt=False)
+def solve_states_into(
+    work,
+    active,
+    inverse_mass,
+    free_acc,
+    jn,
+    bn,
+    jt,
+    bt,
+    contact_active,
+    slip,
+    sliding,
+    mu_static,
+    mu_kinetic,
+    force_tol,
+    accel_tol,
+    out_modes,
+    out_qdd,
+    out_lam,
+    out_acc,
+    out_index,
+    info,
+):
+    """:func:`solve_contact_states` on the :data:`ContactWork` arrays ``work``.
+
+    Allocates nothing. Returns -1 when more modes are admissible than ``work``
+    has room for (nothing useful is written then: solve again with more room).
     """
     n = 3 * active
     size = 4 * active
-    w = np.empty((size, size))
-    h = np.empty(size)
+    capacity = work.cand_codes.shape[1]
+    w = work.w
+    h = work.vectors[V_H]
+    full = work.vectors[V_FULL]
+    rhs = work.vectors[V_RHS]
+    coeff = work.vectors[V_COEFF]
+    qdd = work.vectors[V_QDD]
+    matrix = work.matrix
+    mu = work.friction[0]
+    mu_break = work.friction[1]
+    lam = work.forces[0]
+    a = work.forces[1]
+    lam_static = work.forces[2]
+    a_static = work.forces[3]
+    mode = work.mode
+    local = work.local[0]
+    local_index = work.local[1]
+    local_slip_row = work.local[2]
+    local_unknowns = work.local_unknowns
+    local_coeff = work.local_coeff
+    local_count = work.digits[0]
+    digits = work.digits[1]
+    index = work.gather[0]
+    slip_row = work.gather[1]
+    cand_lam = work.cand_lam
+    cand_acc = work.cand_acc
+    cand_qdd = work.cand_qdd
+    cand_key = work.cand_codes[0]
+    cand_combo = work.cand_codes[1]
+    order = work.cand_codes[2]
+    kept = work.cand_codes[3]
+    cand_physical = work.cand_flags[0]
+    candidate = work.cand_flags[1]
     delassus(active, inverse_mass, free_acc, jn, bn, jt, bt, w, h)
-    local = np.empty((active, MAX_LOCAL, 3), dtype=np.int64)
-    local_count = np.empty(active, dtype=np.int64)
     total = 1
     for i in range(active):
         local_count[i] = _local_modes(
@@ -538,8 +716,6 @@ def solve_contact_states(
             local[i],
         )
         total *= local_count[i]
-    mu = np.empty((active, 2))
-    mu_break = np.empty((active, 2))
     for i in range(active):
         sign = 1.0 if slip[i] > 0.0 else (-1.0 if slip[i] < 0.0 else 0.0)
         mu[i, 0] = mu_kinetic[i]
@@ -548,35 +724,13 @@ def solve_contact_states(
         mu_break[i, 1] = sign
     # the unknowns of every local mode, so that a mode's system is gathered from W
     # without decoding the mode again (the values and order of solve_mode)
-    local_unknowns = np.empty((active, MAX_LOCAL), dtype=np.int64)
-    local_index = np.empty((active, MAX_LOCAL, 3), dtype=np.int64)
-    local_slip_row = np.empty((active, MAX_LOCAL, 3), dtype=np.int64)
-    local_coeff = np.empty((active, MAX_LOCAL, 3))
     _local_unknowns(
         active, local, local_count, mu, local_unknowns, local_index, local_slip_row, local_coeff
     )
     # only the admissible modes (candidates) are kept, in enumeration order
-    capacity = min(total, 16)
-    cand_lam = np.empty((capacity, active, 3))
-    cand_acc = np.empty((capacity, active, 3))
-    cand_qdd = np.empty((capacity, n))
-    cand_key = np.empty(capacity, dtype=np.int64)
-    cand_combo = np.empty(capacity, dtype=np.int64)
-    cand_physical = np.empty(capacity, dtype=np.bool_)
     candidates = 0
-    mode = np.empty((active, 3), dtype=np.int64)
-    lam = np.empty((active, 3))
-    a = np.empty((active, 3))
-    qdd = np.empty(n)
-    lam_static = np.empty((active, 3))
-    a_static = np.empty((active, 3))
-    matrix = np.empty((n, n))
-    rhs = np.empty(n)
-    index = np.empty(n, dtype=np.int64)
-    slip_row = np.empty(n, dtype=np.int64)
-    coeff = np.empty(n)
-    full = np.empty(size)
-    digits = np.zeros(active, dtype=np.int64)
+    for i in range(active):
+        digits[i] = 0
     singular = 0
     kinetic_only = 0
     for combo in range(total):
@@ -664,27 +818,24 @@ def solve_contact_states(
             if not physical:
                 kinetic_only += 1
         if candidates == capacity:
-            capacity *= 2
-            cand_lam = _grown(cand_lam, capacity)
-            cand_acc = _grown(cand_acc, capacity)
-            cand_qdd = _grown(cand_qdd, capacity)
-            cand_key = _grown(cand_key, capacity)
-            cand_combo = _grown(cand_combo, capacity)
-            cand_physical = _grown(cand_physical, capacity)
-        cand_lam[candidates] = lam
-        cand_acc[candidates] = a
-        cand_qdd[candidates] = qdd
+            return -1
+        for i in range(active):
+            for c in range(3):
+                cand_lam[candidates, i, c] = lam[i, c]
+                cand_acc[candidates, i, c] = a[i, c]
+        for c in range(n):
+            cand_qdd[candidates, c] = qdd[c]
         cand_key[candidates] = ((active - sticking) * (2 * active + 1) + opened) * total + combo
         cand_combo[candidates] = combo
         cand_physical[candidates] = physical
+        candidate[candidates] = True
         candidates += 1
     # the choice rule's order among the candidates (keys: fewest non-sticking
     # interfaces, then fewest open contacts, then enumeration order)
-    order = np.argsort(cand_key[:candidates])
-    kept = np.empty(candidates, dtype=np.int64)
+    _sort_by_key(cand_key, candidates, order)
     distinct, relaxed = choose(
-        order,
-        np.ones(candidates, dtype=np.bool_),
+        order[:candidates],
+        candidate[:candidates],
         cand_physical[:candidates],
         cand_lam[:candidates],
         cand_qdd[:candidates],
@@ -714,7 +865,7 @@ def solve_contact_states(
     return distinct
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
 def solve_contact_problem(
     active,
     inverse_mass,
@@ -734,8 +885,7 @@ def solve_contact_problem(
     out_qdd,
     out_lam,
 ):
-    """:func:`solve_contact_states` without the contact accelerations, indices and counts
-    (the time history's call)."""
+    """:func:`solve_contact_states` without the contact accelerations, indices and counts."""
     count = out_modes.shape[0]
     out_acc = np.empty((count, active, 3))
     out_index = np.empty(count, dtype=np.int64)

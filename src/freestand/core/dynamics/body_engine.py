@@ -31,6 +31,7 @@ import math
 import numba as nb
 import numpy as np
 
+from freestand.core.contact.body_impulse import MAX_POINTS, base_points, velocity_impact
 from freestand.core.contact.body_kernel import (
     D_PSI,
     D_SLIP,
@@ -43,25 +44,34 @@ from freestand.core.contact.body_kernel import (
     P_GRAVITY,
     P_HALF_X,
     P_MASS,
+    P_MU_KINETIC,
     P_SHAPE,
+    PIVOT_LEAN,
     POINT,
+    SC_ACC,
+    SC_BASE,
     SC_INV,
     SC_LAM,
     SC_ROT,
     SC_SVEL,
     SC_TANGENT,
+    SC_TBIAS,
     SHAPE_BOX,
     STATE_SIZE,
     arm,
     corner_gap,
+    cross,
     flat_gap,
     friction_margin,
+    lowest_rim_angle,
     new_scratch,
     normal_margin,
     normal_total_rows,
     prepare,
     rate,
+    rim_angle,
     rotation_matrix,
+    row_acceleration,
     sin_tilt,
     solve_at,
     solve_mode,
@@ -72,6 +82,13 @@ from freestand.core.contact.body_modes import NONE_ADMISSIBLE, impact, select_mo
 EVENT_TIME = 1e-11  # [s] width of the bracket of a located event
 GAP_SLACK = 1e-12  # [m] a released point may sit this far below the support
 MAX_EVENT_FUNCTIONS = 8
+CLOSING_OVERSHOOT = 1.25  # a step ends this far past a gap's predicted closing [-]
+WHIRL_ANGLE = 0.1  # [rad] largest turn of a rolling cylinder's lean in one step
+TILT_FRACTION = 0.5  # a whirling lean covers at most this part of its way to the vertical in a step
+SLIP_FRACTION = 0.5  # a step lasts at most this part of a slip's time scale |s| / |s'|
+SLIP_MIN_STEP = 1e-4  # [s] the slip's time scale bounds no step below this
+STRETCH_STEP = 1e-4  # [s] step of the velocity-level time stepping (the remedy)
+MIN_STEP = 1e-9  # [s] the smallest step the closing prediction may ask for
 
 # event kinds
 EV_START = 0
@@ -99,6 +116,8 @@ I_STATUS = 2
 I_STEPS = 3
 I_REMEDIES = 4
 I_IMPACTS = 5
+I_STRETCH = 6  # 1 while a stretch of time stepping runs (the remedy)
+I_STRETCH_STEPS = 7
 I_SIZE = 8
 
 STATUS_RUNNING = 0
@@ -173,10 +192,11 @@ def references(par, y, mode, data, sc, ref):
         size = math.sqrt(size)
         for i in range(n_tangent):
             ref[i] = svel[i] / size if size > 1e-12 else data[D_SLIP + i]
+            data[D_SLIP + i] = ref[i]
     if mode[M_KIND] == POINT and par[P_SHAPE] != SHAPE_BOX:
-        psi = data[D_PSI]
-        if sin_tilt(rot) > 1e-9:
-            psi = math.atan2(-rot[2, 1], -rot[2, 0])
+        # the step's pivot: the lowest rim point (kept on its side within the step)
+        psi = lowest_rim_angle(rot, data[D_PSI])
+        data[D_PSI] = psi
         d = np.empty(3)
         radius = par[P_HALF_X]
         # horizontal direction of the pivot from the base centre
@@ -245,20 +265,149 @@ def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
 
 
 @nb.njit(cache=True)
+def _closing_time(value, rate_, acceleration):
+    """Earliest t > 0 with value + rate t + acceleration t^2 / 2 = 0 [s]; inf if none."""
+    if acceleration == 0.0:
+        return -value / rate_ if rate_ < 0.0 else math.inf
+    discriminant = rate_ * rate_ - 2.0 * acceleration * value
+    if discriminant < 0.0:
+        return math.inf
+    root = math.sqrt(discriminant)
+    best = math.inf
+    for t in ((-rate_ - root) / acceleration, (-rate_ + root) / acceleration):
+        if 0.0 < t < best:
+            best = t
+    return best
+
+
+@nb.njit(cache=True)
+def closing_step(par, y, mode, sc, ref):
+    """Largest step [s] that cannot step over the closing of a gap and its reopening.
+
+    A point that lifts by a little flies for a short time (a cylinder rocking
+    by 1e-4 rad lands again within some 10 ms): a step longer than the flight
+    would see the gap open at both its ends and miss the impact. Each gap (a
+    box corner not held) and a rolling cylinder's landing function f is
+    predicted by its Taylor polynomial f + f' t + f'' t^2 / 2 (f'' from the
+    held mode's accelerations in ``sc``, which :func:`event_functions` just
+    solved); the step ends ``CLOSING_OVERSHOOT`` past its earliest zero, so
+    that :func:`locate` brackets the crossing. A rolling cylinder's lean (the
+    horizontal projection of its axis) turns at ``|e_h x e_h'| / |e_h|^2``,
+    which grows as 1/tilt near flat: :func:`_whirl_step` bounds the step there.
+    """
+    rot = sc[SC_ROT]
+    x = sc[SC_ACC]
+    kind = mode[M_KIND]
+    wx, wy, wz = y[10], y[11], y[12]
+    earliest = math.inf
+    if mode[M_SLIP] == 1 and kind != FACE:
+        earliest = _slip_turn_time(mode, sc)
+    d = np.empty(3)
+    if par[P_SHAPE] == SHAPE_BOX:
+        if kind == FACE:
+            return max(earliest, MIN_STEP)
+        for c in range(4):
+            if kind == POINT and mode[M_INDEX] == c:
+                continue
+            if kind == EDGE and (mode[M_INDEX] == c or (mode[M_INDEX] + 1) % 4 == c):
+                continue
+            g, gv = corner_gap(par, y, rot, c, d)
+            ux, uy, uz = cross(wx, wy, wz, d[0], d[1], d[2])
+            _, _, cz = cross(wx, wy, wz, ux, uy, uz)
+            _, _, az = cross(x[3], x[4], x[5], d[0], d[1], d[2])
+            earliest = min(earliest, _closing_time(max(g, 0.0), gv, x[2] + az + cz))
+    elif kind == POINT:
+        ex, ey, ez = rot[0, 2], rot[1, 2], rot[2, 2]
+        ux, uy, uz = cross(wx, wy, wz, ex, ey, ez)
+        cx, cy, _ = cross(wx, wy, wz, ux, uy, uz)
+        ax, ay, _ = cross(x[3], x[4], x[5], ex, ey, ez)
+        value = ex * ref[3] + ey * ref[4]
+        slope = ux * ref[3] + uy * ref[4]
+        curvature = (ax + cx) * ref[3] + (ay + cy) * ref[4]
+        earliest = _closing_time(max(value, 0.0), slope, curvature)
+        lean = math.sqrt(ex * ex + ey * ey)
+        if lean > PIVOT_LEAN and earliest < math.inf:
+            areal = abs(ex * uy - ey * ux)
+            landing_speed = abs(slope + curvature * earliest)
+            limit = _whirl_step(lean, areal, earliest, landing_speed)
+            if limit < math.inf:
+                return max(limit, MIN_STEP)
+    return max(CLOSING_OVERSHOOT * earliest, MIN_STEP)
+
+
+@nb.njit(cache=True)
+def _slip_turn_time(mode, sc):
+    """Time [s] in which a slip's velocity could stop or turn: |s| / |s'| times SLIP_FRACTION.
+
+    The kinetic friction follows the slip's direction, which turns quickly as
+    the slip slows down (with an edge's twist as one of its components): on a
+    rocking edge or point a step longer than the slip's own time scale makes
+    RK4 oscillate from step to step and gain energy (a flat base sliding is
+    not limited: its direction is not coupled to a rotation). ``sc`` holds the rows and
+    accelerations that :func:`event_functions` just solved. Not below
+    ``SLIP_MIN_STEP``: a slip that dies away without reversing would
+    otherwise take ever shorter steps (its energy is then negligible).
+    """
+    kind = mode[M_KIND]
+    n_tangent = 2 if kind == POINT else 3
+    svel = sc[SC_SVEL]
+    speed = 0.0
+    change = 0.0
+    for k in range(n_tangent):
+        speed += svel[k] ** 2
+        change += row_acceleration(sc[SC_TANGENT], sc[SC_TBIAS], k, sc[SC_ACC]) ** 2
+    if change == 0.0:
+        return math.inf
+    limit = SLIP_FRACTION * math.sqrt(speed / change)
+    return max(limit, SLIP_MIN_STEP) / CLOSING_OVERSHOOT
+
+
+@nb.njit(cache=True)
+def _whirl_step(lean, areal, landing_time, landing_speed):
+    """Largest step [s] of a rolling cylinder whose lean whirls; inf when it lands as in a plane.
+
+    The lean e_h (the horizontal projection of the axis, |e_h| = sin(tilt))
+    sweeps area at ``areal`` = |e_h x e_h'| [1/s], nearly conserved near flat
+    (the restoring moment points at the vertical); predicted to reach the
+    vertical in ``landing_time`` [s] at ``landing_speed`` [1/s], it passes it
+    at the distance ``d = areal / landing_speed``, where the rolling point
+    swings round the rim at ``landing_speed / d`` [rad/s]. Within
+    ``PIVOT_LEAN`` the body lands as in a plane (the contact point keeps its
+    side, :func:`rim_angle`). Otherwise a step turns the lean by at most
+    ``WHIRL_ANGLE`` now (at ``areal / lean^2`` [rad/s]) and covers at most
+    ``TILT_FRACTION`` of the time left to the approach plus ``WHIRL_ANGLE`` of
+    the swing there: the steps shrink geometrically to the approach and
+    resolve it (the contact lifts off there or the lean passes over).
+    """
+    if areal == 0.0 or landing_speed == 0.0:
+        return math.inf
+    distance = areal / landing_speed
+    if distance <= PIVOT_LEAN:
+        return math.inf
+    now = WHIRL_ANGLE * lean * lean / areal
+    return min(now, TILT_FRACTION * landing_time + WHIRL_ANGLE * distance / landing_speed)
+
+
+@nb.njit(cache=True)
 def _crossed(par, n, start_values, values, kinds):
     """Kind of the first event function that crossed below its slack, or -1.
 
-    A function fires when it is below ``-slack`` having started above it: the
-    slack is the admissibility tolerance for the force margins (a mode is
-    chosen within it) and ``GAP_SLACK`` for gaps (a point just released may
-    sit a round-off below the support), zero otherwise.
+    A force margin fires when it is below ``-slack`` having started above it,
+    the slack being the admissibility tolerance (a mode is chosen within it);
+    the tilt and landing functions likewise with no slack. A gap fires when it
+    falls ``GAP_SLACK`` below the lower of zero and its value at the step's
+    start: a point released at an event may sit the held rows' drift (some
+    1e-11 m) below the support, and it must still be caught when it comes
+    back down.
     """
     for i in range(n):
+        if kinds[i] == FN_GAP:
+            if values[i] < min(start_values[i], 0.0) - GAP_SLACK:
+                return kinds[i]
+            continue
         slack = 0.0
         if kinds[i] == FN_NORMAL or kinds[i] == FN_FRICTION:
             slack = 1e-9 * par[P_MASS] * par[P_GRAVITY]
-        elif kinds[i] == FN_GAP:
-            slack = GAP_SLACK
         if values[i] < -slack and start_values[i] >= -slack:
             return kinds[i]
     return -1
@@ -295,8 +444,13 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
 
 
 @nb.njit(cache=True)
-def project(par, record, dt, t, y, mode, data, sc):
+def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     """Remove the drift of the held rows: positions on the support, their velocities zero.
+
+    A slip starting from rest (its speed within ``settle_below`` [m/s], the
+    event's velocity tolerance) has its residual slip velocity removed too:
+    the residual's direction is round-off, and the kinetic friction would
+    follow it rather than the onset's direction until the slip has grown.
 
     FACE: the tilt is removed (a pure yaw) and the base set on the support;
     EDGE and POINT: the centre of gravity shifted vertically by the held
@@ -326,9 +480,7 @@ def project(par, record, dt, t, y, mode, data, sc):
         g0, _ = corner_gap(par, y, rot, mode[M_INDEX], d)
         y[2] -= g0
     else:
-        psi = data[D_PSI]
-        if sin_tilt(rot) > 1e-9:
-            psi = math.atan2(-rot[2, 1], -rot[2, 0])
+        psi = rim_angle(par, rot, data[D_PSI])
         radius = par[P_HALF_X]
         arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
         y[2] -= y[2] + d[2]
@@ -337,6 +489,14 @@ def project(par, record, dt, t, y, mode, data, sc):
     for i in range(6):
         base[i] = y[7 + i]
     held_tangent = n_tangent if mode[M_SLIP] == 0 else 0
+    if held_tangent == 0 and settle_below > 0.0:
+        svel = sc[SC_SVEL]
+        tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
+        speed = 0.0
+        for k in range(n_tangent):
+            speed += svel[k] ** 2
+        if math.sqrt(speed) <= settle_below:
+            held_tangent = n_tangent
     after = np.empty(6)
     lam = np.empty(6)
     from_scratch = sc
@@ -379,14 +539,20 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
         prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
         after = np.empty(6)
         chosen = impact(par, y, sc, gap_tol, data[D_PSI], mode, data, after)
-        if chosen != NONE_ADMISSIBLE:
+        if chosen == NONE_ADMISSIBLE:
+            # no candidate of the impact law: the velocity-level impact at the base points
+            arms = np.empty((MAX_POINTS, 3))
+            count = base_points(par, y, rot, data[D_PSI], gap_tol, arms)
             for i in range(6):
-                y[7 + i] = after[i]
-            istate[I_IMPACTS] += 1
-            event = EV_IMPACT
-        else:
+                after[i] = y[7 + i]
+            velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], after)
             istate[I_REMEDIES] += 1
             event = EV_REMEDY
+        else:
+            istate[I_IMPACTS] += 1
+            event = EV_IMPACT
+        for i in range(6):
+            y[7 + i] = after[i]
     excluded = np.array([-1, 0, 0], dtype=np.int64)
     if which == FN_NORMAL:
         excluded[0] = mode[M_KIND]
@@ -397,13 +563,66 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
         excluded[1] = mode[M_INDEX]
     chosen = select_mode(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, excluded)
     if chosen == NONE_ADMISSIBLE:
+        # no consistent mode (Painleve): a stretch of velocity-level time stepping
         istate[I_REMEDIES] += 1
+        istate[I_STRETCH] = 1
         mode[M_KIND] = FREE
         mode[M_INDEX] = 0
         mode[M_SLIP] = 0
-        event = EV_REMEDY
-    project(par, record, dt, t, y, mode, data, sc)
+        return EV_REMEDY
+    project(par, record, dt, t, y, mode, data, sc, velocity_tol)
     return event
+
+
+@nb.njit(cache=True)
+def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol):
+    """The remedy's step: one Moreau-Jean step of length h (Jean 1999), in place on ``y``.
+
+    The velocity at t + h is the free one (gravity, the support's inertial
+    force, the gyroscopic moment over h) with plastic impulses at the base
+    points that are closed or would close within the step
+    (:func:`freestand.core.contact.body_impulse.velocity_impact`, the circular
+    cone with the kinetic coefficient; never gaining kinetic energy); the
+    position follows with that velocity (the rotation exactly, for an
+    angular velocity constant over the step).
+    """
+    prepare(par, record, dt, t + h, y, FREE, 0, 0.0, sc)
+    rot = sc[SC_ROT]
+    velocity = np.empty(6)
+    for i in range(6):
+        velocity[i] = y[7 + i] + h * sc[SC_BASE][i]
+    arms = np.empty((MAX_POINTS, 3))
+    count = base_points(par, y, rot, data[D_PSI], gap_tol + h * _fall_speed(velocity, par), arms)
+    velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], velocity)
+    for i in range(3):
+        y[i] += h * velocity[i]
+    _turn(y, velocity[3] * h, velocity[4] * h, velocity[5] * h)
+    for i in range(6):
+        y[7 + i] = velocity[i]
+
+
+@nb.njit(cache=True)
+def _fall_speed(velocity, par):
+    """A bound of the speed [m/s] at which a base point approaches the support."""
+    return abs(velocity[2]) + par[P_HALF_X] * 2.0 * math.sqrt(
+        velocity[3] ** 2 + velocity[4] ** 2 + velocity[5] ** 2)  # fmt: skip
+
+
+@nb.njit(cache=True)
+def _turn(y, ax, ay, az):
+    """Turn the orientation quaternion y[3:7] by the rotation vector (ax, ay, az) [rad] (world)."""
+    angle = math.sqrt(ax * ax + ay * ay + az * az)
+    if angle == 0.0:
+        return
+    c = math.cos(0.5 * angle)
+    f = math.sin(0.5 * angle) / angle
+    rw, rx, ry, rz = c, f * ax, f * ay, f * az
+    w, x, yy, z = y[3], y[4], y[5], y[6]
+    y[3] = rw * w - rx * x - ry * yy - rz * z
+    y[4] = rw * x + rx * w + ry * z - rz * yy
+    y[5] = rw * yy - rx * z + ry * w + rz * x
+    y[6] = rw * z + rx * yy - ry * x + rz * w
+    _normalise(y)
 
 
 @nb.njit(cache=True)
@@ -453,6 +672,22 @@ def _next_end(t, breaks, h_max, t_end):
 
 
 @nb.njit(cache=True)
+def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, istate):
+    """One step of the remedy; it ends where a consistent mode exists again. Returns t + h."""
+    advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol)
+    istate[I_STRETCH_STEPS] += 1
+    none = np.array([-1, 0, 0], dtype=np.int64)
+    if select_mode(par, record, dt, t + h, y, sc, gap_tol, velocity_tol, mode, data, none) >= 0:
+        istate[I_STRETCH] = 0
+        project(par, record, dt, t + h, y, mode, data, sc)
+    else:
+        mode[M_KIND] = FREE
+        mode[M_INDEX] = 0
+        mode[M_SLIP] = 0
+    return t + h
+
+
+@nb.njit(cache=True)
 def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol, t, y, mode,
         data, istate, out_t, out_y, out_mode, out_force, ev_time, ev_kind, ev_before,
         ev_after):  # fmt: skip
@@ -475,6 +710,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         none = np.array([-1, 0, 0], dtype=np.int64)
         if select_mode(par, record_, dt, t, y, sc, gap_tol, velocity_tol, mode, data, none) < 0:
             mode[M_KIND] = FREE
+            istate[I_STRETCH] = 1
+            istate[I_REMEDIES] += 1
         solve_at(par, record_, dt, t, y, mode, data, sc)
         record(t, y, mode, sc, 0, out_t, out_y, out_mode, out_force)
         istate[I_RECORDS] = 1
@@ -484,9 +721,21 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         if istate[I_RECORDS] >= capacity:
             istate[I_STATUS] = STATUS_BUFFER_FULL
             return t
+        if istate[I_STRETCH] == 1:
+            t = _stretch(par, record_, dt, t, min(STRETCH_STEP, t_end - t), y, mode, data, sc,
+                         gap_tol, velocity_tol, istate)  # fmt: skip
+            solve_at(par, record_, dt, t, y, mode, data, sc)
+            record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
+            istate[I_RECORDS] += 1
+            if sc[SC_ROT][2, 2] <= 0.0:
+                istate[I_EVENTS] = _event(t, EV_OVERTURN, FREE, FREE, istate[I_EVENTS], ev_time,
+                                          ev_kind, ev_before, ev_after)  # fmt: skip
+                istate[I_STATUS] = STATUS_OVERTURNED
+                return t
+            continue
         references(par, y, mode, data, sc, ref)
         count = event_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values, kinds)
-        h = _next_end(t, breaks, h_max, t_end) - t
+        h = min(_next_end(t, breaks, h_max, t_end) - t, closing_step(par, y, mode, sc, ref))
         advance(par, record_, dt, t, h, y, mode, data, sc, k, out, velocity_tol)
         h, which = locate(par, record_, dt, t, h, y, mode, data, sc, k, ref, start_values, count,
                           trial, values, kinds, out)  # fmt: skip

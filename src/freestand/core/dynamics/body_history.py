@@ -24,8 +24,10 @@ GRAVITY = 9.81
 
 MOTION_NAMES = {0: "free-flight", 1: "rock-corner", 2: "rock-edge", 3: "rest"}
 EVENT_ROWS = 200_000  # events kept (the engine counts the others)
-#: A base point this far below the support (times the base's width) means the contact was lost.
-PENETRATION_FRACTION = 1e-3
+
+#: A base point deeper below the support than this fraction of the base width [-] means the
+#: contact was lost (round-off stays below 1e-11 of it): the simulation failed there.
+LOST_CONTACT_FRACTION = 1e-6
 
 
 @dataclass(frozen=True)
@@ -41,6 +43,16 @@ class SupportMotion3:
     vertical : numpy.ndarray or None
         Downward support acceleration a_v [m/s^2] (the weight is ``m (g - a_v)``);
         None for none. Zero before the first and after the last sample.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import freestand as fs
+    >>> motion = fs.SupportMotion3(0.01, np.array([0.0, 1.0, 0.0]), np.array([0.0, 2.0, 0.0]))
+    >>> motion.duration, motion.vertical.tolist()  # [s], [m/s^2]
+    (0.02, [0.0, 0.0, 0.0])
+    >>> motion.at([0.005]).ravel().tolist()  # x, y, vertical at 5 ms [m/s^2]
+    [0.5, 1.0, 0.0]
     """
 
     time_step: float
@@ -79,6 +91,12 @@ class SupportMotion3:
         """(3, n): x, y, vertical."""
         return np.vstack([self.x, self.y, self.vertical])
 
+    def at(self, time) -> np.ndarray:
+        """(3, K): x, y, vertical [m/s^2] at the times ``time`` [s] (linear, zero outside)."""
+        samples = np.arange(self.x.size) * self.time_step
+        return np.array([np.interp(time, samples, row, left=0.0, right=0.0)
+                         for row in self.array()])  # fmt: skip
+
 
 @dataclass(frozen=True)
 class BodyTimeHistory:
@@ -89,10 +107,7 @@ class BodyTimeHistory:
     body : str
         The body's name.
     status : str
-        ``"completed"``, ``"overturned"`` or ``"failed"`` (the state stopped
-        being finite, or a base point passed below the support by more than
-        ``PENETRATION_FRACTION`` of the base's width: a defect of the engine;
-        the histories and peaks stop before it, ``message`` says when).
+        ``"completed"``, ``"overturned"`` or ``"failed"`` (``message``).
     time : numpy.ndarray
         (K,) [s].
     state : numpy.ndarray
@@ -104,6 +119,11 @@ class BodyTimeHistory:
         (K,) True where the patch slides.
     normal_force : numpy.ndarray
         (K,) total normal force N [N].
+    friction_force : numpy.ndarray
+        (K,) friction on the limit surface's scale, ``|(F_x, F_y, T_z / rho)|``
+        [N] (F the friction force, T_z a FACE's or EDGE's twist torque, rho
+        its twist radius; a POINT has no T_z): at most mu_0 N while it holds,
+        mu N while it slides.
     tilt : numpy.ndarray
         (K,) angle of the body's z axis from the vertical [rad].
     slide : numpy.ndarray
@@ -123,7 +143,10 @@ class BodyTimeHistory:
         steps, events, impacts, remedies (modes without an admissible
         candidate, continued in free flight).
     message : str
-        Why a simulation failed; empty otherwise.
+        Why the simulation failed (status ``"failed"``: the state stopped
+        being finite, or a base point went more than
+        :data:`LOST_CONTACT_FRACTION` of the base width below the support; the
+        histories, events and peaks stop before it), else empty.
     """
 
     body: str
@@ -133,6 +156,7 @@ class BodyTimeHistory:
     patch: np.ndarray
     sliding: np.ndarray
     normal_force: np.ndarray
+    friction_force: np.ndarray
     tilt: np.ndarray
     slide: np.ndarray
     twist: np.ndarray
@@ -192,7 +216,7 @@ def initial_state(body: Body, initial_tilt: tuple[float, float] = (0.0, 0.0)) ->
         axis = np.array([initial_tilt[0], initial_tilt[1], 0.0]) / angle
         y[3] = math.cos(0.5 * angle)
         y[4:7] = math.sin(0.5 * angle) * axis
-        rot = _matrices(y[3:7][None, :])[0]
+        rot = rotation_matrices(y[3:7][None, :])[0]
         points = _base_points(body)
         y[2] = -np.min((rot @ (points - np.asarray(body.centre)).T)[2])
     return y
@@ -346,26 +370,33 @@ def body_motion(body: Body, state: np.ndarray) -> BodyMotion:
     tilt = np.arccos(np.clip(cos_tilt, -1.0, 1.0))
     twist = np.unwrap(2.0 * np.arctan2(qz, w))
     twist -= twist[0]
-    rot = _matrices(state[:, 3:7])
+    rot = rotation_matrices(state[:, 3:7])
+    # base centre = r - R c
     base = state[:, 0:3] - rot @ np.asarray(body.centre)
     lowest, highest = _base_heights(body, rot, base)
     return BodyMotion(tilt, base[:, 0:2] - base[0, 0:2], twist, lowest, highest)
 
 
 def _valid_rows(time, state, lowest, width) -> tuple[int, str]:
-    """Rows before the first state that is not finite or lies below the support; why."""
+    """Rows before the first state that is not finite or lies below the support; why.
+
+    A base point deeper than ``LOST_CONTACT_FRACTION * width`` [m] below the
+    support means the contact was lost; at least the first row is kept.
+    """
     finite = np.all(np.isfinite(state), axis=1)
-    below = lowest < -PENETRATION_FRACTION * width
+    below = lowest < -LOST_CONTACT_FRACTION * width
     bad = np.flatnonzero(~finite | below)
     if bad.size == 0:
         return time.size, ""
-    k = max(int(bad[0]), 1)
-    if not finite[bad[0]]:
-        why = "the state stopped being finite"
+    first = int(bad[0])
+    rows = max(first, 1)
+    if not finite[first]:
+        why = f"the state stopped being finite at t = {time[first]:.6g} s"
     else:
-        why = f"a base point passed {-lowest[bad[0]]:.3g} m below the support (contact lost)"
-    return k, (f"{why} at t = {time[bad[0]]:.6g} s, a defect of the 3-D engine; the "
-               f"histories and peaks stop at t = {time[k - 1]:.6g} s")  # fmt: skip
+        why = (f"a base point went {-lowest[first]:.3g} m below the support at "
+               f"t = {time[first]:.6g} s: the contact was lost")  # fmt: skip
+    return rows, (f"{why} (a defect of the 3-D engine); the histories and peaks stop at "
+                  f"t = {time[rows - 1]:.6g} s")  # fmt: skip
 
 
 def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHistory:
@@ -374,24 +405,24 @@ def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHi
     rows, message = _valid_rows(time, state, motion.lowest, width)
     time, state, modes, forces = time[:rows], state[:rows], modes[:rows], forces[:rows]
     tilt, slide, twist = motion.tilt[:rows], motion.slide[:rows], motion.twist[:rows]
-    lift = motion.highest[:rows]
+    highest = motion.highest[:rows]
     count = int(istate[engine.I_EVENTS])
     names = ("free", "point", "edge", "face")
     event_list = tuple(
         (float(events[0][i]), engine.EVENT_KINDS[events[1][i]],
          names[events[2][i]] if events[2][i] >= 0 else "", names[events[3][i]])
-        for i in range(min(count, events[0].shape[0]))
+        for i in range(min(count, events[0].shape[0])) if events[0][i] <= time[-1]
     )  # fmt: skip
-    overturned = istate[engine.I_STATUS] == engine.STATUS_OVERTURNED and not message
-    status = "failed" if message else ("overturned" if overturned else "completed")
+    overturned = not message and istate[engine.I_STATUS] == engine.STATUS_OVERTURNED
     return BodyTimeHistory(
         body=body.name,
-        status=status,
+        status="failed" if message else "overturned" if overturned else "completed",
         time=time,
         state=state,
         patch=modes[:, 0].copy(),
         sliding=modes[:, 2] == 1,
         normal_force=forces[:, 0].copy(),
+        friction_force=forces[:, 1].copy(),
         tilt=tilt,
         slide=slide,
         twist=twist,
@@ -399,7 +430,7 @@ def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHi
         max_rotation=float(np.max(tilt)),
         max_slide=float(np.max(np.hypot(slide[:, 0], slide[:, 1]))),
         max_twist=float(np.max(np.abs(twist))),
-        uplift=bool(np.max(lift) > UPLIFT_GAP_FRACTION * width),
+        uplift=bool(np.max(highest) > UPLIFT_GAP_FRACTION * width),
         free_flight=bool(np.any(modes[:, 0] == FREE)),
         overturned=bool(overturned),
         overturn_time=float(time[-1]) if overturned else None,
@@ -408,12 +439,14 @@ def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHi
             "events": count,
             "impacts": int(istate[engine.I_IMPACTS]),
             "remedies": int(istate[engine.I_REMEDIES]),
+            "stretch_steps": int(istate[engine.I_STRETCH_STEPS]),
         },
         message=message,
     )
 
 
-def _matrices(quaternions: np.ndarray) -> np.ndarray:
+def rotation_matrices(quaternions: np.ndarray) -> np.ndarray:
+    """(K, 3, 3) rotation matrices, body to support frame, of (K, 4) quaternions (w, x, y, z)."""
     w, x, y, z = quaternions.T
     return np.stack([
         np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
@@ -423,7 +456,7 @@ def _matrices(quaternions: np.ndarray) -> np.ndarray:
 
 
 def _base_heights(body, rot, base) -> tuple[np.ndarray, np.ndarray]:
-    """Heights [m] of the lowest and of the highest base point above the support, per sample."""
+    """Heights [m] of the lowest and the highest base point above the support, per sample."""
     if isinstance(body.shape, Box):
         corners = body.shape.base_corners()
         z = np.einsum("kj,nj->kn", rot[:, 2, :], corners) + base[:, 2:3]

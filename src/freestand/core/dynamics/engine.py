@@ -15,6 +15,29 @@ static-friction break-away test, relaxation, choice rule and deduplication, on
 the Delassus matrix ``W = J M^-1 J^T``), the same that ``screen``, ``map`` and
 ``sample`` use.
 
+The loop
+--------
+:func:`run` is a short loop over named phases, each a compiled function that
+reads and writes the simulation's :data:`State` (kept by the caller between
+calls) and the :data:`Loop` scratch arrays of the call:
+
+- :func:`advance`: one RK4 step of the held contact mode, or a rest segment;
+- :func:`locate`: the earliest event of that step, on its interpolant, then
+  to the time tolerance on RK4 states;
+- :func:`resolve`: at the event, the impact, the next contact mode and the
+  projection onto the closed contacts, or the remedy (a stretch of
+  velocity-impulse time stepping: :func:`advance_stretch`,
+  :func:`resolve_stretch`);
+- :func:`record`: the state as a row of the history (events: :func:`_event`).
+
+Functions that allocate nothing are compiled without numba's reference
+counting (``_nrt=False``): the arrays they touch are owned by :func:`run` or
+its caller for the whole call, and counting the references of every array
+taken from a tuple (two atomic operations each) cost more than the
+arithmetic of a step. They never allocate (numba refuses to compile that) nor
+return an array. The allocating ones (the contact problem at events:
+:func:`_settle`; the time stepping; the loop's set-up) keep it.
+
 Codes used by the kernels
 -------------------------
 sliding (per block)
@@ -31,16 +54,22 @@ motions
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numba as nb
 import numpy as np
 
 from freestand.core.contact.engine import (  # noqa: F401  (re-exported for the callers' buffers)
+    INFO_SIZE,
     MAX_DISTINCT,
     RELATIVE_TOLERANCE,
     accelerations,
+    contact_work,
     solve_contact_problem,
+    solve_contact_states,
     solve_in_place,
+    solve_states_into,
+    solve_symmetric_in_place,
 )
 from freestand.core.dynamics.time_stepping import (
     UNBOUNDED_FRICTION,
@@ -95,12 +124,25 @@ FAILURES = (
     TOO_MANY_EVENTS,
 ) = range(7)
 
+#: The stack, made by :func:`freestand.core.dynamics.timehistory.engine_model`:
+#: ``geometry`` (B, 7) (:func:`freestand.core.dynamics.timehistory.stack_geometry`),
+#: ``masses`` (2, 3 B) rows ``MASS`` and ``INVERSE_MASS`` (the diagonal of M and of
+#: M^-1), ``properties`` (6, B) rows ``MU_S``, ``MU_K`` (friction coefficients),
+#: ``RESTITUTION`` (factor on the post-impact relative velocity), ``BASE_LEFT``,
+#: ``BASE_RIGHT``, ``BASE_LEVEL`` (the base's ends and level [m]), and ``codes`` (B)
+#: the sliding codes.
+Model = namedtuple("Model", ("geometry", "masses", "properties", "codes"))
+MASS, INVERSE_MASS = range(2)
+MU_S, MU_K, RESTITUTION, BASE_LEFT, BASE_RIGHT, BASE_LEVEL = range(6)
+
 # --- parameter vector layout (float64) ---------------------------------------------------------
 P_GRAVITY, P_TOL_GAP, P_TOL_VEL, P_TOL_SLIDE, P_TIME_TOL = range(5)
 P_FORCE_EVENT, P_GAP_EVENT, P_EXC_END, P_END, P_STEP, P_EXC_DT = range(5, 11)
 #: 1: stop at the first instant after the excitation's end at which the stack rests
 P_UNTIL_REST = 11
-P_SIZE = 12
+#: Time [s] from which the support no longer accelerates (every later sample zero)
+P_QUIET = 12
+P_SIZE = 13
 
 # --- integer state vector layout (int64) -------------------------------------------------------
 S_ACTIVE, S_STATUS, S_FAILURE, S_STEPS, S_CONTACT_SOLVES, S_IMPACT_SOLVES = range(6)
@@ -113,13 +155,26 @@ S_STEPPING, S_STRETCH_STEPS, S_STRETCHES, S_STEPPED = range(13, 17)
 S_DISSIPATIVE_IMPACTS = 17
 #: Stretches begun per cause (indexed by the failure code it replaced: FAILURES)
 S_REMEDY = 18
-S_SIZE = S_REMEDY + 7
+#: Zeno sequences of impacts summed (the impact after which the interface lands: :func:`_land`)
+S_ZENO = S_REMEDY + 7
+S_SIZE = S_ZENO + 1
 
 # --- float state vector layout -----------------------------------------------------------------
 F_TIME, F_MAX_PENETRATION, F_MAX_PROJECTION = range(3)
 #: Time spent time stepping [s]; the largest ratio T(v+)/T(v_f) of a step's impulses
 F_STEPPED_TIME, F_ENERGY_RATIO = 3, 4
 F_SIZE = 5
+
+# --- history and event buffers (made by the caller, grown between calls) ------------------------
+#: ``rec``: ``(time (rows,), values (rows, B, R_SIZE))``, per block the coordinates
+#: ``R_Q`` (3), rates ``R_QD`` (3), normal forces ``R_NORMAL`` (2), tangential force,
+#: relative rotation and slide.
+R_Q, R_QD, R_NORMAL, R_TANGENTIAL, R_ROTATION, R_SLIDE = 0, 3, 6, 8, 9, 10
+R_SIZE = 11
+#: ``ev``: ``(time (rows,), codes (rows, EV_MOTIONS + B) int, velocities (rows, 2, B, 3))``:
+#: kind, interface, contact, status (1: ambiguous), blocks before and after, then each
+#: block's motion code; the rates before (``[:, 0]``) and after (``[:, 1]``).
+EV_MOTIONS = 6
 
 #: Step of the time stepping remedy [s] (at most the engine's step cap).
 STEPPING_STEP = 1e-4
@@ -132,7 +187,7 @@ ENERGY_SLACK = 1e-9
 # --- excitation ---------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, inline="always")
+@nb.njit(cache=True, inline="always", _nrt=False)
 def _support(horizontal, vertical, dt, t):
     """(a_h, a_v) [m/s^2] at ``t`` [s]: linear between samples, zero outside the record."""
     count = horizontal.shape[0]
@@ -149,7 +204,7 @@ def _support(horizontal, vertical, dt, t):
 # --- kinematics ---------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, inline="always")
+@nb.njit(cache=True, inline="always", _nrt=False)
 def kinematics(geometry, active, q, qd, gap, gap_velocity, slip_velocity, rotation, jn, bn, jt, bt,
                slide=None, first=0):  # fmt: skip
     """Gaps, relative velocities, Jacobians and velocity terms of the first ``active`` blocks.
@@ -270,47 +325,59 @@ def kinematics(geometry, active, q, qd, gap, gap_velocity, slip_velocity, rotati
 # --- the time history ---------------------------------------------------------------------------
 
 
-@nb.njit(cache=True)
+#: Work arrays of the kernels (kinematics and the held mode's solve), made by :func:`_work`;
+#: a few packed arrays, so that a call passes few arguments:
+#:
+#: - ``jacobian`` (2, B, 2, 3 B): the gap (``[0]``) and slip (``[1]``) rows of each
+#:   interface's left and right contact (only the columns of the interface's two
+#:   blocks are written; the others stay zero);
+#: - ``contact`` (6, B, 2), rows ``GAP``, ``GAP_VELOCITY``, ``SLIP_VELOCITY``,
+#:   ``GAP_BIAS``, ``SLIP_BIAS`` (the velocity terms b_n, b_t) of each contact and
+#:   ``FRICTION`` (kinetic coefficient, 0) of each interface in the held mode;
+#: - ``blockwise`` (4, B): ``ROTATION`` (relative rotation of each interface) and the
+#:   slide rates ``K2S``, ``K3S``, ``K4S`` of the RK4 stages;
+#: - ``vectors`` (10, 3 B): ``RHS``, ``COEFF``, ``FREE`` (free accelerations) and the
+#:   RK4 stages ``QS``, ``VS``, ``K2A``, ``K3A``, ``K4A``, ``K2V``, ``K3V``;
+#: - ``matrices`` (3, 3 B, 3 B): ``MATRIX``, ``ROWS`` (the held mode's equations) and
+#:   ``FORCE_G`` (M^-1 G of its unknowns).
+Work = namedtuple("Work", ("jacobian", "contact", "blockwise", "vectors", "matrices"))
+GAP, GAP_VELOCITY, SLIP_VELOCITY, GAP_BIAS, SLIP_BIAS, FRICTION = range(6)
+ROTATION, K2S, K3S, K4S = range(4)
+RHS, COEFF, FREE, QS, VS, K2A, K3A, K4A, K2V, K3V = range(10)
+MATRIX, ROWS, FORCE_G = range(3)
+
+
+@nb.njit(cache=True, _nrt=True)
 def _work(count):
-    """Work arrays of the kernels for a stack of ``count`` blocks."""
+    """The :data:`Work` arrays for a stack of ``count`` blocks."""
     n = 3 * count
-    return (
-        np.zeros((count, 2, n)),  # 0 jn
-        np.zeros((count, 2)),  # 1 bn
-        np.zeros((count, 2, n)),  # 2 jt
-        np.zeros((count, 2)),  # 3 bt
-        np.zeros((count, 2)),  # 4 gap
-        np.zeros((count, 2)),  # 5 gap velocity
-        np.zeros((count, 2)),  # 6 slip velocity
-        np.zeros(count),  # 7 rotation
-        np.zeros((4 * count, 4 * count)),  # 8 w
-        np.zeros(4 * count),  # 9 h
-        np.zeros((n, n)),  # 10 matrix
-        np.zeros(n),  # 11 rhs
-        np.zeros(n, dtype=np.int64),  # 12 index
-        np.zeros(n),  # 13 coeff
-        np.zeros(4 * count),  # 14 full
-        np.zeros(n),  # 15 free acceleration
-        np.zeros((count, 3)),  # 16 contact accelerations
-        np.zeros((count, 2)),  # 17 mu of the held mode (kinetic, 0)
-        np.zeros(n, dtype=np.int64),  # 18 kinds of the held mode's unknowns
-        np.zeros((10, n)),  # 19 RK4 stages
-        np.zeros((4, count)),  # 20 RK4 slide rates
-        np.zeros((n, n)),  # 21 rows of the held mode's equations
-        np.zeros((n, n)),  # 22 M^-1 G of the held mode's unknowns
+    return Work(
+        np.zeros((2, count, 2, n)),
+        np.zeros((6, count, 2)),
+        np.zeros((4, count)),
+        np.zeros((10, n)),
+        np.zeros((3, n, n)),
     )
 
 
-@nb.njit(cache=True)
-def _kin(model, active, q, qd, work):
-    geometry = model[0]
+@nb.njit(cache=True, inline="always", _nrt=False)
+def _kinematics_into(model, active, q, qd, work, first):
+    """:func:`kinematics` of the first ``active`` blocks into ``work``, from interface ``first``."""
+    contact = work.contact
     kinematics(
-        geometry, active, q, qd, work[4], work[5], work[6], work[7], work[0], work[1], work[2],
-        work[3],
+        model.geometry, active, q, qd, contact[GAP], contact[GAP_VELOCITY], contact[SLIP_VELOCITY],
+        work.blockwise[ROTATION], work.jacobian[0], contact[GAP_BIAS], work.jacobian[1],
+        contact[SLIP_BIAS], None, first,
     )  # fmt: skip
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
+def _kin(model, active, q, qd, work):
+    """:func:`kinematics` of the first ``active`` blocks into ``work``."""
+    _kinematics_into(model, active, q, qd, work, 0)
+
+
+@nb.njit(cache=True, _nrt=False)
 def _free_acceleration(model, active, a_h, a_v, gravity, out):
     for i in range(active):
         out[3 * i] = -a_h
@@ -318,77 +385,65 @@ def _free_acceleration(model, active, a_h, a_v, gravity, out):
         out[3 * i + 2] = 0.0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam, first=0):
     """Accelerations and forces of the held mode at a state; kinematics left in ``work``."""
     horizontal, vertical = exc
     a_h, a_v = _support(horizontal, vertical, params[P_EXC_DT], t)
-    geometry = model[0]
-    inverse_mass = model[1]
-    jn = work[0]
-    bn = work[1]
-    jt = work[2]
-    bt = work[3]
-    free = work[15]
+    free = work.vectors[FREE]
     effective_gravity = params[P_GRAVITY] - a_v
     for i in range(active):
         free[3 * i] = -a_h
         free[3 * i + 1] = -effective_gravity
         free[3 * i + 2] = 0.0
-    kinematics(
-        geometry, active, q, qd, work[4], work[5], work[6], work[7], jn, bn, jt, bt, None, first
-    )
-    return _held_solve(
-        active, inverse_mass, free, jn, bn, jt, bt, mode, work[17], work[21], work[22],
-        work[13], work[10], work[11], qdd, lam, first,
-    )  # fmt: skip
+    _kinematics_into(model, active, q, qd, work, first)
+    return _held_solve(active, model.masses[INVERSE_MASS], work, mode, qdd, lam, first)
 
 
-@nb.njit(cache=True, inline="always")
+@nb.njit(cache=True, inline="always", _nrt=False)
 def _reference(mode, i):
     return 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _slide_rate(active, mode, slip_velocity, out):
     for i in range(active):
         out[i] = slip_velocity[i, _reference(mode, i)]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _rk4(model, exc, params, active, t, q, qd, slide, h, mode, k1a, k1s, work, out_q, out_qd,
          out_slide, lam, first=0):  # fmt: skip
     """One RK4 step of the held mode from ``t`` over ``h``; False for a singular mode."""
     n = 3 * active
-    stages = work[19]
-    qs = stages[0]
-    vs = stages[1]
-    k2a = stages[2]
-    k3a = stages[3]
-    k4a = stages[4]
-    k2v = stages[5]
-    k3v = stages[6]
-    k2s = work[20][0]
-    k3s = work[20][1]
-    k4s = work[20][2]
+    qs = work.vectors[QS]
+    vs = work.vectors[VS]
+    k2a = work.vectors[K2A]
+    k3a = work.vectors[K3A]
+    k4a = work.vectors[K4A]
+    k2v = work.vectors[K2V]
+    k3v = work.vectors[K3V]
+    k2s = work.blockwise[K2S]
+    k3s = work.blockwise[K3S]
+    k4s = work.blockwise[K4S]
     for c in range(n):
         qs[c] = q[c] + 0.5 * h * qd[c]
         k2v[c] = qd[c] + 0.5 * h * k1a[c]
     if not _evaluate(model, exc, params, active, t + 0.5 * h, qs, k2v, mode, work, k2a, lam, first):
         return False
-    _slide_rate(active, mode, work[6], k2s)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], k2s)
     for c in range(n):
         qs[c] = q[c] + 0.5 * h * k2v[c]
         k3v[c] = qd[c] + 0.5 * h * k2a[c]
     if not _evaluate(model, exc, params, active, t + 0.5 * h, qs, k3v, mode, work, k3a, lam, first):
         return False
-    _slide_rate(active, mode, work[6], k3s)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], k3s)
     for c in range(n):
         qs[c] = q[c] + h * k3v[c]
         vs[c] = qd[c] + h * k3a[c]
     if not _evaluate(model, exc, params, active, t + h, qs, vs, mode, work, k4a, lam, first):
         return False
-    _slide_rate(active, mode, work[6], k4s)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], k4s)
     for c in range(n):
         out_q[c] = q[c] + h / 6.0 * (qd[c] + 2.0 * k2v[c] + 2.0 * k3v[c] + vs[c])
         out_qd[c] = qd[c] + h / 6.0 * (k1a[c] + 2.0 * k2a[c] + 2.0 * k3a[c] + k4a[c])
@@ -397,7 +452,7 @@ def _rk4(model, exc, params, active, t, q, qd, slide, h, mode, k1a, k1s, work, o
     return True
 
 
-@nb.njit(cache=True, inline="always")
+@nb.njit(cache=True, inline="always", _nrt=False)
 def _engaged(sliding, slide, tolerance):
     if sliding == 2:
         return slide >= -tolerance
@@ -406,18 +461,18 @@ def _engaged(sliding, slide, tolerance):
     return True
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _fired(model, params, active, mode, directions, lam, slide, work, found):
     """The earliest-priority event that fired at a state (kind, interface, contact) or kind -1.
 
     ``found`` (4,) int receives it, and the number of event conditions that hold.
     """
-    mu_s = model[3]
-    sliding_codes = model[5]
-    gap = work[4]
-    gap_velocity = work[5]
-    slip_velocity = work[6]
-    rotation = work[7]
+    mu_s = model.properties[MU_S]
+    sliding_codes = model.codes
+    gap = work.contact[GAP]
+    gap_velocity = work.contact[GAP_VELOCITY]
+    slip_velocity = work.contact[SLIP_VELOCITY]
+    rotation = work.blockwise[ROTATION]
     force_event = params[P_FORCE_EVENT]
     gap_event = params[P_GAP_EVENT]
     tol_slide = params[P_TOL_SLIDE]
@@ -474,7 +529,17 @@ def _fired(model, params, active, mode, directions, lam, slide, work, found):
     return found[0] >= 0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
+def _least_squares(rows, m, n, inverse_mass, values, out):
+    """``out[:m]``: the least-squares solution of ``(J M^-1 J^T) x = values`` (rank-deficient)."""
+    jac = rows[:m, :n].copy()
+    weighted = jac * inverse_mass[:n]
+    solution = np.linalg.lstsq(weighted @ jac.T, values[:m].copy())[0]
+    for r in range(m):
+        out[r] = solution[r]
+
+
+@nb.njit(cache=True, _nrt=False)
 def _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, out):
     """``out = M^-1 J^T (J M^-1 J^T)^-1 values``: the smallest correction in the mass metric.
 
@@ -518,11 +583,7 @@ def _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, out):
                     system[r, j] -= factor * system[p, j]
                 rhs[r] -= factor * rhs[p]
     if singular:
-        jac = rows[:m, :n].copy()
-        weighted = jac * inverse_mass[:n]
-        solution = np.linalg.lstsq(weighted @ jac.T, values[:m].copy())[0]
-        for r in range(m):
-            rhs[r] = solution[r]
+        _least_squares(rows, m, n, inverse_mass, values, rhs)
     else:
         for p in range(m - 1, -1, -1):
             total = rhs[p]
@@ -536,7 +597,7 @@ def _min_norm_correction(rows, m, n, inverse_mass, values, system, rhs, out):
         out[col] = inverse_mass[col] * total
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _project(model, active, q, qd, mode, work, fstate):
     """Put the closed contacts back on their surfaces (positions, then velocities).
 
@@ -544,12 +605,12 @@ def _project(model, active, q, qd, mode, work, fstate):
     velocities projected onto the closed normals and the sticking tangents.
     """
     n = 3 * active
-    inverse_mass = model[1]
-    rows = work[21]
-    values = work[11]
-    system = work[10]
-    rhs = work[13]
-    correction = work[15]
+    inverse_mass = model.masses[INVERSE_MASS]
+    rows = work.matrices[ROWS]
+    values = work.vectors[RHS]
+    system = work.matrices[MATRIX]
+    rhs = work.vectors[COEFF]
+    correction = work.vectors[FREE]
     for _ in range(3):
         _kin(model, active, q, qd, work)
         m = 0
@@ -558,8 +619,8 @@ def _project(model, active, q, qd, mode, work, fstate):
             for c in range(2):
                 if mode[i, c] == 1:
                     for col in range(n):
-                        rows[m, col] = work[0][i, c, col]
-                    values[m] = work[4][i, c]
+                        rows[m, col] = work.jacobian[0][i, c, col]
+                    values[m] = work.contact[GAP][i, c]
                     if -values[m] > fstate[F_MAX_PENETRATION]:
                         fstate[F_MAX_PENETRATION] = -values[m]
                     largest = max(largest, abs(values[m]))
@@ -579,12 +640,12 @@ def _project(model, active, q, qd, mode, work, fstate):
         for c in range(2):
             if mode[i, c] == 1:
                 for col in range(n):
-                    rows[m, col] = work[0][i, c, col]
+                    rows[m, col] = work.jacobian[0][i, c, col]
                 m += 1
         if mode[i, 2] == 1 and mode[i, 0] + mode[i, 1] > 0:
             reference = _reference(mode, i)
             for col in range(n):
-                rows[m, col] = work[2][i, reference, col]
+                rows[m, col] = work.jacobian[1][i, reference, col]
             m += 1
     if m == 0:
         return
@@ -598,17 +659,17 @@ def _project(model, active, q, qd, mode, work, fstate):
         qd[col] -= correction[col]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _lower_contact(gap, i):
     return 0 if gap[i, 0] <= gap[i, 1] else 1
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _needs_impact(model, params, active, slide, work):
-    sliding_codes = model[5]
-    gap = work[4]
-    gap_velocity = work[5]
-    slip_velocity = work[6]
+    sliding_codes = model.codes
+    gap = work.contact[GAP]
+    gap_velocity = work.contact[GAP_VELOCITY]
+    slip_velocity = work.contact[SLIP_VELOCITY]
     tol_gap = params[P_TOL_GAP]
     tol_vel = params[P_TOL_VEL]
     gap_event = params[P_GAP_EVENT]
@@ -628,10 +689,10 @@ def _needs_impact(model, params, active, slide, work):
     return False
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _into_stop(model, params, active, slide, work):
     """Whether a block at its engaged end stop still slides into it (kinematics in work)."""
-    sliding_codes = model[5]
+    sliding_codes = model.codes
     tol_vel = params[P_TOL_VEL]
     for i in range(active):
         code = sliding_codes[i]
@@ -639,35 +700,34 @@ def _into_stop(model, params, active, slide, work):
             continue
         if not _engaged(code, slide[i], params[P_TOL_SLIDE]):
             continue
-        slip = work[6][i, _lower_contact(work[4], i)]
+        slip = work.contact[SLIP_VELOCITY][i, _lower_contact(work.contact[GAP], i)]
         if (code == 2 and slip > tol_vel) or (code == 3 and slip < -tol_vel):
             return True
     return False
 
 
-@nb.njit(cache=True)
-def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_qd):
+@nb.njit(cache=True, _nrt=False)
+def _impact(model, params, active, q, qd, slide, allow_stick, work, problem, istate, out_qd):
     """Velocity jump of an impact (the contact problem at velocity level); count or 0.
 
     Returns the number of distinct admissible states (0: inconsistent). The
     post-impact velocity is written to ``out_qd``; then each interface that
     received an impulse has the velocity of its upper block relative to the
     body below multiplied by its restitution factor (1: the plastic law).
+    ``problem``: the :data:`Problem` work arrays.
     """
     n = 3 * active
-    mass = model[2]
-    mu_s = model[3]
-    mu_k = model[4]
-    sliding_codes = model[5]
-    restitution = model[6]
+    mass = model.masses[MASS]
+    sliding_codes = model.codes
+    restitution = model.properties[RESTITUTION]
     _kin(model, active, q, qd, work)
-    gap = work[4]
-    jn = work[0]
-    jt = work[2]
+    gap = work.contact[GAP]
+    jn = work.jacobian[0]
+    jt = work.jacobian[1]
     tol_gap = params[P_TOL_GAP]
     tol_vel = params[P_TOL_VEL]
-    bn = np.empty((active, 2))
-    bt = np.empty((active, 2))
+    bn = problem.terms[0]
+    bt = problem.terms[1]
     speed = tol_vel
     for i in range(active):
         for c in range(2):
@@ -679,9 +739,9 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
             bn[i, c] = vn
             bt[i, c] = vt
             speed = max(speed, abs(vn), abs(vt))
-    contact_active = np.empty((active, 2), dtype=np.bool_)
-    slip = np.zeros(active)
-    sliding = np.empty(active, dtype=np.int64)
+    contact_active = problem.contact_active
+    slip = problem.blockwise[P_SLIP]
+    sliding = problem.sliding
     total_mass = 0.0
     for i in range(active):
         total_mass += mass[3 * i]
@@ -693,7 +753,7 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
         if (code == 2 or code == 3) and not engaged:
             effective = 0
         sliding[i] = effective
-        s = work[6][i, _lower_contact(gap, i)]
+        s = work.contact[SLIP_VELOCITY][i, _lower_contact(gap, i)]
         direction = 1 if s > 0.0 else (-1 if s < 0.0 else 0)
         allows = (
             effective == 0
@@ -703,17 +763,15 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
         if allow_stick or abs(s) <= tol_vel or not allows:
             s = 0.0
         slip[i] = s
-    zero = np.zeros(n)
+    zero = problem.vectors[P_FREE]
+    for c in range(n):
+        zero[c] = 0.0
     tiny = np.finfo(np.float64).tiny
     force_tol = RELATIVE_TOLERANCE * max(total_mass * speed, tiny)
     accel_tol = RELATIVE_TOLERANCE * max(speed, tiny)
-    modes = np.empty((MAX_DISTINCT, active, 3), dtype=np.int64)
-    jumps = np.empty((MAX_DISTINCT, n))
-    impulses = np.empty((MAX_DISTINCT, active, 3))
-    count = solve_contact_problem(
-        active, model[1], zero, jn, bn, jt, bt, contact_active, slip, sliding, mu_s,
-        mu_k, force_tol, accel_tol, modes, jumps, impulses,
-    )  # fmt: skip
+    count = _solve_problem(model, active, zero, bn, bt, work, problem, force_tol, accel_tol)
+    jumps = problem.solutions
+    impulses = problem.forces
     istate[S_IMPACT_SOLVES] += 1
     if count == 0:
         return 0
@@ -729,7 +787,7 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
             break
     for c in range(n):
         out_qd[c] = qd[c] + jumps[chosen, c]
-    inverse_mass = model[1]
+    inverse_mass = model.masses[INVERSE_MASS]
     if kinetic_energy(inverse_mass, out_qd, n) > (1.0 + ENERGY_SLACK) * kinetic_energy(
         inverse_mass, qd, n
     ):
@@ -737,12 +795,12 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
         # did positive work: the velocity-level problem by the dissipative solver of the
         # time stepping instead (Coulomb at velocity level, T(v+) <= T(v-))
         _kin(model, active, q, qd, work)
-        low = np.empty(active)
-        high = np.empty(active)
+        low = problem.blockwise[P_LOW]
+        high = problem.blockwise[P_HIGH]
         _friction_bounds(model, params, active, slide, work, low, high)
-        normal = np.empty((active, 2))
-        tangential = np.empty((active, 2))
-        out_qd[:n] = qd[:n]
+        normal = problem.impulses[0]
+        tangential = problem.impulses[1]
+        _copy(out_qd, qd, n)
         impulse_step(active, inverse_mass, jn, jt, contact_active, low, high, out_qd, normal,
                      tangential)  # fmt: skip
         istate[S_DISSIPATIVE_IMPACTS] += 1
@@ -762,48 +820,67 @@ def _impact(model, params, active, q, qd, slide, allow_stick, work, istate, out_
     return count
 
 
-@nb.njit(cache=True)
-def _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, directions):
-    """Solve the contact problem at a state and set the mode to hold; count (0: none)."""
-    n = 3 * active
-    mass = model[2]
-    mu_s = model[3]
-    mu_k = model[4]
-    sliding_codes = model[5]
+@nb.njit(cache=True, _nrt=False)
+def _solve_problem(model, active, free, bn, bt, work, problem, force_tol, accel_tol):
+    """The contact kernel on the problem set up in ``problem`` (:data:`Problem`).
+
+    Free accelerations ``free``, velocity terms ``bn``, ``bt`` and the
+    kinematics in ``work``; the first :data:`MAX_DISTINCT` admissible states go
+    to ``problem.modes``, ``solutions``, ``forces``. Returns their count.
+    """
+    arguments = (
+        active, model.masses[INVERSE_MASS], free, work.jacobian[0], bn, work.jacobian[1], bt,
+        problem.contact_active, problem.blockwise[P_SLIP], problem.sliding,
+        model.properties[MU_S], model.properties[MU_K], force_tol, accel_tol, problem.modes,
+        problem.solutions, problem.forces, problem.accelerations, problem.index, problem.info,
+    )  # fmt: skip
+    count = solve_states_into(problem.contact, *arguments)
+    if count < 0:
+        # more admissible modes than the work arrays hold: the kernel's own arrays
+        count = solve_contact_states(*arguments)
+    return count
+
+
+@nb.njit(cache=True, _nrt=False)
+def _select(model, exc, params, active, t, q, qd, slide, work, problem, istate, mode,
+            directions):  # fmt: skip
+    """Solve the contact problem at a state and set the mode to hold; count (0: none).
+
+    ``problem``: the :data:`Problem` work arrays.
+    """
+    mass = model.masses[MASS]
+    sliding_codes = model.codes
     a_h, a_v = _support(exc[0], exc[1], params[P_EXC_DT], t)
     gravity = params[P_GRAVITY]
     _kin(model, active, q, qd, work)
-    gap = work[4]
+    gap = work.contact[GAP]
     tol_gap = params[P_TOL_GAP]
     tol_vel = params[P_TOL_VEL]
-    contact_active = np.empty((active, 2), dtype=np.bool_)
-    slip = np.zeros(active)
-    sliding = np.empty(active, dtype=np.int64)
+    contact_active = problem.contact_active
+    slip = problem.blockwise[P_SLIP]
+    sliding = problem.sliding
     total_mass = 0.0
     for i in range(active):
         total_mass += mass[3 * i]
         for c in range(2):
-            contact_active[i, c] = gap[i, c] <= tol_gap and work[5][i, c] <= tol_vel
+            closing = work.contact[GAP_VELOCITY][i, c]
+            contact_active[i, c] = gap[i, c] <= tol_gap and closing <= tol_vel
         code = sliding_codes[i]
-        s = work[6][i, _lower_contact(gap, i)]
+        s = work.contact[SLIP_VELOCITY][i, _lower_contact(gap, i)]
         if abs(s) <= tol_vel or code == 1:
             s = 0.0
         slip[i] = s
         engaged = _engaged(code, slide[i], params[P_TOL_SLIDE])
         sliding[i] = 0 if ((code == 2 or code == 3) and not engaged) else code
-    free = np.empty(n)
+    free = problem.vectors[P_FREE]
     _free_acceleration(model, active, a_h, a_v, gravity, free)
     scale = max(math.hypot(a_h, gravity - a_v), 1e-12)
     tiny = np.finfo(np.float64).tiny
     force_tol = RELATIVE_TOLERANCE * max(total_mass * scale, tiny)
     accel_tol = RELATIVE_TOLERANCE * max(scale, tiny)
-    modes = np.empty((MAX_DISTINCT, active, 3), dtype=np.int64)
-    qdds = np.empty((MAX_DISTINCT, n))
-    forces = np.empty((MAX_DISTINCT, active, 3))
-    count = solve_contact_problem(
-        active, model[1], free, work[0], work[1], work[2], work[3], contact_active, slip,
-        sliding, mu_s, mu_k, force_tol, accel_tol, modes, qdds, forces,
-    )  # fmt: skip
+    count = _solve_problem(model, active, free, work.contact[GAP_BIAS], work.contact[SLIP_BIAS],
+                           work, problem, force_tol, accel_tol)  # fmt: skip
+    modes = problem.modes
     istate[S_CONTACT_SOLVES] += 1
     if count == 0:
         return 0
@@ -820,36 +897,90 @@ def _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, dir
     return count
 
 
-@nb.njit(cache=True)
-def _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode, directions,
-            uplift, free_flight, result):  # fmt: skip
+@nb.njit(cache=True, _nrt=False)
+def _land(params, active, mode, work, problem):
+    """Close the contacts whose next flight stays within the gap tolerance; whether any.
+
+    After an impact, in the chosen state (``problem``: contact accelerations of
+    the first state; kinematics in ``work``), a contact of a rocking interface
+    (one contact closed) that touches (gap <= tolerance) and opens at ``v > 0``
+    while its gap accelerates back at ``a < 0`` rises by ``v^2 / (2 |a|)``:
+    when that is within the gap tolerance the flight, and every later one of
+    the Zeno sequence it starts (each lower than the last), is below the
+    engine's resolution of a gap. ``mode`` gets the contact closed.
+    """
+    tol_gap = params[P_TOL_GAP]
+    gap = work.contact[GAP]
+    gap_velocity = work.contact[GAP_VELOCITY]
+    landed = False
+    for i in range(active):
+        if mode[i, 0] + mode[i, 1] != 1:
+            continue
+        c = 1 if mode[i, 0] == 1 else 0
+        opening = gap_velocity[i, c]
+        falling = problem.accelerations[0, i, c]
+        if gap[i, c] <= tol_gap and opening > 0.0 and falling < 0.0:
+            if opening * opening <= -2.0 * falling * tol_gap:
+                mode[i, c] = 1
+                landed = True
+    return landed
+
+
+@nb.njit(cache=True, _nrt=False)
+def _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
+            directions, uplift, free_flight, result):  # fmt: skip
     """Impact if needed, then the mode to hold, then the projection.
 
     ``result`` (3,) int: [failure code, impact kind (0 none, IMPACT,
-    TANGENTIAL_IMPACT), solve count of the selection].
+    TANGENTIAL_IMPACT), solve count of the selection]; ``problem``: the
+    :data:`Problem` work arrays.
+
+    After an impact once the support no longer accelerates (``P_QUIET``), an
+    interface whose contact opens so slowly that it cannot rise beyond the gap
+    tolerance before it falls back (:func:`_land`) starts a Zeno sequence of
+    ever smaller impacts converging on rest: the sequence is summed, the
+    contact closed (:func:`_project`: onto both contacts, the relative velocity
+    removed in the mass metric, which never raises the kinetic energy) and the
+    mode chosen again.
     """
     result[0] = NO_FAILURE
     result[1] = 0
     result[2] = 0
     n = 3 * active
-    new_qd = np.empty(n)
+    new_qd = problem.vectors[P_NEW_QD]
     _kin(model, active, q, qd, work)
     if _needs_impact(model, params, active, slide, work):
-        if _impact(model, params, active, q, qd, slide, False, work, istate, new_qd) == 0:
+        if _impact(model, params, active, q, qd, slide, False, work, problem, istate, new_qd) == 0:
             result[0] = IMPACT_INCONSISTENT
             return
-        qd[:n] = new_qd
+        _copy(qd, new_qd, n)
         result[1] = IMPACT
-    count = _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, directions)
+    count = _select(
+        model, exc, params, active, t, q, qd, slide, work, problem, istate, mode, directions
+    )
+    if (
+        count > 0
+        and result[1] == IMPACT
+        and t >= params[P_QUIET]
+        and _land(params, active, mode, work, problem)
+    ):
+        # the rest of a Zeno sequence of impacts, summed: the interfaces land
+        _project(model, active, q, qd, mode, work, fstate)
+        istate[S_ZENO] += 1
+        count = _select(
+            model, exc, params, active, t, q, qd, slide, work, problem, istate, mode, directions
+        )
     if count == 0:
         # no consistent sliding state (Painleve-type): a tangential impact at
         # velocity level, in which the sliding contacts may stick
-        if _impact(model, params, active, q, qd, slide, True, work, istate, new_qd) == 0:
+        if _impact(model, params, active, q, qd, slide, True, work, problem, istate, new_qd) == 0:
             result[0] = CONTACT_INCONSISTENT
             return
-        qd[:n] = new_qd
+        _copy(qd, new_qd, n)
         result[1] = TANGENTIAL_IMPACT
-        count = _select(model, exc, params, active, t, q, qd, slide, work, istate, mode, directions)
+        count = _select(
+            model, exc, params, active, t, q, qd, slide, work, problem, istate, mode, directions
+        )
         if count == 0:
             result[0] = CONTACT_INCONSISTENT_AFTER
             return
@@ -858,12 +989,12 @@ def _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, m
     for i in range(active):
         closed = mode[i, 0] + mode[i, 1]
         if closed < 2:
-            uplift[i] = True
+            uplift[i] = 1.0
         if closed == 0 and i > 0:
-            free_flight[i] = True
+            free_flight[i] = 1.0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _motion_code(mode, i):
     closed = mode[i, 0] + mode[i, 1]
     sliding = mode[i, 2] >= 2
@@ -874,74 +1005,40 @@ def _motion_code(mode, i):
     return 4
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _overturned_after(model, params, active, qd, work):
     """Lowest block past its overturning angle that cannot come back (-1 if none)."""
-    geometry = model[0]
-    mass = model[2]
-    base = model[7]
+    geometry = model.geometry
+    mass = model.masses[MASS]
+    properties = model.properties
     gravity = params[P_GRAVITY]
     for i in range(active):
-        rotation = work[7][i]
+        rotation = work.blockwise[ROTATION][i]
         omega = qd[3 * i + 2] - (qd[3 * i - 1] if i else 0.0)
-        height = geometry[i, 1] - base[i, 2]
+        height = geometry[i, 1] - properties[BASE_LEVEL, i]
         if rotation > 0.0:
-            lever = geometry[i, 0] - base[i, 0]
+            lever = geometry[i, 0] - properties[BASE_LEFT, i]
             away = omega >= 0.0
         else:
-            lever = base[i, 1] - geometry[i, 0]
+            lever = properties[BASE_RIGHT, i] - geometry[i, 0]
             away = omega <= 0.0
         critical = math.atan2(lever, height)
         if abs(rotation) <= critical:
             continue
         radius = math.hypot(lever, height)
-        inertia = 1.0 / model[1][3 * i + 2] + mass[3 * i] * radius**2
+        inertia = 1.0 / model.masses[INVERSE_MASS][3 * i + 2] + mass[3 * i] * radius**2
         barrier = mass[3 * i] * gravity * radius * (1.0 - math.cos(abs(rotation) - critical))
         if away or 0.5 * inertia * omega**2 < barrier:
             return i
     return -1
 
 
-@nb.njit(cache=True)
-def _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight):
-    row = istate[S_ROWS]
-    rec_time, rec_q, rec_qd, rec_normal, rec_tangential, rec_rotation, rec_slide = rec
-    rec_time[row] = t
-    gap = work[4]
-    for i in range(count):
-        if i < active:
-            top = max(gap[i, 0], gap[i, 1])
-            low = min(gap[i, 0], gap[i, 1])
-            if top > max_lift[i]:
-                max_lift[i] = top
-            if low > max_flight[i]:
-                max_flight[i] = low
-            for c in range(3):
-                rec_q[row, i, c] = q[3 * i + c]
-                rec_qd[row, i, c] = qd[3 * i + c]
-            rec_normal[row, i, 0] = lam[i, 0]
-            rec_normal[row, i, 1] = lam[i, 1]
-            rec_tangential[row, i] = lam[i, 2]
-            rec_rotation[row, i] = work[7][i]
-            rec_slide[row, i] = slide[i]
-        else:
-            for c in range(3):
-                rec_q[row, i, c] = np.nan
-                rec_qd[row, i, c] = np.nan
-            rec_normal[row, i, 0] = np.nan
-            rec_normal[row, i, 1] = np.nan
-            rec_tangential[row, i] = np.nan
-            rec_rotation[row, i] = np.nan
-            rec_slide[row, i] = np.nan
-    istate[S_ROWS] = row + 1
-
-
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _event(t, kind, interface, contact, status, active_before, active_after, mode, qd_before,
            qd_after, count, ev, istate):  # fmt: skip
     """Append an event; motions of the first ``active_after`` blocks from ``mode``."""
     e = istate[S_EVENTS]
-    ev_time, ev_code, ev_motion, ev_before, ev_after = ev
+    ev_time, ev_code, ev_velocity = ev
     ev_time[e] = t
     ev_code[e, 0] = kind
     ev_code[e, 1] = interface
@@ -950,14 +1047,14 @@ def _event(t, kind, interface, contact, status, active_before, active_after, mod
     ev_code[e, 4] = active_before
     ev_code[e, 5] = active_after
     for i in range(count):
-        ev_motion[e, i] = _motion_code(mode, i) if i < active_after else 5
+        ev_code[e, EV_MOTIONS + i] = _motion_code(mode, i) if i < active_after else 5
         for c in range(3):
-            ev_before[e, i, c] = qd_before[3 * i + c] if i < active_before else np.nan
-            ev_after[e, i, c] = qd_after[3 * i + c] if i < active_after else np.nan
+            ev_velocity[e, 0, i, c] = qd_before[3 * i + c] if i < active_before else np.nan
+            ev_velocity[e, 1, i, c] = qd_after[3 * i + c] if i < active_after else np.nan
     istate[S_EVENTS] = e + 1
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _next_end(t, params, breaks, istate, h_cap):
     """End of the next step: the next break point after ``t``, or ``t + h_cap``, or the end."""
     end = params[P_END]
@@ -971,7 +1068,7 @@ def _next_end(t, params, breaks, istate, h_cap):
     return min(target, end)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _margin(model, params, mode, directions, lam, slide, work, kind, i, c):
     """Signed distance to an event's condition (positive: not fired), for locating it.
 
@@ -983,12 +1080,12 @@ def _margin(model, params, mode, directions, lam, slide, work, kind, i, c):
     if kind == LIFT_OFF:
         return lam[i, c] + params[P_FORCE_EVENT]
     if kind == IMPACT:
-        return work[4][i, c] + params[P_GAP_EVENT]
+        return work.contact[GAP][i, c] + params[P_GAP_EVENT]
     if kind == SLIP:
-        sliding = model[5][i]
+        sliding = model.codes[i]
         if (sliding == 2 or sliding == 3) and not _engaged(sliding, slide[i], params[P_TOL_SLIDE]):
             sliding = 0
-        limit = model[3][i] * (lam[i, 0] + lam[i, 1]) + params[P_FORCE_EVENT]
+        limit = model.properties[MU_S][i] * (lam[i, 0] + lam[i, 1]) + params[P_FORCE_EVENT]
         tangential = lam[i, 2]
         worst = -math.inf
         if sliding != 2:
@@ -997,16 +1094,16 @@ def _margin(model, params, mode, directions, lam, slide, work, kind, i, c):
             worst = max(worst, tangential)
         return limit - worst
     if kind == SLIP_STOP:
-        slip = work[6][i, _reference(mode, i)]
+        slip = work.contact[SLIP_VELOCITY][i, _reference(mode, i)]
         return directions[i] * slip + 1e-3 * params[P_TOL_VEL]
     if kind == STOP_IMPACT:
-        if model[5][i] == 2:
+        if model.codes[i] == 2:
             return params[P_TOL_SLIDE] - slide[i]
         return slide[i] + params[P_TOL_SLIDE]
-    return 0.5 * math.pi - abs(work[7][i])
+    return 0.5 * math.pi - abs(work.blockwise[ROTATION][i])
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _hermite(active, q0, v0, a0, s0, r0, q1, v1, a1, s1, r1, h, s, out_q, out_v, out_s):
     """State at ``s`` (fraction of the step) on the step's Hermite interpolants.
 
@@ -1044,7 +1141,7 @@ def _hermite(active, q0, v0, a0, s0, r0, q1, v1, a1, s1, r1, h, s, out_q, out_v,
         out_s[i] = c0 * s0[i] + c1 * h * r0[i] + c2 * h * r1[i] + c3 * s1[i]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _stuck_below(active, mode, qd):
     """Number of bottom blocks that stick to the support and do not move.
 
@@ -1066,7 +1163,7 @@ def _stuck_below(active, mode, qd):
     return first
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _at_rest(active, mode, qd):
     """Whether every interface sticks with both contacts closed and nothing moves."""
     for i in range(active):
@@ -1078,7 +1175,7 @@ def _at_rest(active, mode, qd):
     return True
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _rest_prepare(model, active, q, qd, mode, work, rest, qdd):
     """Forces of the rest mode for unit support loads, for :func:`_rest_forces`.
 
@@ -1090,21 +1187,14 @@ def _rest_prepare(model, active, q, qd, mode, work, rest, qdd):
     ``lam_0`` and the two differences; the kinematics stay in ``work``. Returns
     False for a singular mode.
     """
-    geometry = model[0]
-    kinematics(
-        geometry, active, q, qd, work[4], work[5], work[6], work[7], work[0], work[1], work[2],
-        work[3], None, 0,
-    )  # fmt: skip
-    free = work[15]
+    _kin(model, active, q, qd, work)
+    free = work.vectors[FREE]
     for load in range(3):
         for i in range(active):
             free[3 * i] = 1.0 if load == 1 else 0.0
             free[3 * i + 1] = 1.0 if load == 2 else 0.0
             free[3 * i + 2] = 0.0
-        if not _held_solve(
-            active, model[1], free, work[0], work[1], work[2], work[3], mode, work[17],
-            work[21], work[22], work[13], work[10], work[11], qdd, rest[load], 0,
-        ):  # fmt: skip
+        if not _held_solve(active, model.masses[INVERSE_MASS], work, mode, qdd, rest[load], 0):
             return False
     for load in (1, 2):
         for i in range(active):
@@ -1113,7 +1203,7 @@ def _rest_prepare(model, active, q, qd, mode, work, rest, qdd):
     return True
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _rest_forces(exc, params, active, t, rest, lam):
     """Forces of the rest mode at ``t`` from :func:`_rest_prepare`'s unit solutions."""
     a_h, a_v = _support(exc[0], exc[1], params[P_EXC_DT], t)
@@ -1127,7 +1217,7 @@ def _rest_forces(exc, params, active, t, rest, lam):
 # --- the remedy: a stretch of velocity-impulse time stepping ----------------------------------
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _friction_bounds(model, params, active, slide, work, low, high):
     """Bounds of each interface's tangential impulse over its normal one, for a step.
 
@@ -1135,11 +1225,11 @@ def _friction_bounds(model, params, active, slide, work, low, high):
     kinetic while it does; unbounded for ``sliding = "none"`` and, one way,
     at an engaged end stop (see :func:`time_stepping.impulse_step`).
     """
-    mu_s = model[3]
-    mu_k = model[4]
-    codes = model[5]
+    mu_s = model.properties[MU_S]
+    mu_k = model.properties[MU_K]
+    codes = model.codes
     for i in range(active):
-        slip = work[6][i, _lower_contact(work[4], i)]
+        slip = work.contact[SLIP_VELOCITY][i, _lower_contact(work.contact[GAP], i)]
         mu = mu_s[i] if abs(slip) <= params[P_TOL_VEL] else mu_k[i]
         low[i] = mu
         high[i] = mu
@@ -1153,7 +1243,7 @@ def _friction_bounds(model, params, active, slide, work, low, high):
             high[i] = UNBOUNDED_FRICTION
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
 def _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, directions, lam,
                fstate):  # fmt: skip
     """One Moreau-Jean step of ``h`` [s] (:mod:`freestand.core.dynamics.time_stepping`).
@@ -1164,7 +1254,7 @@ def _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, direc
     interface moves. Kinematics at the step's end are left in ``work``.
     """
     n = 3 * active
-    inverse_mass = model[1]
+    inverse_mass = model.masses[INVERSE_MASS]
     midpoint = np.empty(n)
     for k in range(n):
         midpoint[k] = q[k] + 0.5 * h * qd[k]
@@ -1183,18 +1273,18 @@ def _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, direc
         for c in range(2):
             approach = 0.0
             for k in range(n):
-                approach += work[0][i, c, k] * velocity[k]
-            closed[i, c] = work[4][i, c] + 0.5 * h * approach <= params[P_TOL_GAP]
+                approach += work.jacobian[0][i, c, k] * velocity[k]
+            closed[i, c] = work.contact[GAP][i, c] + 0.5 * h * approach <= params[P_TOL_GAP]
     normal = np.empty((active, 2))
     tangential = np.empty((active, 2))
-    ratio = impulse_step(active, inverse_mass, work[0], work[2], closed, low, high, velocity,
-                         normal, tangential)  # fmt: skip
+    ratio = impulse_step(active, inverse_mass, work.jacobian[0], work.jacobian[1], closed, low,
+                         high, velocity, normal, tangential)  # fmt: skip
     fstate[F_ENERGY_RATIO] = max(fstate[F_ENERGY_RATIO], ratio)
     for i in range(active):
-        reference = _lower_contact(work[4], i)
+        reference = _lower_contact(work.contact[GAP], i)
         slip = 0.0
         for k in range(n):
-            slip += work[2][i, reference, k] * velocity[k]
+            slip += work.jacobian[1][i, reference, k] * velocity[k]
         slide[i] += h * slip
         carried = 0
         for c in range(2):
@@ -1218,19 +1308,8 @@ def _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, direc
     _kin(model, active, q, qd, work)
 
 
-@nb.njit(cache=True)
-def _begin_stretch(cause, t, active, mode, qd, count, ev, istate):
-    """Switch to time stepping for a stretch, because of failure code ``cause``."""
-    istate[S_STEPPING] = 1
-    istate[S_STRETCH_STEPS] = 0
-    istate[S_STRETCHES] += 1
-    istate[S_REMEDY + cause] += 1
-    istate[S_STALLED] = 0
-    _event(t, TIME_STEPPING, -1, -1, 0, active, active, mode, qd, qd, count, ev, istate)
-
-
-@nb.njit(cache=True)
-def _try_resume(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
+@nb.njit(cache=True, _nrt=True)
+def _try_resume(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
                 directions, uplift, free_flight, settle, qdd, lam):  # fmt: skip
     """End the stretch if an event-driven mode is consistent at the state; whether it did.
 
@@ -1242,7 +1321,7 @@ def _try_resume(model, exc, params, active, t, q, qd, slide, work, istate, fstat
     slide_saved = slide[:active].copy()
     mode_saved = mode[:active].copy()
     directions_saved = directions[:active].copy()
-    _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
+    _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
             directions, uplift, free_flight, settle)  # fmt: skip
     if settle[0] == NO_FAILURE and _evaluate(model, exc, params, active, t, q, qd, mode, work,
                                              qdd, lam):  # fmt: skip
@@ -1257,7 +1336,7 @@ def _try_resume(model, exc, params, active, t, q, qd, slide, work, istate, fstat
     return False
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=False)
 def _overturn_blocks(t, index, active, flags, count):
     """Mark the blocks from ``index`` up overturned at ``t``."""
     for j in range(index, count):
@@ -1266,69 +1345,236 @@ def _overturn_blocks(t, index, active, flags, count):
             flags[3, j] = t
 
 
-@nb.njit(cache=True)
-def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, mode, directions,
-        istate, fstate, flags, rec, ev):  # fmt: skip
-    """Advance the simulation until the end, a failure, full buffers or ``chunk_end``.
+# --- the loop's state ---------------------------------------------------------------------------
 
-    Resumable: every piece of the loop's state lives in the arguments
-    (``q``, ``qd`` (3 B), ``slide`` (B), the held ``mode`` (B, 3) and
-    slide ``directions`` (B), ``istate``/``fstate`` counters, ``flags``
-    (uplift, free flight, overturned as floats, overturn time, max lift,
-    max flight: (6, B))). Returns the outcome code.
+
+@nb.njit(cache=True, _nrt=False)
+def _copy(destination, source, size):
+    """``destination[:size] = source[:size]`` for 1-D arrays."""
+    for k in range(size):
+        destination[k] = source[k]
+
+
+@nb.njit(cache=True, _nrt=False)
+def _copy_rows(destination, source, rows):
+    """``destination[:rows] = source[:rows]`` for 2-D arrays of the same width."""
+    for i in range(rows):
+        for c in range(destination.shape[1]):
+            destination[i, c] = source[i, c]
+
+
+@nb.njit(cache=True, _nrt=False)
+def _copy_state(q, qd, slide, q_from, qd_from, slide_from, active):
+    """Coordinates, rates (3 per block) and slides of the first ``active`` blocks."""
+    _copy(q, q_from, 3 * active)
+    _copy(qd, qd_from, 3 * active)
+    _copy(slide, slide_from, active)
+
+
+#: The simulation's state, kept by the caller between calls of :func:`run`:
+#: ``q``, ``qd`` (3 B) coordinates and rates, ``slide`` (B) each interface's
+#: slide, the held ``mode`` (B, 3) (left, right contact closed; tangential
+#: state) and slide ``directions`` (B), the ``istate`` (``S_*``) and ``fstate``
+#: (``F_*``, the time among them) vectors, and ``flags`` (6, B): uplift, free
+#: flight, overturned (0 or 1), overturning time [s], largest lift and
+#: largest flight gap [m].
+State = namedtuple("State", ("q", "qd", "slide", "mode", "directions", "istate", "fstate", "flags"))
+
+#: Scratch arrays of one call of :func:`run`, made by :func:`_loop_arrays`; a few
+#: packed arrays, so that a call passes few arguments:
+#:
+#: - ``vectors`` (10, 3 B): ``QDD`` the held mode's accelerations at the current
+#:   time; ``Q1``, ``QD1``, ``QDD1`` the end of the trial step (:func:`advance`),
+#:   then the state at the located event (:func:`locate`); ``QM``, ``QDM`` a trial
+#:   state inside the step; ``Q_END``, ``QD_END``, ``A_END`` the step's end for its
+#:   interpolant; ``BEFORE`` the rates before an event;
+#: - ``blockwise`` (5, B): ``RATES`` the slide rates at the current time, ``SLIDE1``,
+#:   ``SLIDE_M``, ``SLIDE_END``, ``RATE_END`` as the vectors above;
+#: - ``forces`` (8, B, 3) (normal at the left and right contact, tangential) [N]:
+#:   ``LAM`` the held mode's forces at the current time, ``LAM1`` at the trial step's
+#:   end, ``LAM_LO``, ``LAM_HI``, ``LAM_SAMPLE`` those of a rest segment at its sample
+#:   times, and from ``REST`` three rows: the rest mode's forces for unit support
+#:   loads (:func:`_rest_prepare`);
+#: - ``codes`` (4, 4) int: ``FOUND``, ``FOUND_M`` an event (kind, interface,
+#:   contact, number of event conditions that hold) at the step's end and at a trial
+#:   state; ``SETTLE`` the outcome of :func:`_settle`; ``STEP``: ``L_REST_READY``
+#:   (``REST`` holds the current rest's forces), ``L_RESTING`` (the step is a rest
+#:   segment), ``L_FIRST`` (the bottom blocks that stick to the support and are not
+#:   integrated).
+Loop = namedtuple("Loop", ("vectors", "blockwise", "forces", "codes"))
+QDD, Q1, QD1, QDD1, QM, QDM, Q_END, QD_END, A_END, BEFORE = range(10)
+RATES, SLIDE1, SLIDE_M, SLIDE_END, RATE_END = range(5)
+LAM, LAM1, LAM_LO, LAM_HI, LAM_SAMPLE, REST = range(6)
+FOUND, FOUND_M, SETTLE, STEP = range(4)
+L_REST_READY, L_RESTING, L_FIRST = range(3)
+
+
+@nb.njit(cache=True, _nrt=True)
+def _loop_arrays(count):
+    """The :data:`Loop` scratch arrays for a stack of ``count`` blocks."""
+    n = 3 * count
+    return Loop(
+        np.zeros((10, n)),
+        np.zeros((5, count)),
+        np.zeros((8, count, 3)),
+        np.zeros((4, 4), dtype=np.int64),
+    )
+
+
+#: Work arrays of the contact problem at events (:func:`_settle`, :func:`_impact`,
+#: :func:`_select`), made by :func:`_problem_arrays`:
+#:
+#: - ``contact``: the contact kernel's :data:`~freestand.core.contact.engine.ContactWork`;
+#: - ``terms`` (2, B, 2): the velocity terms b_n, b_t of the impact problem (the
+#:   contacts' relative velocities);
+#: - ``blockwise`` (3, B): ``P_SLIP`` each interface's slip velocity (0: static
+#:   friction), ``P_LOW``, ``P_HIGH`` its friction bounds in a dissipative impact;
+#: - ``contact_active`` (B, 2) bool, ``sliding`` (B) int: the problem's contacts and
+#:   effective sliding codes;
+#: - ``vectors`` (2, 3 B): ``P_FREE`` the free accelerations (zero in an impact),
+#:   ``P_NEW_QD`` the rates after an impact;
+#: - ``modes``, ``solutions``, ``forces``, ``accelerations``, ``index``, ``info``: the
+#:   kernel's first :data:`MAX_DISTINCT` admissible states;
+#: - ``impulses`` (2, B, 2): normal and tangential impulses of a dissipative impact.
+Problem = namedtuple(
+    "Problem",
+    (
+        "contact", "terms", "blockwise", "contact_active", "sliding", "vectors", "modes",
+        "solutions", "forces", "accelerations", "index", "info", "impulses",
+    ),
+)  # fmt: skip
+P_SLIP, P_LOW, P_HIGH = range(3)
+P_FREE, P_NEW_QD = range(2)
+#: Admissible modes the contact problem's work arrays hold (more: the kernel's own).
+PROBLEM_CAPACITY = 64
+
+
+@nb.njit(cache=True, _nrt=True)
+def _problem_arrays(count):
+    """The :data:`Problem` work arrays for a stack of ``count`` blocks."""
+    n = 3 * count
+    return Problem(
+        contact_work(count, PROBLEM_CAPACITY),
+        np.zeros((2, count, 2)),
+        np.zeros((3, count)),
+        np.zeros((count, 2), dtype=np.bool_),
+        np.zeros(count, dtype=np.int64),
+        np.zeros((2, n)),
+        np.zeros((MAX_DISTINCT, count, 3), dtype=np.int64),
+        np.zeros((MAX_DISTINCT, n)),
+        np.zeros((MAX_DISTINCT, count, 3)),
+        np.zeros((MAX_DISTINCT, count, 3)),
+        np.zeros(MAX_DISTINCT, dtype=np.int64),
+        np.zeros(INFO_SIZE, dtype=np.int64),
+        np.zeros((2, count, 2)),
+    )
+
+
+# --- record -------------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True, _nrt=False)
+def record(state, lam, work, rec):
+    """Store the state at its time as the next row of the history.
+
+    Reads ``state`` (time, coordinates, rates, slides, active blocks), the
+    forces ``lam`` (B, 3) and the relative rotations and gaps in ``work``
+    (kinematics of the state). Writes row ``istate[S_ROWS]`` of ``rec``
+    (time, q, qd, normal and tangential forces, relative rotation, slide;
+    NaN for overturned blocks), raises the largest lift and flight gaps in
+    ``flags[4]``, ``flags[5]`` and counts the row.
     """
-    count = model[0].shape[0]
-    work = _work(count)
-    n_full = 3 * count
-    lam = np.zeros((count, 3))
-    qdd = np.zeros(n_full)
-    qdd1 = np.zeros(n_full)
-    q1 = np.zeros(n_full)
-    qd1 = np.zeros(n_full)
-    slide1 = np.zeros(count)
-    qm = np.zeros(n_full)
-    qdm = np.zeros(n_full)
-    slide_m = np.zeros(count)
-    lam1 = np.zeros((count, 3))
-    lam2 = np.zeros((count, 3))
-    lam_lo = np.zeros((count, 3))
-    lam_hi = np.zeros((count, 3))
-    rates_s = np.zeros(count)
-    q_end = np.zeros(n_full)
-    qd_end = np.zeros(n_full)
-    a_end = np.zeros(n_full)
-    slide_end = np.zeros(count)
-    rate_end = np.zeros(count)
-    rest = np.zeros((3, count, 3))
-    rest_ready = False
-    found = np.zeros(4, dtype=np.int64)
-    found_m = np.zeros(4, dtype=np.int64)
-    settle = np.zeros(3, dtype=np.int64)
-    velocity_before = np.zeros(n_full)
-    uplift = np.zeros(count, dtype=np.bool_)
-    free_flight = np.zeros(count, dtype=np.bool_)
+    istate = state.istate
+    row = istate[S_ROWS]
+    active = istate[S_ACTIVE]
+    count = state.flags.shape[1]
+    max_lift = state.flags[4]
+    max_flight = state.flags[5]
+    rec_time, values = rec
+    rec_time[row] = state.fstate[F_TIME]
+    gap = work.contact[GAP]
     for i in range(count):
-        uplift[i] = flags[0, i] > 0.5
-        free_flight[i] = flags[1, i] > 0.5
-    max_lift = flags[4]
-    max_flight = flags[5]
-    rows_capacity = rec[0].shape[0]
-    events_capacity = ev[0].shape[0]
-    end = params[P_END]
-    time_tol = params[P_TIME_TOL]
-    exc_end = params[P_EXC_END]
+        if i < active:
+            top = max(gap[i, 0], gap[i, 1])
+            low = min(gap[i, 0], gap[i, 1])
+            if top > max_lift[i]:
+                max_lift[i] = top
+            if low > max_flight[i]:
+                max_flight[i] = low
+            for c in range(3):
+                values[row, i, R_Q + c] = state.q[3 * i + c]
+                values[row, i, R_QD + c] = state.qd[3 * i + c]
+            values[row, i, R_NORMAL] = lam[i, 0]
+            values[row, i, R_NORMAL + 1] = lam[i, 1]
+            values[row, i, R_TANGENTIAL] = lam[i, 2]
+            values[row, i, R_ROTATION] = work.blockwise[ROTATION][i]
+            values[row, i, R_SLIDE] = state.slide[i]
+        else:
+            for column in range(R_SIZE):
+                values[row, i, column] = np.nan
+    istate[S_ROWS] = row + 1
+
+
+@nb.njit(cache=True, _nrt=False)
+def _record_event(state, kind, interface, contact, status, active_before, qd_before, ev):
+    """Append an event at the state's time (:func:`_event`) with the held mode and rates."""
+    _event(state.fstate[F_TIME], kind, interface, contact, status, active_before,
+           state.istate[S_ACTIVE], state.mode, qd_before, state.qd, state.flags.shape[1], ev,
+           state.istate)  # fmt: skip
+
+
+@nb.njit(cache=True, _nrt=False)
+def _begin_stretch(cause, state, ev):
+    """Switch to time stepping for a stretch, because of failure code ``cause``.
+
+    Sets the stepping flags and counters of ``istate`` and records a
+    ``time-stepping`` event.
+    """
+    istate = state.istate
+    istate[S_STEPPING] = 1
+    istate[S_STRETCH_STEPS] = 0
+    istate[S_STRETCHES] += 1
+    istate[S_REMEDY + cause] += 1
+    istate[S_STALLED] = 0
+    active = istate[S_ACTIVE]
+    _record_event(state, TIME_STEPPING, -1, -1, 0, active, state.qd, ev)
+
+
+# --- start and stop -----------------------------------------------------------------------------
+
+
+@nb.njit(cache=True, inline="always", _nrt=False)
+def _start(model, exc, params, state, work, loop, problem, rec, ev):
+    """Start the simulation (first call) or pick it up where the last call stopped.
+
+    First call: the contact problem at the initial state (impact if needed,
+    the mode to hold, projection: :func:`_settle`), its forces, the first row
+    and the ``start`` event (and the impact's), or a stretch of time stepping
+    when no mode is consistent. Later calls: the kinematics (while time
+    stepping) or the held mode's forces and accelerations at the state.
+    Writes the forces ``LAM``, accelerations ``QDD`` and slide rates ``RATES`` of
+    :data:`Loop`; returns :data:`BUFFER_FULL` when the buffers cannot take the
+    first rows, else :data:`RUNNING`.
+    """
+    qdd = loop.vectors[QDD]
+    velocity_before = loop.vectors[BEFORE]
+    rates = loop.blockwise[RATES]
+    lam = loop.forces[LAM]
+    settle = loop.codes[SETTLE]
+    q, qd, slide, mode, directions, istate, fstate, flags = state
+    count = flags.shape[1]
     active = istate[S_ACTIVE]
     t = fstate[F_TIME]
     for i in range(count):
-        work[17][i, 0] = model[4][i]
-        work[17][i, 1] = 0.0
+        work.contact[FRICTION][i, 0] = model.properties[MU_K][i]
+        work.contact[FRICTION][i, 1] = 0.0
     if istate[S_STARTED] == 0:
-        if rows_capacity < 4 or events_capacity < 4:
+        if rec[0].shape[0] < 4 or ev[0].shape[0] < 4:
             return BUFFER_FULL
         istate[S_STARTED] = 1
-        velocity_before[:] = qd
-        _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
-                directions, uplift, free_flight, settle)  # fmt: skip
+        _copy(velocity_before, qd, qd.shape[0])
+        _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
+                directions, flags[0], flags[1], settle)  # fmt: skip
         cause = settle[0]
         status = 1 if settle[2] > 1 else 0
         if cause == NO_FAILURE and not _evaluate(model, exc, params, active, t, q, qd, mode,
@@ -1337,434 +1583,778 @@ def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, 
         if cause != NO_FAILURE:
             _kin(model, active, q, qd, work)
             lam[:] = 0.0
-        _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
-        _event(t, START, -1, -1, status, active, active, mode, velocity_before, qd, count, ev,
-               istate)  # fmt: skip
+        record(state, lam, work, rec)
+        _record_event(state, START, -1, -1, status, active, velocity_before, ev)
         if settle[1] != 0:
-            _event(t, settle[1], -1, -1, status, active, active, mode, velocity_before, qd,
-                   count, ev, istate)  # fmt: skip
+            _record_event(state, settle[1], -1, -1, status, active, velocity_before, ev)
         if cause != NO_FAILURE:
-            _begin_stretch(cause, t, active, mode, qd, count, ev, istate)
+            _begin_stretch(cause, state, ev)
     elif istate[S_STEPPING] == 1:
         _kin(model, active, q, qd, work)
     elif not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-        _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-    _slide_rate(active, mode, work[6], rates_s)
-    outcome = RUNNING
-    until_rest = params[P_UNTIL_REST] > 0.0
-    while active > 0 and t < end - 1e-12 * max(end, 1.0):
-        stepping = istate[S_STEPPING] == 1
-        if until_rest and not stepping and t >= exc_end and _at_rest(active, mode, qd):
-            # the excitation is over and every interface sticks closed with nothing
-            # moving: the stack stays at rest from here on
-            istate[S_AT_REST] = 1
-            break
-        if t >= chunk_end:
-            outcome = CHUNK_DONE
-            break
-        if istate[S_ROWS] + 4 > rows_capacity or istate[S_EVENTS] + 4 > events_capacity:
-            outcome = BUFFER_FULL
-            break
-        if stepping:
-            h = min(STEPPING_STEP, h_cap, end - t)
-            _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, directions,
-                       lam, fstate)  # fmt: skip
-            t += h
-            istate[S_STEPS] += 1
-            istate[S_STRETCH_STEPS] += 1
-            istate[S_STEPPED] += 1
-            fstate[F_STEPPED_TIME] += h
-            _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
-            for i in range(active):
-                if abs(work[7][i]) >= 0.5 * math.pi:
-                    velocity_before[: 3 * active] = qd[: 3 * active]
-                    _overturn_blocks(t, i, active, flags, count)
-                    _event(t, OVERTURN, i, -1, 0, active, i, mode, velocity_before, qd, count,
-                           ev, istate)  # fmt: skip
-                    active = i
-                    istate[S_ACTIVE] = active
-                    break
-            if active > 0 and istate[S_STRETCH_STEPS] >= STRETCH_STEPS:
-                velocity_before[: 3 * active] = qd[: 3 * active]
-                if _try_resume(model, exc, params, active, t, q, qd, slide, work, istate,
-                               fstate, mode, directions, uplift, free_flight, settle, qdd,
-                               lam):  # fmt: skip
-                    rest_ready = False
-                    _event(t, RESUME, -1, -1, 1 if settle[2] > 1 else 0, active, active, mode,
-                           velocity_before, qd, count, ev, istate)  # fmt: skip
-                    _slide_rate(active, mode, work[6], rates_s)
-                    _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift,
-                            max_flight)  # fmt: skip
-            continue
-        n = 3 * active
-        h = _next_end(t, params, breaks, istate, h_cap) - t
-        if h <= 1e-3 * time_tol:
-            h = h_cap
-        resting = _at_rest(active, mode, qd)
-        first = _stuck_below(active, mode, qd)
-        if resting:
-            # the whole stack moves with the support: nothing moves in its frame and the
-            # forces are affine in the support accelerations (_rest_prepare, once per
-            # rest), hence linear in time between two break points; only the end of
-            # the segment is evaluated
-            q1[:n] = q[:n]
-            qd1[:n] = qd[:n]
-            slide1[:active] = slide[:active]
-            if not rest_ready:
-                if not _rest_prepare(model, active, q, qd, mode, work, rest, qdd1):
-                    _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-                    continue
-                rest_ready = True
-            _rest_forces(exc, params, active, t + h, rest, lam1)
-            qdd1[:n] = 0.0
-        else:
-            rest_ready = False
-            if not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, qdd, rates_s,
-                        work, q1, qd1, slide1, lam1, first):  # fmt: skip
-                _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-                continue
-            if not _evaluate(model, exc, params, active, t + h, q1, qd1, mode, work, qdd1, lam1):
-                _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-                continue
-        if not _fired(model, params, active, mode, directions, lam1, slide1, work, found):
-            t += h
-            qdd[:n] = qdd1[:n]
-            q[:n] = q1[:n]
-            qd[:n] = qd1[:n]
-            slide[:active] = slide1[:active]
-            lam[:active] = lam1[:active]
-            _slide_rate(active, mode, work[6], rates_s)
-            istate[S_STEPS] += 1
-            drift = 0.0
-            for i in range(active):
-                for c in range(2):
-                    if mode[i, c] == 1:
-                        drift = max(drift, abs(work[4][i, c]))
-            if drift > 1e-3 * params[P_TOL_GAP]:
-                rest_ready = False
-                _project(model, active, q, qd, mode, work, fstate)
-                if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-                    _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-                    continue
-                _slide_rate(active, mode, work[6], rates_s)
-            _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
-            if t >= exc_end:
-                index = _overturned_after(model, params, active, qd, work)
-                if index >= 0:
-                    rest_ready = False
-                    velocity_before[:n] = qd[:n]
-                    _overturn_blocks(t, index, active, flags, count)
-                    _event(t, OVERTURN, index, -1, 0, active, index, mode, velocity_before,
-                           qd, count, ev, istate)  # fmt: skip
-                    active = index
-                    istate[S_ACTIVE] = active
-                    if active == 0:
-                        break
-                    velocity_before[: 3 * active] = qd[: 3 * active]
-                    _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate,
-                            mode, directions, uplift, free_flight, settle)  # fmt: skip
-                    if settle[0] != NO_FAILURE:
-                        _begin_stretch(settle[0], t, active, mode, qd, count, ev, istate)
-                        continue
-                    if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-                        _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-                        continue
-                    _slide_rate(active, mode, work[6], rates_s)
-            continue
-        # locate the earliest event to time_tol: a bracket [low, high] (not fired,
-        # fired) cut by the Illinois variant of regula falsi on the event's
-        # function (bisection while that function is not known on both sides)
-        low = 0.0
-        high = h
-        failed = False
-        if resting:
-            # the earliest crossing of a force margin: linear between the excitation's
-            # samples, so the segment is first narrowed to the samples around it
-            seg_lo = 0.0
-            seg_hi = h
-            lam_lo[:active] = lam[:active]
-            lam_hi[:active] = lam1[:active]
-            dt_exc = params[P_EXC_DT]
-            k_sample = math.floor(t / dt_exc + 1e-9) + 1
-            while k_sample * dt_exc < t + h - 1e-6 * time_tol:
-                tm = k_sample * dt_exc - t
-                _rest_forces(exc, params, active, t + tm, rest, lam2)
-                if _fired(model, params, active, mode, directions, lam2, slide, work, found_m):
-                    seg_hi = tm
-                    lam_hi[:active] = lam2[:active]
-                    break
-                seg_lo = tm
-                lam_lo[:active] = lam2[:active]
-                k_sample += 1
-            earliest = seg_hi
-            for i in range(active):
-                for kind in (LIFT_OFF, SLIP):
-                    for c in range(2 if kind == LIFT_OFF else 1):
-                        g1 = _margin(model, params, mode, directions, lam_hi, slide, work, kind,
-                                     i, c if kind == LIFT_OFF else -1)  # fmt: skip
-                        if g1 >= 0.0:
-                            continue
-                        g0 = _margin(model, params, mode, directions, lam_lo, slide, work, kind,
-                                     i, c if kind == LIFT_OFF else -1)  # fmt: skip
-                        crossing = seg_lo
-                        if g0 > 0.0:
-                            crossing = seg_lo + (seg_hi - seg_lo) * g0 / (g0 - g1)
-                        earliest = min(earliest, crossing)
-            low = max(0.0, earliest - time_tol)
-            high = min(h, earliest + time_tol)
-            located = False
-            if low > 0.0:
-                _rest_forces(exc, params, active, t + low, rest, lam1)
-                if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
-                    # the margins were not linear over the segment: search [0, low]
-                    high = low
-                    low = 0.0
-                    found[:] = found_m
-                    located = True
-            if not located and high < h:
-                _rest_forces(exc, params, active, t + high, rest, lam1)
-                if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
-                    # located to the tolerance; events crossing within it are taken as
-                    # simultaneous (reported by priority, as at a jump of the excitation)
-                    found[:] = found_m
-                    low = max(0.0, high - 0.5 * time_tol)
-                else:
-                    low = high
-                    high = h
-        if resting:
-            # a bracket of at most twice the tolerance: bisection
-            g_high = -1.0
-            g_low = math.nan
-        else:
-            g_high = _margin(model, params, mode, directions, lam1, slide1, work, found[0],
-                             found[1], found[2])  # fmt: skip
-            # the step's end, for the interpolant below
-            q_end[:n] = q1[:n]
-            qd_end[:n] = qd1[:n]
-            a_end[:n] = qdd1[:n]
-            slide_end[:active] = slide1[:active]
-            _slide_rate(active, mode, work[6], rate_end)
-            _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd1, lam1)
-            g_low = _margin(model, params, mode, directions, lam1, slide, work, found[0],
-                            found[1], found[2])  # fmt: skip
-            if g_low > 0.0 and g_high < 0.0:
-                # the event's time on the step's quintic Hermite interpolant (positions,
-                # velocities and accelerations at both ends): one evaluation per trial;
-                # then a bracket of true RK4 states around it, checked
-                a = 0.0
-                b = h
-                ga = g_low
-                gb = g_high
-                last = 0
-                # the margins of impacts, slip stops, stop impacts and overturning are
-                # kinematic: the held mode's forces are not needed to evaluate them,
-                # and an impact's gap has its rate at hand (Newton's step)
-                kinematic = found[0] != LIFT_OFF and found[0] != SLIP
-                impact = found[0] == IMPACT
-                newton = math.nan
-                # an open contact that still rises at the step's start comes down within
-                # it: bisection while the left end rises (regula falsi creeps there)
-                rising = impact and work[5][found[1], found[2]] >= 0.0
-                for _ in range(60):
-                    if b - a <= 0.1 * time_tol:
-                        break
-                    x = newton
-                    if not (x > a and x < b):
-                        if rising:
-                            x = 0.5 * (a + b)
-                        else:
-                            x = a + ga * (b - a) / (ga - gb)
-                    x = min(max(x, a + 0.01 * time_tol), b - 0.01 * time_tol)
-                    _hermite(active, q, qd, qdd, slide, rates_s, q_end, qd_end, a_end,
-                             slide_end, rate_end, h, x / h, qm, qdm, slide_m)  # fmt: skip
-                    if kinematic:
-                        _kin(model, active, qm, qdm, work)
-                    else:
-                        _evaluate(model, exc, params, active, t + x, qm, qdm, mode, work,
-                                  qdd1, lam1)  # fmt: skip
-                    gx = _margin(model, params, mode, directions, lam1, slide_m, work,
-                                 found[0], found[1], found[2])  # fmt: skip
-                    newton = math.nan
-                    if impact:
-                        rate = work[5][found[1], found[2]]
-                        if gx >= 0.0:
-                            rising = rate >= 0.0
-                        if rate < 0.0:
-                            newton = x - gx / rate
-                            if abs(newton - x) <= 0.01 * time_tol:
-                                # converged: the root within a hundredth of the tolerance
-                                a = max(a, newton - 0.05 * time_tol)
-                                b = min(b, newton + 0.05 * time_tol)
-                                break
-                    if gx < 0.0:
-                        b = x
-                        gb = gx
-                        if last == 1:
-                            ga *= 0.5
-                        last = 1
-                    else:
-                        a = x
-                        ga = gx
-                        if last == -1:
-                            gb *= 0.5
-                        last = -1
-                upper = min(h, b + 0.45 * time_tol)
-                lower = max(0.0, upper - 0.9 * time_tol)
-                if upper < high and lower > low:
-                    ok = _rk4(model, exc, params, active, t, q, qd, slide, upper, mode, qdd,
-                              rates_s, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
-                    ok = ok and _evaluate(model, exc, params, active, t + upper, qm, qdm,
-                                          mode, work, qdd1, lam1)  # fmt: skip
-                    if ok and _fired(model, params, active, mode, directions, lam1, slide_m,
-                                     work, found_m):  # fmt: skip
-                        high = upper
-                        q1[:n] = qm[:n]
-                        qd1[:n] = qdm[:n]
-                        slide1[:active] = slide_m[:active]
-                        if (found_m[0] != found[0] or found_m[1] != found[1]
-                                or found_m[2] != found[2]):  # fmt: skip
-                            g_low = math.nan
-                        found[:] = found_m
-                        g_high = _margin(model, params, mode, directions, lam1, slide_m, work,
-                                         found[0], found[1], found[2])  # fmt: skip
-                        rate = work[5][found[1], found[2]] if found[0] == IMPACT else 0.0
-                        if (
-                            found[3] == 1
-                            and rate < 0.0
-                            and (upper - g_high / rate >= lower + 0.05 * time_tol)
-                        ):
-                            # the impact alone fired, and its gap, closing at this rate, was
-                            # still open at ``lower`` (linear over the tolerance)
-                            low = lower
-                            g_low = g_high - rate * (upper - lower)
-                            ok = False
-                        else:
-                            ok = _rk4(model, exc, params, active, t, q, qd, slide, lower,
-                                      mode, qdd, rates_s, work, qm, qdm, slide_m, lam1,
-                                      first)  # fmt: skip
-                            ok = ok and _evaluate(model, exc, params, active, t + lower, qm,
-                                                  qdm, mode, work, qdd1, lam1)  # fmt: skip
-                        if ok and not _fired(model, params, active, mode, directions, lam1,
-                                             slide_m, work, found_m):  # fmt: skip
-                            low = lower
-                            g_low = _margin(model, params, mode, directions, lam1, slide_m,
-                                            work, found[0], found[1], found[2])  # fmt: skip
-                        elif ok:
-                            high = lower
-                            q1[:n] = qm[:n]
-                            qd1[:n] = qdm[:n]
-                            slide1[:active] = slide_m[:active]
-                            found[:] = found_m
-                            g_low = math.nan
-                    elif ok:
-                        low = upper
-                        g_low = _margin(model, params, mode, directions, lam1, slide_m, work,
-                                        found[0], found[1], found[2])  # fmt: skip
-        # what follows (RK4 states, the event's settling) leaves other kinematics in work
-        rest_ready = False
-        side = 0
-        while high - low > time_tol:
-            width = high - low
-            if g_low > 0.0 and g_high < 0.0:
-                middle = low + g_low * width / (g_low - g_high)
-                middle = min(max(middle, low + 0.01 * time_tol), high - 0.01 * time_tol)
-            else:
-                middle = 0.5 * (low + high)
-            if not _rk4(model, exc, params, active, t, q, qd, slide, middle, mode, qdd, rates_s,
-                        work, qm, qdm, slide_m, lam1, first):  # fmt: skip
-                failed = True
-                break
-            if not _evaluate(model, exc, params, active, t + middle, qm, qdm, mode, work, qdd1,
-                             lam1):  # fmt: skip
-                failed = True
-                break
-            if _fired(model, params, active, mode, directions, lam1, slide_m, work, found_m):
-                high = middle
-                q1[:n] = qm[:n]
-                qd1[:n] = qdm[:n]
-                slide1[:active] = slide_m[:active]
-                if found_m[0] != found[0] or found_m[1] != found[1] or found_m[2] != found[2]:
-                    g_low = math.nan  # another event: its function is not known at low
-                    side = 0
-                found[:] = found_m
-                g_high = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
-                                 found[1], found[2])  # fmt: skip
-                if side == 1:
-                    g_low *= 0.5
-                side = 1
-            else:
-                low = middle
-                g_low = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
-                                found[1], found[2])  # fmt: skip
-                if side == -1:
-                    g_high *= 0.5
-                side = -1
-        if failed:
-            _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-            continue
-        q[:n] = q1[:n]
-        qd[:n] = qd1[:n]
-        slide[:active] = slide1[:active]
-        t += high
-        istate[S_STEPS] += 1
-        if high <= 2.0 * time_tol:
-            istate[S_STALLED] += 1
-        else:
-            istate[S_STALLED] = 0
-        if istate[S_STALLED] > 50:
-            _begin_stretch(STALLED, t, active, mode, qd, count, ev, istate)
-            continue
-        # state at the event (kinematics and forces of the held mode)
-        _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam)
-        _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
-        kind = found[0]
-        interface = found[1]
-        contact = found[2]
-        velocity_before[:n] = qd[:n]
-        before = active
-        if kind == OVERTURN:
-            _overturn_blocks(t, interface, active, flags, count)
-            active = interface
-            istate[S_ACTIVE] = active
-            if active == 0:
-                _event(t, kind, interface, contact, 0, before, 0, mode, velocity_before, qd,
-                       count, ev, istate)  # fmt: skip
-                break
-        _settle(model, exc, params, active, t, q, qd, slide, work, istate, fstate, mode,
-                directions, uplift, free_flight, settle)  # fmt: skip
-        if settle[0] != NO_FAILURE:
-            _begin_stretch(settle[0], t, active, mode, qd, count, ev, istate)
-            continue
-        impacted = settle[1]
-        if impacted == TANGENTIAL_IMPACT or (
-            impacted != 0 and kind != IMPACT and kind != STOP_IMPACT and kind != OVERTURN
-        ):
-            kind = impacted
-        _event(t, kind, interface, contact, 1 if settle[2] > 1 else 0, before, active, mode,
-               velocity_before, qd, count, ev, istate)  # fmt: skip
-        if istate[S_EVENTS] > max_events:
-            istate[S_FAILURE] = TOO_MANY_EVENTS
-            outcome = FAILED
-            break
-        if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
-            _begin_stretch(SINGULAR_MODE, t, active, mode, qd, count, ev, istate)
-            continue
-        _slide_rate(active, mode, work[6], rates_s)
-        _record(active, count, t, q, qd, lam, slide, work, rec, istate, max_lift, max_flight)
+        _begin_stretch(SINGULAR_MODE, state, ev)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
+    return RUNNING
+
+
+@nb.njit(cache=True, inline="always", _nrt=False)
+def _stop(params, chunk_end, state, rows_capacity, events_capacity):
+    """Why the loop stops before its next step, or :data:`RUNNING` to go on.
+
+    :data:`COMPLETED` at the end time or once every block has overturned, and
+    with ``P_UNTIL_REST`` once the stack rests after the excitation (sets
+    ``S_AT_REST``); :data:`CHUNK_DONE` at ``chunk_end``; :data:`BUFFER_FULL`
+    when the history or event buffers cannot take the rows of one more step.
+    """
+    istate = state.istate
+    t = state.fstate[F_TIME]
+    active = istate[S_ACTIVE]
+    end = params[P_END]
+    if not (active > 0 and t < end - 1e-12 * max(end, 1.0)):
+        return COMPLETED
+    if (
+        params[P_UNTIL_REST] > 0.0
+        and istate[S_STEPPING] == 0
+        and t >= params[P_EXC_END]
+        and _at_rest(active, state.mode, state.qd)
+    ):
+        # the excitation is over and every interface sticks closed with nothing
+        # moving: the stack stays at rest from here on
+        istate[S_AT_REST] = 1
+        return COMPLETED
+    if t >= chunk_end:
+        return CHUNK_DONE
+    if istate[S_ROWS] + 4 > rows_capacity or istate[S_EVENTS] + 4 > events_capacity:
+        return BUFFER_FULL
+    return RUNNING
+
+
+# --- advance ------------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True, inline="always", _nrt=False)
+def advance(model, exc, params, breaks, h_cap, state, work, loop):
+    """One step of the held mode from the state's time ``t``: its length ``h`` [s], or -1.
+
+    The step ends at the next break point of the record, ``t + h_cap`` or
+    the end. At rest (every interface sticks closed, nothing moves) the step
+    is a rest segment: the state does not change in the support's frame and
+    the forces at its end come from the rest mode's unit solutions
+    (:func:`_rest_prepare`, once per rest; :func:`_rest_forces`). Otherwise one
+    RK4 step of the held mode (bottom blocks stuck to the support not
+    integrated: :func:`_stuck_below`) and the held mode's forces at its end.
+
+    Reads ``state`` and the accelerations ``QDD`` and slide rates ``RATES`` at
+    ``t`` (:data:`Loop`); writes the step's end to ``Q1``, ``QD1``, ``SLIDE1``,
+    ``LAM1``, ``QDD1`` (kinematics of the end in ``work``) and ``STEP`` (resting,
+    first integrated block, rest forces ready). The state is not changed.
+    Returns -1 when the held mode is singular.
+    """
+    qdd = loop.vectors[QDD]
+    q1 = loop.vectors[Q1]
+    qd1 = loop.vectors[QD1]
+    qdd1 = loop.vectors[QDD1]
+    rates = loop.blockwise[RATES]
+    slide1 = loop.blockwise[SLIDE1]
+    lam1 = loop.forces[LAM1]
+    rest = loop.forces[REST : REST + 3]
+    step = loop.codes[STEP]
+    q, qd, slide, mode, _, istate, fstate, _ = state
+    t = fstate[F_TIME]
+    active = istate[S_ACTIVE]
+    n = 3 * active
+    h = _next_end(t, params, breaks, istate, h_cap) - t
+    if h <= 1e-3 * params[P_TIME_TOL]:
+        h = h_cap
+    resting = _at_rest(active, mode, qd)
+    first = _stuck_below(active, mode, qd)
+    step[L_RESTING] = 1 if resting else 0
+    step[L_FIRST] = first
+    if resting:
+        # the whole stack moves with the support: nothing moves in its frame and the
+        # forces are affine in the support accelerations (_rest_prepare, once per
+        # rest), hence linear in time between two break points; only the end of
+        # the segment is evaluated
+        _copy_state(q1, qd1, slide1, q, qd, slide, active)
+        if step[L_REST_READY] == 0:
+            if not _rest_prepare(model, active, q, qd, mode, work, rest, qdd1):
+                return -1.0
+            step[L_REST_READY] = 1
+        _rest_forces(exc, params, active, t + h, rest, lam1)
+        qdd1[:n] = 0.0
+        return h
+    step[L_REST_READY] = 0
+    if not _rk4(model, exc, params, active, t, q, qd, slide, h, mode, qdd, rates,
+                work, q1, qd1, slide1, lam1, first):  # fmt: skip
+        return -1.0
+    if not _evaluate(model, exc, params, active, t + h, q1, qd1, mode, work, qdd1,
+                     lam1):  # fmt: skip
+        return -1.0
+    return h
+
+
+@nb.njit(cache=True, inline="always", _nrt=False)
+def _take_step(model, exc, params, h, state, work, loop, problem, rec, ev):
+    """Accept a step in which no event fired; an outcome code.
+
+    Moves the state to the step's end (``Q1``, ... of :data:`Loop`), puts the closed
+    contacts back on their surfaces when they drifted (:func:`_project`), records
+    the row and, after the excitation, lets a block past its overturning
+    angle fall (:func:`_overturn_after_excitation`).
+    """
+    qdd = loop.vectors[QDD]
+    q1 = loop.vectors[Q1]
+    qd1 = loop.vectors[QD1]
+    qdd1 = loop.vectors[QDD1]
+    rates = loop.blockwise[RATES]
+    slide1 = loop.blockwise[SLIDE1]
+    lam = loop.forces[LAM]
+    lam1 = loop.forces[LAM1]
+    step = loop.codes[STEP]
+    q, qd, slide, mode, _, istate, fstate, _ = state
+    active = istate[S_ACTIVE]
+    n = 3 * active
+    t = fstate[F_TIME] + h
     fstate[F_TIME] = t
-    istate[S_ACTIVE] = active
-    for i in range(count):
-        flags[0, i] = 1.0 if uplift[i] else 0.0
-        flags[1, i] = 1.0 if free_flight[i] else 0.0
-    if outcome == RUNNING:
-        outcome = COMPLETED
+    _copy(qdd, qdd1, n)
+    _copy_state(q, qd, slide, q1, qd1, slide1, active)
+    _copy_rows(lam, lam1, active)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
+    istate[S_STEPS] += 1
+    drift = 0.0
+    for i in range(active):
+        for c in range(2):
+            if mode[i, c] == 1:
+                drift = max(drift, abs(work.contact[GAP][i, c]))
+    if drift > 1e-3 * params[P_TOL_GAP]:
+        step[L_REST_READY] = 0
+        _project(model, active, q, qd, mode, work, fstate)
+        if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
+            _begin_stretch(SINGULAR_MODE, state, ev)
+            return RUNNING
+        _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
+    record(state, lam, work, rec)
+    if t >= params[P_EXC_END]:
+        return _overturn_after_excitation(model, exc, params, state, work, loop, problem, ev)
+    return RUNNING
+
+
+@nb.njit(cache=True, inline="always", _nrt=False)
+def advance_stretch(model, exc, params, h_cap, state, work, loop):
+    """One step of the time-stepping remedy (:func:`_time_step`, ``STEPPING_STEP``).
+
+    Advances the state (time, coordinates, rates, slides; the mode and
+    directions of the contacts that carried an impulse) and the stepping
+    counters; ``LAM`` (:data:`Loop`) receives the step's mean contact forces, ``work``
+    the kinematics at its end.
+    """
+    lam = loop.forces[LAM]
+    q, qd, slide, mode, directions, istate, fstate, _ = state
+    t = fstate[F_TIME]
+    h = min(STEPPING_STEP, h_cap, params[P_END] - t)
+    _time_step(model, exc, params, istate[S_ACTIVE], t, h, q, qd, slide, work, mode, directions,
+               lam, fstate)  # fmt: skip
+    fstate[F_TIME] = t + h
+    istate[S_STEPS] += 1
+    istate[S_STRETCH_STEPS] += 1
+    istate[S_STEPPED] += 1
+    fstate[F_STEPPED_TIME] += h
+
+
+# --- locate -------------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True, _nrt=False)
+def _bracket_at_rest(model, exc, params, h, state, work, loop):
+    """Bracket (low, high) [s from t] of the earliest event of a rest segment.
+
+    At rest only force margins can cross (lift-off, slip); they are linear
+    between the excitation's samples, so the segment is first narrowed to
+    the samples around the first that fires, then the crossing interpolated
+    and checked on both sides within the time tolerance. Writes the event
+    that fires to ``FOUND`` (:data:`Loop`) when a check finds it.
+    """
+    lam = loop.forces[LAM]
+    lam1 = loop.forces[LAM1]
+    found = loop.codes[FOUND]
+    found_m = loop.codes[FOUND_M]
+    lam_hi = loop.forces[LAM_HI]
+    lam_lo = loop.forces[LAM_LO]
+    lam_sample = loop.forces[LAM_SAMPLE]
+    rest = loop.forces[REST : REST + 3]
+    _, _, slide, mode, directions, istate, fstate, _ = state
+    t = fstate[F_TIME]
+    active = istate[S_ACTIVE]
+    time_tol = params[P_TIME_TOL]
+    seg_lo = 0.0
+    seg_hi = h
+    _copy_rows(lam_lo, lam, active)
+    _copy_rows(lam_hi, lam1, active)
+    dt_exc = params[P_EXC_DT]
+    k_sample = math.floor(t / dt_exc + 1e-9) + 1
+    while k_sample * dt_exc < t + h - 1e-6 * time_tol:
+        tm = k_sample * dt_exc - t
+        _rest_forces(exc, params, active, t + tm, rest, lam_sample)
+        if _fired(model, params, active, mode, directions, lam_sample, slide, work, found_m):
+            seg_hi = tm
+            _copy_rows(lam_hi, lam_sample, active)
+            break
+        seg_lo = tm
+        _copy_rows(lam_lo, lam_sample, active)
+        k_sample += 1
+    earliest = seg_hi
+    for i in range(active):
+        for kind in (LIFT_OFF, SLIP):
+            for c in range(2 if kind == LIFT_OFF else 1):
+                g1 = _margin(model, params, mode, directions, lam_hi, slide, work, kind, i,
+                             c if kind == LIFT_OFF else -1)  # fmt: skip
+                if g1 >= 0.0:
+                    continue
+                g0 = _margin(model, params, mode, directions, lam_lo, slide, work, kind, i,
+                             c if kind == LIFT_OFF else -1)  # fmt: skip
+                crossing = seg_lo
+                if g0 > 0.0:
+                    crossing = seg_lo + (seg_hi - seg_lo) * g0 / (g0 - g1)
+                earliest = min(earliest, crossing)
+    low = max(0.0, earliest - time_tol)
+    high = min(h, earliest + time_tol)
+    if low > 0.0:
+        _rest_forces(exc, params, active, t + low, rest, lam1)
+        if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
+            # the margins were not linear over the segment: search [0, low]
+            _copy(found, found_m, 4)
+            return 0.0, low
+    if high < h:
+        _rest_forces(exc, params, active, t + high, rest, lam1)
+        if _fired(model, params, active, mode, directions, lam1, slide, work, found_m):
+            # located to the tolerance; events crossing within it are taken as
+            # simultaneous (reported by priority, as at a jump of the excitation)
+            _copy(found, found_m, 4)
+            return max(0.0, high - 0.5 * time_tol), high
+        return high, h
+    return low, high
+
+
+@nb.njit(cache=True, _nrt=False)
+def _bracket_on_interpolant(model, exc, params, h, state, work, loop):
+    """Bracket (low, high, g_low, g_high) of the earliest event of an RK4 step.
+
+    The event's function (:func:`_margin`) is followed on the step's quintic
+    Hermite interpolant (positions, velocities and accelerations at both
+    ends; one evaluation per trial) by the Illinois variant of regula falsi,
+    with Newton steps on an impact's gap and bisection while an open contact
+    still rises; then a bracket of true RK4 states around the root, checked.
+    ``g_low``, ``g_high``: the function at the bracket's ends (NaN where not
+    known). Reads the step's end in ``Q1``, ... and the event in ``FOUND``
+    (:data:`Loop`); a checked RK4 state that fires replaces them.
+    """
+    qdd = loop.vectors[QDD]
+    q1 = loop.vectors[Q1]
+    qd1 = loop.vectors[QD1]
+    qdd1 = loop.vectors[QDD1]
+    qm = loop.vectors[QM]
+    qdm = loop.vectors[QDM]
+    q_end = loop.vectors[Q_END]
+    qd_end = loop.vectors[QD_END]
+    a_end = loop.vectors[A_END]
+    rates = loop.blockwise[RATES]
+    slide1 = loop.blockwise[SLIDE1]
+    slide_m = loop.blockwise[SLIDE_M]
+    slide_end = loop.blockwise[SLIDE_END]
+    rate_end = loop.blockwise[RATE_END]
+    lam1 = loop.forces[LAM1]
+    step = loop.codes[STEP]
+    found = loop.codes[FOUND]
+    found_m = loop.codes[FOUND_M]
+    q, qd, slide, mode, directions, istate, fstate, _ = state
+    t = fstate[F_TIME]
+    active = istate[S_ACTIVE]
+    n = 3 * active
+    time_tol = params[P_TIME_TOL]
+    first = step[L_FIRST]
+    q1, qd1, slide1, lam1, qdd1 = (
+        q1,
+        qd1,
+        slide1,
+        lam1,
+        qdd1,
+    )
+    qm, qdm, slide_m = qm, qdm, slide_m
+    low = 0.0
+    high = h
+    g_high = _margin(model, params, mode, directions, lam1, slide1, work, found[0], found[1],
+                     found[2])  # fmt: skip
+    # the step's end, for the interpolant below
+    _copy_state(
+        q_end,
+        qd_end,
+        slide_end,
+        q1,
+        qd1,
+        slide1,
+        active,
+    )
+    _copy(a_end, qdd1, n)
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rate_end)
+    _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd1, lam1)
+    g_low = _margin(model, params, mode, directions, lam1, slide, work, found[0], found[1],
+                    found[2])  # fmt: skip
+    if not (g_low > 0.0 and g_high < 0.0):
+        return low, high, g_low, g_high
+    # the event's time on the step's quintic Hermite interpolant (positions,
+    # velocities and accelerations at both ends): one evaluation per trial;
+    # then a bracket of true RK4 states around it, checked
+    a = 0.0
+    b = h
+    ga = g_low
+    gb = g_high
+    last = 0
+    # the margins of impacts, slip stops, stop impacts and overturning are
+    # kinematic: the held mode's forces are not needed to evaluate them,
+    # and an impact's gap has its rate at hand (Newton's step)
+    kinematic = found[0] != LIFT_OFF and found[0] != SLIP
+    impact = found[0] == IMPACT
+    newton = math.nan
+    # an open contact that still rises at the step's start comes down within
+    # it: bisection while the left end rises (regula falsi creeps there)
+    rising = impact and work.contact[GAP_VELOCITY][found[1], found[2]] >= 0.0
+    for _ in range(60):
+        if b - a <= 0.1 * time_tol:
+            break
+        x = newton
+        if not (x > a and x < b):
+            if rising:
+                x = 0.5 * (a + b)
+            else:
+                x = a + ga * (b - a) / (ga - gb)
+        x = min(max(x, a + 0.01 * time_tol), b - 0.01 * time_tol)
+        _hermite(active, q, qd, qdd, slide, rates, q_end, qd_end, a_end,
+                 slide_end, rate_end, h, x / h, qm, qdm, slide_m)  # fmt: skip
+        if kinematic:
+            _kin(model, active, qm, qdm, work)
+        else:
+            _evaluate(model, exc, params, active, t + x, qm, qdm, mode, work, qdd1, lam1)
+        gx = _margin(model, params, mode, directions, lam1, slide_m, work, found[0], found[1],
+                     found[2])  # fmt: skip
+        newton = math.nan
+        if impact:
+            rate = work.contact[GAP_VELOCITY][found[1], found[2]]
+            if gx >= 0.0:
+                rising = rate >= 0.0
+            if rate < 0.0:
+                newton = x - gx / rate
+                if abs(newton - x) <= 0.01 * time_tol:
+                    # converged: the root within a hundredth of the tolerance
+                    a = max(a, newton - 0.05 * time_tol)
+                    b = min(b, newton + 0.05 * time_tol)
+                    break
+        if gx < 0.0:
+            b = x
+            gb = gx
+            if last == 1:
+                ga *= 0.5
+            last = 1
+        else:
+            a = x
+            ga = gx
+            if last == -1:
+                gb *= 0.5
+            last = -1
+    upper = min(h, b + 0.45 * time_tol)
+    lower = max(0.0, upper - 0.9 * time_tol)
+    if not (upper < high and lower > low):
+        return low, high, g_low, g_high
+    ok = _rk4(model, exc, params, active, t, q, qd, slide, upper, mode, qdd, rates,
+              work, qm, qdm, slide_m, lam1, first)  # fmt: skip
+    ok = ok and _evaluate(model, exc, params, active, t + upper, qm, qdm, mode, work, qdd1, lam1)
+    if ok and _fired(model, params, active, mode, directions, lam1, slide_m, work, found_m):
+        high = upper
+        _copy_state(q1, qd1, slide1, qm, qdm, slide_m, active)
+        if found_m[0] != found[0] or found_m[1] != found[1] or found_m[2] != found[2]:
+            g_low = math.nan
+        _copy(found, found_m, 4)
+        g_high = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
+                         found[1], found[2])  # fmt: skip
+        rate = work.contact[GAP_VELOCITY][found[1], found[2]] if found[0] == IMPACT else 0.0
+        if found[3] == 1 and rate < 0.0 and (upper - g_high / rate >= lower + 0.05 * time_tol):
+            # the impact alone fired, and its gap, closing at this rate, was
+            # still open at ``lower`` (linear over the tolerance)
+            low = lower
+            g_low = g_high - rate * (upper - lower)
+            ok = False
+        else:
+            ok = _rk4(model, exc, params, active, t, q, qd, slide, lower, mode, qdd,
+                      rates, work, qm, qdm, slide_m, lam1, first)  # fmt: skip
+            ok = ok and _evaluate(model, exc, params, active, t + lower, qm, qdm, mode, work,
+                                  qdd1, lam1)  # fmt: skip
+        if ok and not _fired(model, params, active, mode, directions, lam1, slide_m, work,
+                             found_m):  # fmt: skip
+            low = lower
+            g_low = _margin(model, params, mode, directions, lam1, slide_m, work, found[0],
+                            found[1], found[2])  # fmt: skip
+        elif ok:
+            high = lower
+            _copy_state(q1, qd1, slide1, qm, qdm, slide_m, active)
+            _copy(found, found_m, 4)
+            g_low = math.nan
+    elif ok:
+        low = upper
+        g_low = _margin(model, params, mode, directions, lam1, slide_m, work, found[0], found[1],
+                        found[2])  # fmt: skip
+    return low, high, g_low, g_high
+
+
+@nb.njit(cache=True, inline="always", _nrt=False)
+def locate(model, exc, params, h, state, work, loop):
+    """Time [s from t] of the earliest event of the step, to the time tolerance; -1 if singular.
+
+    An event fired at the step's end (``FOUND`` of :data:`Loop`). A bracket [low, high]
+    (not fired, fired) is found on the step's interpolant
+    (:func:`_bracket_on_interpolant`) or, for a rest segment, between the
+    excitation's samples (:func:`_bracket_at_rest`), then cut to the time
+    tolerance on true RK4 states by the Illinois variant of regula falsi on the
+    event's function (bisection while that function is not known on both
+    sides). Writes the state at the event (the first RK4 state found to fire,
+    at ``high``) to ``Q1``, ``QD1``, ``SLIDE1`` and the event to ``FOUND``; the
+    state itself is not changed.
+    """
+    qdd = loop.vectors[QDD]
+    q1 = loop.vectors[Q1]
+    qd1 = loop.vectors[QD1]
+    qdd1 = loop.vectors[QDD1]
+    qm = loop.vectors[QM]
+    qdm = loop.vectors[QDM]
+    rates = loop.blockwise[RATES]
+    slide1 = loop.blockwise[SLIDE1]
+    slide_m = loop.blockwise[SLIDE_M]
+    lam1 = loop.forces[LAM1]
+    step = loop.codes[STEP]
+    found = loop.codes[FOUND]
+    trial = loop.codes[FOUND_M]
+    if step[L_RESTING] == 1:
+        low, high = _bracket_at_rest(model, exc, params, h, state, work, loop)
+        # a bracket of at most twice the tolerance: bisection
+        g_high = -1.0
+        g_low = math.nan
+    else:
+        low, high, g_low, g_high = _bracket_on_interpolant(model, exc, params, h, state, work,
+                                                           loop)  # fmt: skip
+    # what follows (RK4 states, the event's settling) leaves other kinematics in work
+    step[L_REST_READY] = 0
+    q, qd, slide, mode, directions, istate, fstate, _ = state
+    t = fstate[F_TIME]
+    active = istate[S_ACTIVE]
+    time_tol = params[P_TIME_TOL]
+    side = 0
+    while high - low > time_tol:
+        width = high - low
+        if g_low > 0.0 and g_high < 0.0:
+            middle = low + g_low * width / (g_low - g_high)
+            middle = min(max(middle, low + 0.01 * time_tol), high - 0.01 * time_tol)
+        else:
+            middle = 0.5 * (low + high)
+        if not _rk4(model, exc, params, active, t, q, qd, slide, middle, mode, qdd,
+                    rates, work, qm, qdm, slide_m, lam1,
+                    step[L_FIRST]):  # fmt: skip
+            return -1.0
+        if not _evaluate(model, exc, params, active, t + middle, qm, qdm, mode, work,
+                         qdd1, lam1):  # fmt: skip
+            return -1.0
+        if _fired(
+            model,
+            params,
+            active,
+            mode,
+            directions,
+            lam1,
+            slide_m,
+            work,
+            trial,
+        ):
+            high = middle
+            _copy_state(
+                q1,
+                qd1,
+                slide1,
+                qm,
+                qdm,
+                slide_m,
+                active,
+            )
+            if trial[0] != found[0] or trial[1] != found[1] or trial[2] != found[2]:
+                g_low = math.nan  # another event: its function is not known at low
+                side = 0
+            _copy(found, trial, 4)
+            g_high = _margin(model, params, mode, directions, lam1, slide_m, work,
+                             found[0], found[1], found[2])  # fmt: skip
+            if side == 1:
+                g_low *= 0.5
+            side = 1
+        else:
+            low = middle
+            g_low = _margin(model, params, mode, directions, lam1, slide_m, work,
+                            found[0], found[1], found[2])  # fmt: skip
+            if side == -1:
+                g_high *= 0.5
+            side = -1
+    return high
+
+
+# --- resolve ------------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True, inline="always", _nrt=False)
+def resolve(model, exc, params, max_events, h, state, work, loop, problem, rec, ev):
+    """Move to the located event ``h`` [s] after t and resolve it; an outcome code.
+
+    The state moves to the event (``Q1``, ... of :data:`Loop`; :func:`locate`), which is
+    recorded; an overturned block and those above it leave the stack; then the
+    impact if one is needed, the next contact mode and the projection onto the
+    closed contacts (:func:`_settle`), the event, and the new mode's forces,
+    recorded. Remedies: where events repeat without progress (more than 50
+    steps of at most twice the time tolerance), no mode is consistent or the
+    new mode is singular, a stretch of time stepping begins
+    (:func:`_begin_stretch`). Returns :data:`COMPLETED` when every block has
+    overturned, :data:`FAILED` after more than ``max_events`` events, else
+    :data:`RUNNING`.
+    """
+    qdd = loop.vectors[QDD]
+    q1 = loop.vectors[Q1]
+    qd1 = loop.vectors[QD1]
+    rates = loop.blockwise[RATES]
+    slide1 = loop.blockwise[SLIDE1]
+    lam = loop.forces[LAM]
+    found = loop.codes[FOUND]
+    settle = loop.codes[SETTLE]
+    velocity_before = loop.vectors[BEFORE]
+    q, qd, slide, mode, directions, istate, fstate, flags = state
+    active = istate[S_ACTIVE]
+    count = flags.shape[1]
+    n = 3 * active
+    _copy_state(q, qd, slide, q1, qd1, slide1, active)
+    t = fstate[F_TIME] + h
+    fstate[F_TIME] = t
+    istate[S_STEPS] += 1
+    if h <= 2.0 * params[P_TIME_TOL]:
+        istate[S_STALLED] += 1
+    else:
+        istate[S_STALLED] = 0
+    if istate[S_STALLED] > 50:
+        _begin_stretch(STALLED, state, ev)
+        return RUNNING
+    # state at the event (kinematics and forces of the held mode)
+    _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam)
+    record(state, lam, work, rec)
+    kind = found[0]
+    interface = found[1]
+    contact = found[2]
+    _copy(velocity_before, qd, n)
+    before = active
+    if kind == OVERTURN:
+        _overturn_blocks(t, interface, active, flags, count)
+        active = interface
+        istate[S_ACTIVE] = active
+        if active == 0:
+            _record_event(state, kind, interface, contact, 0, before, velocity_before, ev)
+            return COMPLETED
+    _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
+            directions, flags[0], flags[1], settle)  # fmt: skip
+    if settle[0] != NO_FAILURE:
+        _begin_stretch(settle[0], state, ev)
+        return RUNNING
+    impacted = settle[1]
+    if impacted == TANGENTIAL_IMPACT or (
+        impacted != 0 and kind != IMPACT and kind != STOP_IMPACT and kind != OVERTURN
+    ):
+        kind = impacted
+    _record_event(state, kind, interface, contact, 1 if settle[2] > 1 else 0, before,
+                  velocity_before, ev)  # fmt: skip
+    if istate[S_EVENTS] > max_events:
+        istate[S_FAILURE] = TOO_MANY_EVENTS
+        return FAILED
+    if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
+        _begin_stretch(SINGULAR_MODE, state, ev)
+        return RUNNING
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
+    record(state, lam, work, rec)
+    return RUNNING
+
+
+@nb.njit(cache=True, _nrt=False)
+def _overturn_after_excitation(model, exc, params, state, work, loop, problem, ev):
+    """After the excitation, a block past its overturning angle that cannot come back falls.
+
+    The block and those above it leave the stack (an ``overturn`` event), the
+    rest settles into its next mode (:func:`_settle`; a stretch of time
+    stepping if none is consistent). Returns :data:`COMPLETED` when no block
+    is left, else :data:`RUNNING`.
+    """
+    qdd = loop.vectors[QDD]
+    rates = loop.blockwise[RATES]
+    lam = loop.forces[LAM]
+    settle = loop.codes[SETTLE]
+    step = loop.codes[STEP]
+    velocity_before = loop.vectors[BEFORE]
+    q, qd, slide, mode, directions, istate, fstate, flags = state
+    active = istate[S_ACTIVE]
+    index = _overturned_after(model, params, active, qd, work)
+    if index < 0:
+        return RUNNING
+    t = fstate[F_TIME]
+    n = 3 * active
+    step[L_REST_READY] = 0
+    _copy(velocity_before, qd, n)
+    _overturn_blocks(t, index, active, flags, flags.shape[1])
+    istate[S_ACTIVE] = index
+    _record_event(state, OVERTURN, index, -1, 0, active, velocity_before, ev)
+    active = index
+    if active == 0:
+        return COMPLETED
+    _copy(velocity_before, qd, 3 * active)
+    _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
+            directions, flags[0], flags[1], settle)  # fmt: skip
+    if settle[0] != NO_FAILURE:
+        _begin_stretch(settle[0], state, ev)
+        return RUNNING
+    if not _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam):
+        _begin_stretch(SINGULAR_MODE, state, ev)
+        return RUNNING
+    _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
+    return RUNNING
+
+
+@nb.njit(cache=True, inline="always", _nrt=False)
+def resolve_stretch(model, exc, params, state, work, loop, problem, rec, ev):
+    """After a step of time stepping: overturning, and the return to events.
+
+    A block whose rotation reaches pi/2 overturns with those above it. Every
+    ``STRETCH_STEPS`` steps the event-driven contact problem is tried at the
+    state (:func:`_try_resume`); when a mode is consistent the stretch ends
+    with a ``resume`` event and the state is recorded again.
+    """
+    qdd = loop.vectors[QDD]
+    rates = loop.blockwise[RATES]
+    lam = loop.forces[LAM]
+    settle = loop.codes[SETTLE]
+    step = loop.codes[STEP]
+    velocity_before = loop.vectors[BEFORE]
+    q, qd, slide, mode, directions, istate, fstate, flags = state
+    t = fstate[F_TIME]
+    active = istate[S_ACTIVE]
+    for i in range(active):
+        if abs(work.blockwise[ROTATION][i]) >= 0.5 * math.pi:
+            _copy(velocity_before, qd, 3 * active)
+            _overturn_blocks(t, i, active, flags, flags.shape[1])
+            istate[S_ACTIVE] = i
+            _record_event(state, OVERTURN, i, -1, 0, active, velocity_before, ev)
+            active = i
+            break
+    if active > 0 and istate[S_STRETCH_STEPS] >= STRETCH_STEPS:
+        _copy(velocity_before, qd, 3 * active)
+        if _try_resume(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate,
+                       mode,
+                       directions, flags[0], flags[1], settle, qdd,
+                       lam):  # fmt: skip
+            step[L_REST_READY] = 0
+            _record_event(state, RESUME, -1, -1, 1 if settle[2] > 1 else 0, active,
+                          velocity_before, ev)  # fmt: skip
+            _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
+            record(state, lam, work, rec)
+
+
+# --- the loop -----------------------------------------------------------------------------------
+
+
+@nb.njit(cache=True, _nrt=True)
+def run(model, exc, breaks, params, h_cap, max_events, chunk_end, q, qd, slide, mode, directions,
+        istate, fstate, flags, rec, ev):  # fmt: skip
+    """Advance the simulation until the end, a failure, full buffers or ``chunk_end``.
+
+    Resumable: every piece of the loop's state lives in the arguments
+    (:data:`State`: ``q``, ``qd`` (3 B), ``slide`` (B), the held ``mode``
+    (B, 3) and slide ``directions`` (B), ``istate``/``fstate`` counters,
+    ``flags`` (uplift, free flight, overturned as floats, overturn time, max
+    lift, max flight: (6, B))); ``rec`` and ``ev`` receive the history and
+    the events. Each pass of the loop is one step: a step of the held mode
+    (:func:`advance`); if an event fired in it, its time (:func:`locate`) and
+    what follows it (:func:`resolve`), else the step taken; the state is
+    recorded (:func:`record`). While no event-driven mode is consistent, a
+    step of time stepping instead (:func:`advance_stretch`,
+    :func:`resolve_stretch`). Returns the outcome code.
+    """
+    count = model.geometry.shape[0]
+    state = State(q, qd, slide, mode, directions, istate, fstate, flags)
+    return _loop(model, exc, breaks, params, h_cap, max_events, chunk_end, state, _work(count),
+                 _loop_arrays(count), _problem_arrays(count), rec, ev)  # fmt: skip
+
+
+@nb.njit(cache=True, _nrt=False)
+def _loop(model, exc, breaks, params, h_cap, max_events, chunk_end, state, work, loop, problem,
+          rec, ev):  # fmt: skip
+    """The loop of :func:`run` on its :data:`State` and its :data:`Work`, :data:`Loop` and
+    :data:`Problem` arrays."""
+    slide1 = loop.blockwise[SLIDE1]
+    lam = loop.forces[LAM]
+    lam1 = loop.forces[LAM1]
+    found = loop.codes[FOUND]
+    istate = state.istate
+    outcome = _start(model, exc, params, state, work, loop, problem, rec, ev)
+    while outcome == RUNNING:
+        outcome = _stop(params, chunk_end, state, rec[0].shape[0], ev[0].shape[0])
+        if outcome != RUNNING:
+            break
+        if istate[S_STEPPING] == 1:
+            advance_stretch(model, exc, params, h_cap, state, work, loop)
+            record(state, lam, work, rec)
+            resolve_stretch(model, exc, params, state, work, loop, problem, rec, ev)
+            continue
+        h = advance(model, exc, params, breaks, h_cap, state, work, loop)
+        if h < 0.0:
+            _begin_stretch(SINGULAR_MODE, state, ev)
+        elif not _fired(model, params, istate[S_ACTIVE], state.mode, state.directions, lam1,
+                        slide1, work, found):  # fmt: skip
+            outcome = _take_step(model, exc, params, h, state, work, loop, problem, rec, ev)
+        else:
+            h = locate(model, exc, params, h, state, work, loop)
+            if h < 0.0:
+                _begin_stretch(SINGULAR_MODE, state, ev)
+            else:
+                outcome = resolve(
+                    model, exc, params, max_events, h, state, work, loop, problem, rec, ev
+                )
     istate[S_STATUS] = outcome
     return outcome
 
 
-@nb.njit(cache=True, inline="always")
-def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, force_g, coeff,
-                matrix, rhs, qdd, lam, first=0):  # fmt: skip
+@nb.njit(cache=True, inline="always", _nrt=False)
+def _solve_held(row_j, force_g, matrix, rhs, k, c0, n, symmetric):
+    """The held mode's ``k`` equations ``(J_r M^-1 G_j^T) x = rhs``, solved in place.
+
+    Symmetric (no sliding interface): its lower triangle by ``L D L^T``
+    (:func:`~freestand.core.contact.engine.solve_symmetric_in_place`), and by
+    Gaussian elimination when that finds it not positive definite; otherwise
+    Gaussian elimination with partial pivoting. False when singular.
+    """
+    if symmetric:
+        for r in range(k):
+            for j in range(r + 1):
+                total = 0.0
+                for col in range(c0, n):
+                    total += row_j[r, col] * force_g[j, col]
+                matrix[r, j] = total
+        if solve_symmetric_in_place(matrix, rhs, k):
+            return True
+    for r in range(k):
+        for j in range(k):
+            total = 0.0
+            for col in range(c0, n):
+                total += row_j[r, col] * force_g[j, col]
+            matrix[r, j] = total
+    return solve_in_place(matrix, rhs, k)
+
+
+@nb.njit(cache=True, inline="always", _nrt=False)
+def _held_solve(active, inverse_mass, work, mode, qdd, lam, first=0):
     """Forces and accelerations of a held mode, without the contact accelerations.
 
     The unknowns ``x_j`` are the closed contacts' normal forces and the
@@ -1773,14 +2363,26 @@ def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, for
     friction). Equations: zero gap acceleration at the closed contacts and
     zero slip acceleration at the sticking interfaces,
     ``sum_j (J_r M^-1 G_j^T) x_j = -(J_r M^-1 f + b_r)``; then
-    ``qdd = M^-1 (f + sum_j G_j^T x_j)``. ``row_j``, ``force_g`` (3 B, 3 B)
-    work arrays. Returns False when singular.
+    ``qdd = M^-1 (f + sum_j G_j^T x_j)``, with ``f`` the free accelerations
+    ``work.vectors[FREE]`` and the kinematics in ``work``. Returns False when
+    singular.
 
     With ``first`` > 0 the blocks below ``first`` are held fixed (they stick to
     the support, nothing moves): only the interfaces from ``first`` up and
     the coordinates of their upper blocks take part; the others get no
     acceleration and their forces are not computed (zero).
     """
+    free = work.vectors[FREE]
+    jn = work.jacobian[0]
+    jt = work.jacobian[1]
+    bn = work.contact[GAP_BIAS]
+    bt = work.contact[SLIP_BIAS]
+    mu = work.contact[FRICTION]
+    row_j = work.matrices[ROWS]
+    force_g = work.matrices[FORCE_G]
+    matrix = work.matrices[MATRIX]
+    coeff = work.vectors[COEFF]
+    rhs = work.vectors[RHS]
     n = 3 * active
     c0 = 3 * first
     k = 0
@@ -1788,6 +2390,12 @@ def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, for
         lam[i, 0] = 0.0
         lam[i, 1] = 0.0
         lam[i, 2] = 0.0
+    # without a sliding interface every unknown acts along its own row (G_j = J_j):
+    # the system J M^-1 J^T is symmetric, positive definite unless singular
+    symmetric = True
+    for i in range(first, active):
+        if mode[i, 2] == 2 or mode[i, 2] == 3:
+            symmetric = False
     for i in range(first, active):
         tangential = mode[i, 2]
         reference = 1 if (mode[i, 1] == 1 and mode[i, 0] == 0) else 0
@@ -1818,13 +2426,7 @@ def _held_solve(active, inverse_mass, free, jn, bn, jt, bt, mode, mu, row_j, for
             rhs[k] = -total
             coeff[k] = 3 * i + 2
             k += 1
-    for r in range(k):
-        for j in range(k):
-            total = 0.0
-            for col in range(c0, n):
-                total += row_j[r, col] * force_g[j, col]
-            matrix[r, j] = total
-    if not solve_in_place(matrix, rhs, k):
+    if not _solve_held(row_j, force_g, matrix, rhs, k, c0, n, symmetric):
         return False
     for c in range(n):
         qdd[c] = free[c] if c >= c0 else 0.0

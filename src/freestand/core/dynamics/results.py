@@ -210,6 +210,13 @@ class TimeHistoryDiagnostics:
         kinetic energy (kinetic friction acting against the slip before the
         impact, which the impact reversed), solved again by the dissipative
         velocity-level solver of the time stepping.
+    zeno_landings : int
+        Zeno sequences of impacts summed: once the support no longer
+        accelerates, an impact after which the contact that opens could not
+        rise beyond the gap tolerance before falling back ends its sequence
+        there, the interface landing on both contacts (the remaining impacts,
+        each lower than the last, would accumulate within about
+        ``flight / (1 - ratio)`` [s]).
     """
 
     time_step: float
@@ -226,6 +233,7 @@ class TimeHistoryDiagnostics:
     stretches: tuple[tuple[str, int], ...] = ()
     energy_ratio: float = 0.0
     dissipative_impacts: int = 0
+    zeno_landings: int = 0
 
 
 @dataclass(frozen=True)

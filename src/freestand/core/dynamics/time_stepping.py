@@ -141,7 +141,7 @@ def _box_sweeps(active, inverse_mass, jn, jt, closed, bound_low, bound_high, v_f
             break
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, _nrt=True)
 def impulse_step(active, inverse_mass, jn, jt, closed, mu_low, mu_high, v, normal, tangential):
     """Contact impulses of one Moreau-Jean step; the energy ratio ``T(v+)/T(v_f)``.
 

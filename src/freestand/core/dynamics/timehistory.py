@@ -695,6 +695,7 @@ def simulate_general(
     params[engine.P_STEP] = step
     params[engine.P_EXC_DT] = dt
     params[engine.P_UNTIL_REST] = 1.0 if until_rest else 0.0
+    params[engine.P_QUIET] = quiet_from(dt, horizontal, vertical)
     istate = np.zeros(engine.S_SIZE, dtype=np.int64)
     istate[engine.S_ACTIVE] = count
     fstate = np.zeros(engine.F_SIZE)
@@ -791,22 +792,37 @@ def record_breaks(time_step: float, horizontal: np.ndarray, vertical: np.ndarray
     return np.array(np.flatnonzero(kinks) * time_step, dtype=float)
 
 
-def engine_model(stack: Stack, restitution: np.ndarray) -> tuple:
+def quiet_from(time_step: float, horizontal: np.ndarray, vertical: np.ndarray) -> float:
+    """Time [s] from which the support no longer accelerates: every later sample is zero.
+
+    The samples are joined by straight lines (zero after the last), so the
+    support is still from the sample after the last non-zero one; 0 for a
+    record of zeros.
+    """
+    moving = np.flatnonzero((horizontal != 0.0) | (vertical != 0.0))
+    return float((moving[-1] + 1) * time_step) if moving.size else 0.0
+
+
+def engine_model(stack: Stack, restitution: np.ndarray) -> engine.Model:
     """The arrays of :mod:`freestand.core.dynamics.engine` describing a stack."""
-    geometry = stack_geometry(stack)
     mass = np.array([[b.mass, b.mass, b.inertia] for b in stack.blocks], dtype=float).reshape(-1)
     codes = {Sliding.FREE: 0, Sliding.NONE: 1, Sliding.NO_RIGHT: 2, Sliding.NO_LEFT: 3}
-    return (
-        geometry,
-        1.0 / mass,
-        mass,
-        np.array([b.friction.static for b in stack.blocks], dtype=float),
-        np.array([b.friction.kinetic for b in stack.blocks], dtype=float),
-        np.array([codes[b.sliding] for b in stack.blocks], dtype=np.int64),
-        np.ascontiguousarray(restitution, dtype=float),
-        np.array(
-            [[b.base_left, b.base_right, b.base_level] for b in stack.blocks], dtype=float
-        ).reshape(-1, 3),
+    properties = np.array(
+        [
+            [b.friction.static for b in stack.blocks],
+            [b.friction.kinetic for b in stack.blocks],
+            restitution,
+            [b.base_left for b in stack.blocks],
+            [b.base_right for b in stack.blocks],
+            [b.base_level for b in stack.blocks],
+        ],
+        dtype=float,
+    )
+    return engine.Model(
+        geometry=stack_geometry(stack),
+        masses=np.array([mass, 1.0 / mass]),
+        properties=properties,
+        codes=np.array([codes[b.sliding] for b in stack.blocks], dtype=np.int64),
     )
 
 
@@ -823,24 +839,14 @@ def _restitution_factors(restitution, count: int) -> np.ndarray:
 
 
 def _record_buffers(rows: int, count: int) -> tuple:
-    return (
-        np.empty(rows),
-        np.empty((rows, count, 3)),
-        np.empty((rows, count, 3)),
-        np.empty((rows, count, 2)),
-        np.empty((rows, count)),
-        np.empty((rows, count)),
-        np.empty((rows, count)),
-    )
+    return (np.empty(rows), np.empty((rows, count, engine.R_SIZE)))
 
 
 def _event_buffers(rows: int, count: int) -> tuple:
     return (
         np.empty(rows),
-        np.empty((rows, 6), dtype=np.int64),
-        np.empty((rows, count), dtype=np.int64),
-        np.empty((rows, count, 3)),
-        np.empty((rows, count, 3)),
+        np.empty((rows, engine.EV_MOTIONS + count), dtype=np.int64),
+        np.empty((rows, 2, count, 3)),
     )
 
 
@@ -909,22 +915,24 @@ def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev,
     rows = int(istate[engine.S_ROWS])
     time = fstate[engine.F_TIME]
     times = rec[0][:rows].copy()
-    position = rec[1][:rows].copy()
-    velocity = rec[2][:rows].copy()
-    normal = rec[3][:rows].copy()
-    tangential = rec[4][:rows].copy()
-    rotation = rec[5][:rows].copy()
-    slides = rec[6][:rows].copy()
+    values = rec[1][:rows]
+    position = values[:, :, engine.R_Q : engine.R_Q + 3].copy()
+    velocity = values[:, :, engine.R_QD : engine.R_QD + 3].copy()
+    normal = values[:, :, engine.R_NORMAL : engine.R_NORMAL + 2].copy()
+    tangential = values[:, :, engine.R_TANGENTIAL].copy()
+    rotation = values[:, :, engine.R_ROTATION].copy()
+    slides = values[:, :, engine.R_SLIDE].copy()
     events = []
     count_events = int(istate[engine.S_EVENTS])
-    velocity_before = ev[3][:count_events].copy()
-    velocity_after = ev[4][:count_events].copy()
+    velocity_before = ev[2][:count_events, 0].copy()
+    velocity_after = ev[2][:count_events, 1].copy()
     motion_names: dict[tuple[int, ...], tuple[str, ...]] = {}
+    codes_of = ev[1][:count_events]
     for e, (event_time, codes, motions) in enumerate(
         zip(
             ev[0][:count_events].tolist(),
-            ev[1][:count_events].tolist(),
-            map(tuple, ev[2][:count_events].tolist()),
+            codes_of[:, : engine.EV_MOTIONS].tolist(),
+            map(tuple, codes_of[:, engine.EV_MOTIONS :].tolist()),
             strict=True,
         )
     ):
@@ -1028,6 +1036,7 @@ def _result(stack, count, end, step, max_events, istate, fstate, flags, rec, ev,
             stretches=stretches,
             energy_ratio=float(fstate[engine.F_ENERGY_RATIO]),
             dissipative_impacts=int(istate[engine.S_DISSIPATIVE_IMPACTS]),
+            zeno_landings=int(istate[engine.S_ZENO]),
         ),
         max_lift=max_lift,
     )

@@ -164,6 +164,78 @@ def _cubic_extreme(y0, y1, d0, d1, h):
     return best
 
 
+@numba.njit(cache=True, inline="always")
+def nigam_jennings_step(coefficients, u, v, p0, p1):
+    """One exact step of the piecewise-linear recursion: ``(u1, v1)``.
+
+    ``[u1, v1] = A [u, v] + B [p0, p1]`` (Nigam and Jennings 1969, eqs. 6-7),
+    with ``coefficients`` the eight entries ``(a11, a12, a21, a22, b11, b12,
+    b21, b22)`` of A and B for the step (:func:`nigam_jennings_coefficients`),
+    ``u`` [m] and ``v`` [m/s] the relative displacement and velocity at its
+    start and ``p0``, ``p1`` [m/s^2] the support acceleration at its ends.
+    """
+    u1 = coefficients[0] * u + coefficients[1] * v + coefficients[4] * p0 + coefficients[5] * p1
+    v1 = coefficients[2] * u + coefficients[3] * v + coefficients[6] * p0 + coefficients[7] * p1
+    return u1, v1
+
+
+@numba.njit(cache=True, inline="always")
+def record_segment(acceleration, i):
+    """Support accelerations [m/s^2] at both ends of record step ``i``.
+
+    The record's samples joined by straight lines; after the last sample the
+    support comes to rest, its acceleration ramping to zero over one step.
+    """
+    a_end = acceleration[i + 1] if i + 1 < acceleration.size else 0.0
+    return acceleration[i], a_end
+
+
+@numba.njit(cache=True, inline="always")
+def substep_loads(a_start, a_end, substeps, j):
+    """Support accelerations [m/s^2] at both ends of sub-step ``j`` of a record step.
+
+    The step from ``a_start`` to ``a_end`` divided into ``substeps`` equal
+    sub-steps on its straight segment (exact for the recursion).
+    """
+    slope = (a_end - a_start) / substeps
+    return a_start + slope * j, a_start + slope * (j + 1)
+
+
+@numba.njit(cache=True, inline="always")
+def peak_between(peak, y0, y1, d0, d1, h):
+    """``peak`` raised to ``|y1|``, and to the extreme of the cubic Hermite interpolant
+    (:func:`_cubic_extreme`) where ``y`` turns within the sub-step of ``h`` [s]
+    (its rates ``d0``, ``d1`` at the ends differ in sign)."""
+    x = abs(y1)
+    if d0 * d1 < 0.0:
+        x = max(x, _cubic_extreme(y0, y1, d0, d1, h))
+    return x if x > peak else peak
+
+
+@numba.njit(cache=True, inline="always")
+def _displacement_substep(coefficients, h, u, v, p0, p1, peak_u):
+    """One sub-step of the recursion and the displacement peak: ``(u1, v1, peak_u)``."""
+    u1, v1 = nigam_jennings_step(coefficients, u, v, p0, p1)
+    return u1, v1, peak_between(peak_u, u, u1, v, v1, h)
+
+
+@numba.njit(cache=True, inline="always")
+def _response_substep(coefficients, h, c, w2, u, v, p0, p1, pu, pv, pa):
+    """One sub-step of the recursion and the peaks of |u|, |u'| and |u'' + a_g|
+    (``c = 2 zeta omega``, ``w2 = omega^2``): ``(u1, v1, pu, pv, pa)``."""
+    u1, v1, pu = _displacement_substep(coefficients, h, u, v, p0, p1, pu)
+    # relative acceleration u'' and absolute acceleration A = u'' + a_g, with A'
+    ur0 = -p0 - c * v - w2 * u
+    ur1 = -p1 - c * v1 - w2 * u1
+    abs0 = -(c * v + w2 * u)
+    abs1 = -(c * v1 + w2 * u1)
+    dabs0 = -(c * ur0 + w2 * v)
+    dabs1 = -(c * ur1 + w2 * v1)
+    pv = peak_between(pv, v, v1, ur0, ur1, h)
+    pa = peak_between(pa, abs0, abs1, dabs0, dabs1, h)
+    return u1, v1, pu, pv, pa
+
+
 @numba.njit(cache=True)
 def _peak_response_kernel(acceleration, dt, omegas, zeta, coefficients, substeps, free_steps):
     """Peaks of |u|, |u'| and |u'' + a_g| for each circular frequency.
@@ -175,7 +247,6 @@ def _peak_response_kernel(acceleration, dt, omegas, zeta, coefficients, substeps
     derivatives.
     """
     n_freq = omegas.size
-    n = acceleration.size
     peak_u = np.zeros(n_freq)
     peak_v = np.zeros(n_freq)
     peak_abs = np.zeros(n_freq)
@@ -183,14 +254,6 @@ def _peak_response_kernel(acceleration, dt, omegas, zeta, coefficients, substeps
         omega = omegas[k]
         m = substeps[k]
         h = dt / m
-        a11 = coefficients[k, 0]
-        a12 = coefficients[k, 1]
-        a21 = coefficients[k, 2]
-        a22 = coefficients[k, 3]
-        b11 = coefficients[k, 4]
-        b12 = coefficients[k, 5]
-        b21 = coefficients[k, 6]
-        b22 = coefficients[k, 7]
         c = 2.0 * zeta * omega
         w2 = omega * omega
         u = 0.0
@@ -198,45 +261,16 @@ def _peak_response_kernel(acceleration, dt, omegas, zeta, coefficients, substeps
         pu = 0.0
         pv = 0.0
         pa = 0.0
-        record_steps = n * m  # the record, then one step ramping its last sample to zero
-        for step in range(record_steps + free_steps[k]):
-            if step < record_steps:
-                i = step // m
-                j = step - i * m
-                a_start = acceleration[i]
-                a_end = acceleration[i + 1] if i + 1 < n else 0.0
-                slope = (a_end - a_start) / m
-                p0 = a_start + slope * j
-                p1 = a_start + slope * (j + 1)
-            else:
-                p0 = 0.0
-                p1 = 0.0
-            u1 = a11 * u + a12 * v + b11 * p0 + b12 * p1
-            v1 = a21 * u + a22 * v + b21 * p0 + b22 * p1
-            # relative acceleration u'' and absolute acceleration A = u'' + a_g, with A'
-            ur0 = -p0 - c * v - w2 * u
-            ur1 = -p1 - c * v1 - w2 * u1
-            abs0 = -(c * v + w2 * u)
-            abs1 = -(c * v1 + w2 * u1)
-            dabs0 = -(c * ur0 + w2 * v)
-            dabs1 = -(c * ur1 + w2 * v1)
-            x = abs(u1)
-            if v * v1 < 0.0:
-                x = max(x, _cubic_extreme(u, u1, v, v1, h))
-            if x > pu:
-                pu = x
-            x = abs(v1)
-            if ur0 * ur1 < 0.0:
-                x = max(x, _cubic_extreme(v, v1, ur0, ur1, h))
-            if x > pv:
-                pv = x
-            x = abs(abs1)
-            if dabs0 * dabs1 < 0.0:
-                x = max(x, _cubic_extreme(abs0, abs1, dabs0, dabs1, h))
-            if x > pa:
-                pa = x
-            u = u1
-            v = v1
+        # the record, then one step ramping its last sample to zero, then free vibration
+        for i in range(acceleration.size):
+            a_start, a_end = record_segment(acceleration, i)
+            for j in range(m):
+                p0, p1 = substep_loads(a_start, a_end, m, j)
+                u, v, pu, pv, pa = _response_substep(coefficients[k], h, c, w2, u, v, p0, p1,
+                                                     pu, pv, pa)  # fmt: skip
+        for _ in range(free_steps[k]):
+            u, v, pu, pv, pa = _response_substep(coefficients[k], h, c, w2, u, v, 0.0, 0.0, pu,
+                                                 pv, pa)  # fmt: skip
         peak_u[k] = pu
         peak_v[k] = pv
         peak_abs[k] = pa
@@ -255,50 +289,22 @@ def _peak_displacement_kernel(acceleration, dt, omegas, coefficients, substeps, 
     (up to the end of the last sample's ramp to zero).
     """
     n_freq = omegas.size
-    n = acceleration.size
     peak_u = np.zeros(n_freq)
     peak_u_record = np.zeros(n_freq)
     for k in numba.prange(n_freq):
         m = substeps[k]
         h = dt / m
-        a11 = coefficients[k, 0]
-        a12 = coefficients[k, 1]
-        a21 = coefficients[k, 2]
-        a22 = coefficients[k, 3]
-        b11 = coefficients[k, 4]
-        b12 = coefficients[k, 5]
-        b21 = coefficients[k, 6]
-        b22 = coefficients[k, 7]
         u = 0.0
         v = 0.0
         pu = 0.0
-        for i in range(n):
-            a_start = acceleration[i]
-            a_end = acceleration[i + 1] if i + 1 < n else 0.0
-            slope = (a_end - a_start) / m
+        for i in range(acceleration.size):
+            a_start, a_end = record_segment(acceleration, i)
             for j in range(m):
-                p0 = a_start + slope * j
-                p1 = a_start + slope * (j + 1)
-                u1 = a11 * u + a12 * v + b11 * p0 + b12 * p1
-                v1 = a21 * u + a22 * v + b21 * p0 + b22 * p1
-                x = abs(u1)
-                if v * v1 < 0.0:
-                    x = max(x, _cubic_extreme(u, u1, v, v1, h))
-                if x > pu:
-                    pu = x
-                u = u1
-                v = v1
+                p0, p1 = substep_loads(a_start, a_end, m, j)
+                u, v, pu = _displacement_substep(coefficients[k], h, u, v, p0, p1, pu)
         peak_u_record[k] = pu
         for _ in range(free_steps[k]):
-            u1 = a11 * u + a12 * v
-            v1 = a21 * u + a22 * v
-            x = abs(u1)
-            if v * v1 < 0.0:
-                x = max(x, _cubic_extreme(u, u1, v, v1, h))
-            if x > pu:
-                pu = x
-            u = u1
-            v = v1
+            u, v, pu = _displacement_substep(coefficients[k], h, u, v, 0.0, 0.0, pu)
         peak_u[k] = pu
     return peak_u, peak_u_record
 
@@ -307,21 +313,12 @@ def _peak_displacement_kernel(acceleration, dt, omegas, coefficients, substeps, 
 def _history_kernel(acceleration, coefficients):
     """Relative displacement and velocity at the samples (exact recursion)."""
     n = acceleration.size
-    a11 = coefficients[0]
-    a12 = coefficients[1]
-    a21 = coefficients[2]
-    a22 = coefficients[3]
-    b11 = coefficients[4]
-    b12 = coefficients[5]
-    b21 = coefficients[6]
-    b22 = coefficients[7]
     u = np.zeros(n)
     v = np.zeros(n)
     for i in range(n - 1):
-        p0 = acceleration[i]
-        p1 = acceleration[i + 1]
-        u[i + 1] = a11 * u[i] + a12 * v[i] + b11 * p0 + b12 * p1
-        v[i + 1] = a21 * u[i] + a22 * v[i] + b21 * p0 + b22 * p1
+        u[i + 1], v[i + 1] = nigam_jennings_step(
+            coefficients, u[i], v[i], acceleration[i], acceleration[i + 1]
+        )
     return u, v
 
 

@@ -48,7 +48,13 @@ import math
 import numba
 import numpy as np
 
-from freestand.core.motion.response_spectrum import SpectrumPlan, _cubic_extreme
+from freestand.core.motion.response_spectrum import (
+    SpectrumPlan,
+    nigam_jennings_step,
+    peak_between,
+    record_segment,
+    substep_loads,
+)
 
 #: Boore's (2010) angle step [deg] over the non-redundant angles 0 <= theta < 180 deg.
 ANGLE_STEP = 1.0
@@ -133,44 +139,27 @@ def _spectral_peaks_kernel(x, y, dt, coefficients, substeps, free_steps, cosines
     n = x.size
     m = substeps
     h = dt / m
-    a11 = coefficients[0]
-    a12 = coefficients[1]
-    a21 = coefficients[2]
-    a22 = coefficients[3]
-    b11 = coefficients[4]
-    b12 = coefficients[5]
-    b21 = coefficients[6]
-    b22 = coefficients[7]
     n_angles = cosines.size
     peaks = np.zeros(n_angles)
     ux = 0.0
     vx = 0.0
     uy = 0.0
     vy = 0.0
-    total = n * m + free_steps
-    for step in range(total):
+    for step in range(n * m + free_steps):
         if step < n * m:
             i = step // m
             j = step - i * m
-            x0 = x[i]
-            x1 = x[i + 1] if i + 1 < n else 0.0
-            y0 = y[i]
-            y1 = y[i + 1] if i + 1 < n else 0.0
-            slope_x = (x1 - x0) / m
-            slope_y = (y1 - y0) / m
-            px0 = x0 + slope_x * j
-            px1 = x0 + slope_x * (j + 1)
-            py0 = y0 + slope_y * j
-            py1 = y0 + slope_y * (j + 1)
+            x0, x1 = record_segment(x, i)
+            y0, y1 = record_segment(y, i)
+            px0, px1 = substep_loads(x0, x1, m, j)
+            py0, py1 = substep_loads(y0, y1, m, j)
         else:
             px0 = 0.0
             px1 = 0.0
             py0 = 0.0
             py1 = 0.0
-        ux1 = a11 * ux + a12 * vx + b11 * px0 + b12 * px1
-        vx1 = a21 * ux + a22 * vx + b21 * px0 + b22 * px1
-        uy1 = a11 * uy + a12 * vy + b11 * py0 + b12 * py1
-        vy1 = a21 * uy + a22 * vy + b21 * py0 + b22 * py1
+        ux1, vx1 = nigam_jennings_step(coefficients, ux, vx, px0, px1)
+        uy1, vy1 = nigam_jennings_step(coefficients, uy, vy, py0, py1)
         for k in range(n_angles):
             c = cosines[k]
             s = sines[k]
@@ -178,11 +167,7 @@ def _spectral_peaks_kernel(x, y, dt, coefficients, substeps, free_steps, cosines
             u1 = c * ux1 + s * uy1
             v0 = c * vx + s * vy
             v1 = c * vx1 + s * vy1
-            value = abs(u1)
-            if v0 * v1 < 0.0:
-                value = max(value, _cubic_extreme(u0, u1, v0, v1, h))
-            if value > peaks[k]:
-                peaks[k] = value
+            peaks[k] = peak_between(peaks[k], u0, u1, v0, v1, h)
         ux = ux1
         vx = vx1
         uy = uy1
