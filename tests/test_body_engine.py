@@ -86,6 +86,16 @@ def test_released_bodies_complete_and_never_gain_energy(shape, mu, ratio, tilt):
     assert np.all(np.diff(values) <= 1e-6 * values[0])
 
 
+@pytest.mark.xfail(strict=True, reason="known defect: passing flat, it lifts off and explodes")
+def test_a_squat_cylinder_released_off_axis_lands_flat_without_gaining_energy():
+    # found by the property below: rocking on its rim back to flat, the cylinder lifts off
+    # at zero tilt (no landing located), its energy jumps from 7.2e3 J to 1.2e8 J and
+    # it is declared overturned at 0.23 s
+    result, values = _released(Cylinder(0.875, 1.25), 0.625, 1.0, (0.125, 0.0625))
+    assert result.status == "completed"
+    assert np.all(np.diff(values) <= 1e-6 * values[0])
+
+
 @settings(max_examples=25, deadline=None)
 @given(
     box=st.booleans(),

@@ -6,7 +6,12 @@ import numpy as np
 import pytest
 
 from freestand.core.body import Body, Box, Cylinder
-from freestand.core.dynamics.body_history import _valid_rows, body_motion, initial_state
+from freestand.core.dynamics.body_history import (
+    _valid_rows,
+    body_motion,
+    initial_state,
+    lost_contact_depth,
+)
 from freestand.core.model import Friction
 
 BOX = Body("box", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.5, 0.5))
@@ -60,12 +65,13 @@ def test_a_yaw_is_a_twist_and_turns_the_slide_with_it():
 def test_a_history_is_cut_before_a_state_below_the_support_or_not_finite():
     time = np.arange(5.0)
     state = np.tile(initial_state(BOX), (5, 1))
-    lowest = np.array([0.0, -1e-9, -0.01, 0.0, 0.0])
-    rows, message = _valid_rows(time, state, lowest, 0.6)
+    lowest = np.array([0.0, -1e-7, -0.01, 0.0, 0.0])  # within the gap tolerance, then lost
+    depth = lost_contact_depth(0.6, 1e-7)
+    rows, message = _valid_rows(time, state, lowest, depth)
     assert rows == 2
     assert "0.01 m below the support at t = 2 s: the contact was lost" in message
     state[1, 4] = math.nan
-    rows, message = _valid_rows(time, state, np.zeros(5), 0.6)
+    rows, message = _valid_rows(time, state, np.zeros(5), depth)
     assert rows == 1
     assert "stopped being finite at t = 1 s" in message
-    assert _valid_rows(time, np.tile(initial_state(BOX), (5, 1)), np.zeros(5), 0.6) == (5, "")
+    assert _valid_rows(time, np.tile(initial_state(BOX), (5, 1)), np.zeros(5), depth) == (5, "")

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from freestand.core.body import Body, Box
-from freestand.core.contact.body_kernel import FREE, STATE_SIZE, body_parameters
+from freestand.core.contact.body_kernel import FREE, PIVOT_LEAN, STATE_SIZE, body_parameters
 from freestand.core.dynamics import body_engine as engine
 from freestand.core.dynamics.results import ContactTolerances
 from freestand.core.dynamics.single_block import UPLIFT_GAP_FRACTION
@@ -25,9 +25,9 @@ GRAVITY = 9.81
 MOTION_NAMES = {0: "free-flight", 1: "rock-corner", 2: "rock-edge", 3: "rest"}
 EVENT_ROWS = 200_000  # events kept (the engine counts the others)
 
-#: A base point deeper below the support than this fraction of the base width [-] means the
-#: contact was lost (round-off stays below 1e-11 of it): the simulation failed there.
-LOST_CONTACT_FRACTION = 1e-6
+#: A base point deeper below the support than this many times the depth the engine's
+#: tolerances allow (:func:`lost_contact_depth`) means the contact was lost [-].
+LOST_CONTACT_MARGIN = 10.0
 
 
 @dataclass(frozen=True)
@@ -144,9 +144,9 @@ class BodyTimeHistory:
         candidate, continued in free flight).
     message : str
         Why the simulation failed (status ``"failed"``: the state stopped
-        being finite, or a base point went more than
-        :data:`LOST_CONTACT_FRACTION` of the base width below the support; the
-        histories, events and peaks stop before it), else empty.
+        being finite, or a base point went deeper below the support than
+        :func:`lost_contact_depth`; the histories, events and peaks stop
+        before it), else empty.
     """
 
     body: str
@@ -307,7 +307,7 @@ def simulate_body(
         np.concatenate([c[k] if i == 0 else c[k][1:] for i, c in enumerate(chunks)])
         for k in range(4)
     )
-    return _result(body, par, istate, time, state, modes, forces, events)
+    return _result(body, par, istate, time, state, modes, forces, events, tolerances.gap)
 
 
 def _buffers(capacity: int):
@@ -377,14 +377,27 @@ def body_motion(body: Body, state: np.ndarray) -> BodyMotion:
     return BodyMotion(tilt, base[:, 0:2] - base[0, 0:2], twist, lowest, highest)
 
 
-def _valid_rows(time, state, lowest, width) -> tuple[int, str]:
+def lost_contact_depth(width: float, gap: float) -> float:
+    """Depth [m] of a base point below the support past which the contact was lost.
+
+    ``LOST_CONTACT_MARGIN (gap + PIVOT_LEAN width)``: the engine lets a
+    point within the gap tolerance ``gap`` [m] touch, and turns a cylinder
+    within ``PIVOT_LEAN`` of flat about its stored rim point, whose lowest
+    rim point may then lie up to ``2 R sin(tilt) <= PIVOT_LEAN width`` below
+    it; ``width`` [m] is the base's smaller side or diameter.
+    """
+    return LOST_CONTACT_MARGIN * (gap + PIVOT_LEAN * width)
+
+
+def _valid_rows(time, state, lowest, depth) -> tuple[int, str]:
     """Rows before the first state that is not finite or lies below the support; why.
 
-    A base point deeper than ``LOST_CONTACT_FRACTION * width`` [m] below the
-    support means the contact was lost; at least the first row is kept.
+    A base point more than ``depth`` [m] below the support
+    (:func:`lost_contact_depth`) means the contact was lost; at least the
+    first row is kept.
     """
     finite = np.all(np.isfinite(state), axis=1)
-    below = lowest < -LOST_CONTACT_FRACTION * width
+    below = lowest < -depth
     bad = np.flatnonzero(~finite | below)
     if bad.size == 0:
         return time.size, ""
@@ -399,10 +412,12 @@ def _valid_rows(time, state, lowest, width) -> tuple[int, str]:
                   f"t = {time[rows - 1]:.6g} s")  # fmt: skip
 
 
-def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHistory:
+def _result(
+    body, par, istate, time, state, modes, forces, events, gap=ContactTolerances.gap
+) -> BodyTimeHistory:
     motion = body_motion(body, state)
     width = min(body.shape.size[:2]) if isinstance(body.shape, Box) else 2.0 * body.shape.radius
-    rows, message = _valid_rows(time, state, motion.lowest, width)
+    rows, message = _valid_rows(time, state, motion.lowest, lost_contact_depth(width, gap))
     time, state, modes, forces = time[:rows], state[:rows], modes[:rows], forces[:rows]
     tilt, slide, twist = motion.tilt[:rows], motion.slide[:rows], motion.twist[:rows]
     highest = motion.highest[:rows]
