@@ -86,12 +86,15 @@ def test_released_bodies_complete_and_never_gain_energy(shape, mu, ratio, tilt):
     assert np.all(np.diff(values) <= 1e-6 * values[0])
 
 
-@pytest.mark.xfail(strict=True, reason="known defect: passing flat, it lifts off and explodes")
-def test_a_squat_cylinder_released_off_axis_lands_flat_without_gaining_energy():
-    # found by the property below: rocking on its rim back to flat, the cylinder lifts off
-    # at zero tilt (no landing located), its energy jumps from 7.2e3 J to 1.2e8 J and
-    # it is declared overturned at 0.23 s
-    result, values = _released(Cylinder(0.875, 1.25), 0.625, 1.0, (0.125, 0.0625))
+# Known defects found by the property below, each a strict expected failure: a squat
+# cylinder rocking back to flat on its rim point lifts off at zero tilt (no landing
+# located), its energy jumps from 7.2e3 J to 1.2e8 J and it is called overturned at
+# 0.23 s; released at (0.125, 0.125) rad it lands 2.0e-6 m below the support and the
+# drift projection lifts it back, a gain of 0.02 J (3e-6 of its energy).
+@pytest.mark.xfail(strict=True, reason="known defects: a landing near flat missed or late")
+@pytest.mark.parametrize("tilt", [(0.125, 0.0625), (0.125, 0.125)])
+def test_a_squat_cylinder_released_off_axis_lands_flat_without_gaining_energy(tilt):
+    result, values = _released(Cylinder(0.875, 1.25), 0.625, 1.0, tilt)
     assert result.status == "completed"
     assert np.all(np.diff(values) <= 1e-6 * values[0])
 

@@ -140,8 +140,9 @@ class BodyTimeHistory:
     overturn_time : float or None
         [s].
     diagnostics : dict
-        steps, events, impacts, remedies (modes without an admissible
-        candidate, continued in free flight).
+        steps, events, impacts, remedies (where no contact mode was
+        admissible: a velocity-level impact or time stepping) and
+        stretch_steps (the time-stepping steps).
     message : str
         Why the simulation failed (status ``"failed"``: the state stopped
         being finite, or a base point went deeper below the support than
