@@ -6,10 +6,11 @@ at 0.3 g and 5 %: x and y on the horizontal spectrum, the vertical on the
 vertical one; 20 s at 200 samples/s, seed 2024), as ``freestand records
 generate`` makes them.
 
-(a) Accuracy. Three bodies on the rigid support under record 1:
+(a) Accuracy. Three bodies on the rigid support, each under one record of the
+suite times a scale (``CASES``):
 
 - a cabinet, box 1.0 x 0.6 x 2.0 m, 400 kg, mu = 0.5 (rocks about its long
-  edges and slides);
+  edges and slides), and the same with mu = 2 (rocks, its base held);
 - a cask, cylinder R 1.7 m, H 6.0 m, 1.8e5 kg, mu = 0.3: mu < R / h_G, so it
   slides and cannot rock (both thresholds scale with g - a_v); its exact slide
   is that of a point mass on the circular Coulomb cone, computed here
@@ -46,13 +47,14 @@ contact; MuJoCo's contacts are soft). Both engines' states are read by
 (b) Speed, against MuJoCo at its 2 ms step in the same run (the box and
 cylinder primitives with the stiff contacts of benchmarks/mujoco_rocking.py,
 the cheapest MuJoCo model; and the contact-point model above): one body
-under the first 10 s of record 1 (best of several runs after compilation);
+under the first 10 s of its record (best of several runs after compilation);
 1,000 simulations of 20 s under the 20 records (cabinet and cask, 25 levels
 of the suite's scale 0.1-2.5 each) on a pool of ``WORKERS`` processes.
 
-(c) Profile: steps, events and impacts per simulated second of each case, the
-time per step, and the share of the compiled loop (the rest is the Python
-front end: arrays in, histories and peaks out).
+(c) Profile: steps, events and impacts per simulated second of each case, its
+remedies and time-stepping steps (no admissible mode), the time per step, and
+the share of the compiled loop (the rest is the Python front end: arrays in,
+histories and peaks out).
 
     python benchmarks/mujoco_body.py [accuracy] [speed] [profile]
     python benchmarks/mujoco_body.py single | campaign     # one half of (b)
@@ -83,6 +85,7 @@ try:
 except ImportError:  # optional benchmark dependency
     mujoco = None
 
+from engine import best_time  # benchmarks/engine.py: the shortest of several wall times
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.dynamics import body_engine
 from freestand.core.dynamics.body_history import SupportMotion3, body_motion, simulate_body
@@ -144,7 +147,12 @@ CASES = (
     Case(
         Body("slender cylinder", Cylinder(0.4, 3.0), 2000.0, Friction(0.5, 0.5)), 6, 0.7, (144, 192)
     ),
+    # the cabinet with its base held by friction: it rocks under the three components
+    # without sliding, which separates the rocking and impacts from the slide-rock
+    Case(Body("cabinet, mu 2", Box((1.0, 0.6, 2.0)), 400.0, Friction(2.0, 2.0)), 2, 1.2),
 )
+#: The cases timed in (b) and profiled in (c): the three bodies.
+TIMED = CASES[:3]
 
 
 # ------------------------------------------------------------------------------ records
@@ -507,16 +515,6 @@ def accuracy(records: list[SupportMotion3]) -> bool:
 
 
 # ------------------------------------------------------------------------------ (b)
-def best_time(function, repeats: int) -> float:
-    """Shortest wall time of ``function()`` [s] over ``repeats`` runs."""
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return min(times)
-
-
 _CAMPAIGN: dict = {}
 
 
@@ -525,14 +523,19 @@ def _campaign_init(records: list[tuple]) -> None:
 
 
 def _campaign_chunk(tasks: list[tuple[int, tuple[int, int, float]]]) -> list[tuple]:
-    """Run (body, record, level) tasks: (task, status, tilt, slide, twist, seconds) each."""
+    """Run (body, record, level) tasks: (task, status, tilt, slide, twist, seconds, cpu) each.
+
+    seconds is the wall time, cpu the process's CPU time [s] (what the
+    simulation costs on a busy machine, where other jobs take the cores).
+    """
     rows = []
     for task, (b, r, level) in tasks:
-        start = time.perf_counter()
+        start, cpu = time.perf_counter(), time.process_time()
         motion = scaled(_CAMPAIGN["records"][r], level)
         result = simulate_body(CASES[b].body, motion, SUITE_DURATION)
         rows.append((task, result.status, result.max_rotation, result.max_slide,
-                     result.max_twist, time.perf_counter() - start))  # fmt: skip
+                     result.max_twist, time.perf_counter() - start,
+                     time.process_time() - cpu))  # fmt: skip
     return rows
 
 
@@ -555,7 +558,7 @@ def single_runs(records: list[SupportMotion3]) -> tuple[dict[str, float], bool]:
         f" {'MuJoCo points [ms]':>18s} {'x':>6s}"
     )
     primitive, met = {}, True
-    for case in CASES:
+    for case in TIMED:
         motion = case_motion(case, records, SPEED_SECONDS)
         simulate_body(case.body, motion, SPEED_SECONDS)
         ours = best_time(lambda b=case.body, m=motion: simulate_body(b, m, SPEED_SECONDS), 7)
@@ -594,6 +597,7 @@ def campaign(records: list[SupportMotion3], mujoco_10s: dict[str, float] | None 
         rows = [row for chunk in pool.map(_campaign_chunk, chunks) for row in chunk]
     done = time.perf_counter()
     seconds = np.array([row[5] for row in rows])
+    cpu = sum(row[6] for row in rows)
     statuses = [row[1] for row in rows]
     moved = [row for row in rows if row[1] == "completed"]
     names = " and ".join(CASES[b].body.name for b in (0, 1))
@@ -609,6 +613,10 @@ def campaign(records: list[SupportMotion3], mujoco_10s: dict[str, float] | None 
         f" {done - ready:.1f} s of simulations; per simulation mean"
         f" {1e3 * seconds.mean():.1f} ms, 95 % below {1e3 * np.quantile(seconds, 0.95):.1f} ms,"
         f" max {1e3 * seconds.max():.1f} ms"
+    )
+    print(
+        f"  CPU time of the simulations {cpu:.1f} s: {cpu / WORKERS:.1f} s on {WORKERS} cores"
+        " that nothing else uses (the wall time above includes other jobs' share)"
     )
     print(
         f"  outcomes: {statuses.count('completed')} completed"
@@ -647,9 +655,10 @@ def profile(records: list[SupportMotion3]) -> None:
     )
     print(
         f"  {'body':18s} {'scale':>5s} {'steps/s':>8s} {'events/s':>8s} {'impacts/s':>9s}"
+        f" {'remedies':>8s} {'stretch steps':>13s}"
         f" {'ms per run':>10s} {'us per step':>11s} {'compiled loop':>13s}"
     )
-    for case in CASES:
+    for case in TIMED:
         for scale in (case.scale, REST_SCALE):
             body = case.body
             motion = scaled(records[case.record - 1], scale)
@@ -669,6 +678,7 @@ def profile(records: list[SupportMotion3]) -> None:
             print(
                 f"  {body.name:18s} {scale:5g} {d['steps'] / SUITE_DURATION:8.0f}"
                 f" {d['events'] / SUITE_DURATION:8.1f} {d['impacts'] / SUITE_DURATION:9.1f}"
+                f" {d['remedies']:8d} {d['stretch_steps']:13d}"
                 f" {1e3 * seconds:10.2f} {1e6 * seconds / d['steps']:11.2f}"
                 f" {100 * loop / total:12.0f}%"
             )
