@@ -229,7 +229,7 @@ def test_docstring_examples_run(monkeypatch):
     assert attempted >= 10 and failures == 0
 
 
-def test_fragility_scales_three_component_records_by_a_two_component_im(three, tmp_path):
+def test_a_planar_model_takes_one_component_ims_of_three_component_records(three, tmp_path):
     from tests.test_cli_fragility import MODEL
 
     _, folder, *_ = three
@@ -237,15 +237,19 @@ def test_fragility_scales_three_component_records_by_a_two_component_im(three, t
     arguments = ("fragility", "block.toml", "--suite", str(folder / "suite.toml"),
                  "--levels", "1:2:2", "--outcome", "uplift:block", "--workers", "1",
                  "--bootstrap", "20", "--json")  # fmt: skip
-    result = run_freestand(*arguments, "--im", "pga-rotd50", cwd=tmp_path)
+    result = run_freestand(*arguments, "--im", "pga", cwd=tmp_path)
     assert result.returncode == 0, result.stderr
     document = json.loads(result.stdout)
-    assert document["im"] == {"kind": "pga-rotd50", "unit": "m/s^2"}
+    assert document["im"] == {"kind": "pga", "unit": "m/s^2"}
     assert document["simulations"] == 4
-    # a one-component suite cannot give a two-component IM: said before any simulation
-    planar = tmp_path / "planar.toml"
-    planar.write_text(f'[[record]]\nhorizontal = "{folder / "rec01_X.AT2"}"\n')
-    result = run_freestand(*arguments[:3], str(planar), *arguments[4:], "--im", "sa-rotd100:2.5",
-                           cwd=tmp_path)  # fmt: skip
-    assert result.returncode == 2 and "has one horizontal component" in result.stderr
-    assert "x and y" in result.stderr and "Traceback" not in result.stderr
+    # the planar block moves under x alone: an IM of x and y is refused, naming the option,
+    # before any simulation (it is for 3-D configurations)
+    result = run_freestand(*arguments, "--im", "pga-rotd50", cwd=tmp_path)
+    assert result.returncode == 2, result.stdout
+    assert "--im" in result.stderr and "two horizontal components" in result.stderr
+    assert "'block' is planar" in result.stderr and "Traceback" not in result.stderr
+    model = fs.load_model(tmp_path / "block.toml")
+    for im in ("sa-rotd100:2.5", "pgv-gm", fs.IntensityMeasure("pga-rotd100")):
+        with pytest.raises(FreestandError, match=r"--im.*two horizontal.*'block' is planar"):
+            fs.fragility(model, folder / "suite.toml", im=im, levels="1:2:2",
+                         outcomes=["uplift:block"], workers=1)  # fmt: skip

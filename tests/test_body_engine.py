@@ -114,3 +114,41 @@ def test_a_released_body_never_gains_energy(box, sizes, mu, ratio, tilt):
     result, values = _released(shape, mu, ratio, tilt)
     assert result.status in ("completed", "overturned")
     assert np.all(np.diff(values) <= 1e-6 * values[0])  # RK4 truncation, as above
+
+
+# A body at rest is not integrated: its contact multipliers are affine in the support's
+# accelerations and a step is decided by its ends (body_engine.rest_step). Under a ramp
+# a = k t the rest ends where the closed-form threshold is reached: sliding at mu_0 (g - a_v)
+# for a squat body, uplift at (g - a_v) b / h for a slender box (Housner 1963); a_v is
+# the downward support acceleration.
+RAMP_DT = 0.005
+RAMP_TIME = np.arange(0.0, 1.0 + RAMP_DT / 2, RAMP_DT)
+
+
+@pytest.mark.parametrize(
+    ("body", "rate", "vertical", "expected", "kind"),
+    [
+        # squat cylinder, mu_0 = 0.3: slides at 0.3 (g - a_v); k = 5 m/s^3, a_v = 1 m/s^2 down
+        (Body("c", Cylinder(1.0, 0.5), 500.0, Friction(0.3, 0.3)), 5.0, 1.0,
+         0.3 * (9.81 - 1.0) / 5.0, "slip"),
+        # slender box b = 0.2, h = 1.0, mu_0 = 0.8: lifts at (g - a_v) b / h along x
+        (Body("b", Box((0.4, 0.6, 2.0)), 500.0, Friction(0.8, 0.8)), 4.0, -0.5,
+         (9.81 + 0.5) * 0.2 / 1.0 / 4.0, "lift-off"),
+    ],
+)  # fmt: skip
+def test_rest_ends_at_the_closed_form_threshold(body, rate, vertical, expected, kind):
+    motion = SupportMotion3(RAMP_DT, rate * RAMP_TIME, None, np.full(RAMP_TIME.size, vertical))
+    result = simulate_body(body, motion, 1.0)
+    first = next(event for event in result.events if event[1] != "start")
+    assert first[1] == kind
+    # located on the affine multipliers to 1e-11 s, past the threshold by the admissibility
+    # slack: a margin fires at -1e-9 m g, reached 1e-9 g / k later (lever h = 1 m for the box)
+    late = 1e-9 * 9.81 / rate
+    assert expected + 0.99 * late <= first[0] <= expected + 1.01 * late + 1e-11
+    resting = result.time < expected - 1e-6
+    # while at rest the recorded forces are the static ones: N = m (g - a_v), F = m a
+    np.testing.assert_allclose(result.normal_force[resting], body.mass * (9.81 - vertical),
+                               rtol=1e-9)  # fmt: skip
+    np.testing.assert_allclose(result.friction_force[resting],
+                               body.mass * rate * result.time[resting], rtol=1e-9,
+                               atol=1e-6)  # fmt: skip

@@ -170,11 +170,24 @@ def test_until_rest_stops_where_the_body_rests(model):
     assert capped.status == "capped" and capped.core.time[-1] == pytest.approx(2.3)
 
 
+def test_a_restitution_factor_scales_the_velocity_after_each_impact(model, record, cabinet):
+    """fs.simulate passes the factor to the 3-D engine (validated against the planar one in
+    tests/validation/test_body_planar_reduction.py): the rocking cabinet's impacts change."""
+    damped = fs.simulate(model, record, 6.0, configuration="cabinet", angle=30.0,
+                         restitution=0.5)  # fmt: skip
+    assert damped.status == cabinet.status == "completed"
+    impacts = [e[0] for e in cabinet.core.events if e[1] == "impact"]
+    assert impacts, "the cabinet must rock for this test"
+    assert [e[0] for e in damped.core.events if e[1] == "impact"][:2] != impacts[:2]
+    assert damped.max_rotation[0] < cabinet.max_rotation[0]
+
+
 def test_planar_options_and_motions_are_refused_by_name(model, record):
     with pytest.raises(fs.FreestandError, match="--method general chooses a solver of planar"):
         fs.simulate(model, record, configuration="cask", method="general")
-    with pytest.raises(fs.FreestandError, match="restitution"):
-        fs.simulate(model, record, configuration="cask", restitution=0.5)
+    for factor in (1.5, -0.1, [0.5, 0.5]):
+        with pytest.raises(fs.FreestandError, match="restitution .* give one factor in"):
+            fs.simulate(model, record, configuration="cask", restitution=factor)
     crane = fs.load_model(CRANE)
     with pytest.raises(fs.FreestandError, match="only a 3-D configuration takes"):
         fs.simulate(crane, record, configuration="y-z")

@@ -52,6 +52,11 @@ def test_generate_writes_records_and_a_suite_file(generated):
         assert 0.9 <= record["min_ratio"] and record["max_ratio"] <= 1.3
         assert abs(record["peak_ratio"] - 1) <= 0.05
         assert record["duration_5_75"] > 0
+    # x and vertical: the independence of each record's two components (SRP 3.7.1)
+    assert [set(r["pairs"]) for r in checks["independence"]["records"]] == [
+        {"horizontal-vertical"}, {"horizontal-vertical"}
+    ]  # fmt: skip
+    assert checks["independence"]["passed"] and "|r| x-vertical [-]" in result.stdout
     assert (base / "suite.png").stat().st_size > 10_000
     # the PGA in the file (in g, 7 digits) is the target's 0.3 g within 5 %
     assert suite.motions[0].peak_horizontal == pytest.approx(0.3 * 9.81, rel=0.05)
@@ -146,6 +151,44 @@ def test_input_errors_exit_2_before_computing(generated, tmp_path):
     result = run_freestand("records", "spectrum", str(tmp_path / "missing.AT2"))
     assert result.returncode == 2 and "not found" in result.stderr
     assert "Traceback" not in result.stderr
+
+
+def test_generate_three_components_with_their_own_targets(tmp_path):
+    # the second horizontal component matched to a target of its own (EN 1998-1 here, RG
+    # 1.60 for x), every component checked and each record's components independent
+    folder = tmp_path / "three"
+    y_target = "en1998:ag=2.0,ground=B,type=1"
+    result = run_freestand(
+        "records", "generate", "--target", RG, "--horizontal-y", y_target,
+        "--vertical", "rg1.60:pga=0.3g,damping=5%,direction=vertical", "--count", "2",
+        "--duration", "8", "--seed", "5", "--output", str(folder), "--quiet",
+    )  # fmt: skip
+    assert result.returncode == 0, result.stdout + result.stderr
+    text = " ".join(result.stdout.split())
+    assert "suite accepted" in text
+    for title in ("horizontal: RG 1.60", "horizontal_y: EN 1998-1", "vertical: RG 1.60"):
+        assert title in text, title
+    assert "independence of each record's components (SRP 3.7.1)" in text
+    for column in ("|r| x-y [-]", "|r| x-vertical [-]", "|r| y-vertical [-]", "largest [-]"):
+        assert column in text, column
+    checks = json.loads((folder / "acceptance.json").read_text())
+    assert checks["status"] == "accepted" and checks["failures"] == []
+    independence = checks["independence"]
+    assert independence["passed"] and independence["max"] < 0.3
+    assert (
+        f"largest correlation coefficient of two components of a record: "
+        f"{independence['max']:.3f}" in text
+    )
+    assert all(record["passed"] for record in independence["records"])
+    for key in ("horizontal", "horizontal_y", "vertical"):
+        assert checks[key]["mean_ratio_min"] >= 1.0, key
+        assert all(r["min_ratio"] >= 0.9 and r["max_ratio"] <= 1.3
+                   for r in checks[key]["records"]), key  # fmt: skip
+    suite = load_suite(folder / "suite.toml")
+    assert [m.components for m in suite.motions] == [("horizontal", "horizontal_y", "vertical")] * 2
+    # each horizontal at its own target's zero-period acceleration (0.3 g; 2.0 m/s^2 x S = 1.2)
+    assert suite.motions[0].peak_horizontal == pytest.approx(0.3 * 9.81, rel=0.05)
+    assert suite.motions[0].peak_horizontal_y == pytest.approx(2.0 * 1.2, rel=0.05)
 
 
 def test_failed_acceptance_exits_1_and_says_why(tmp_path):

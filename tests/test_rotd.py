@@ -165,3 +165,43 @@ def test_rotation_angles_are_boores():
     assert rotation_angles(0.5).size == 360
     with pytest.raises(ValueError, match="does not divide"):
         rotation_angles(7.0)
+
+
+@pytest.mark.parametrize(
+    ("name", "base", "frequency", "damping"),
+    [("pga", "pga", None, 0.05), ("pgv", "pgv", None, 0.05),
+     ("sa-{}:2.5Hz,2%", "sa", 2.5, 0.02)],
+)  # fmt: skip
+def test_public_intensity_measure_against_a_brute_force_rotation(name, base, frequency, damping):
+    import freestand as fs
+
+    peaks = _brute_force_peaks(PAIR, base, frequency, damping)
+    pattern = name if "{}" in name else name + "-{}"
+    for combination, expected in (("rotd50", np.median(peaks)), ("rotd100", np.max(peaks))):
+        assert fs.intensity_measure(PAIR, pattern.format(combination)) == pytest.approx(
+            expected, rel=1e-6
+        )
+    # the geometric mean: the two components' own one-component measures (angles 0 and 90)
+    assert fs.intensity_measure(PAIR, pattern.format("gm")) == pytest.approx(
+        np.sqrt(peaks[0] * peaks[90]), rel=1e-6
+    )
+    # the one-component measure is that of x (angle 0)
+    one = "sa:2.5Hz,2%" if base == "sa" else base
+    assert fs.intensity_measure(PAIR, one) == pytest.approx(peaks[0], rel=1e-6)
+
+
+def test_public_intensity_measure_says_what_is_wrong():
+    import freestand as fs
+
+    planar = GroundMotion(PAIR.dt, PAIR.horizontal, name="rec01_H.AT2")
+    with pytest.raises(FreestandError, match=r"^im: .*'rec01_H.AT2' has one horizontal"):
+        fs.intensity_measure(planar, "pga-rotd50")
+    with pytest.raises(FreestandError, match=r"^im: 'pga-rotd' is not an intensity measure"):
+        fs.intensity_measure(PAIR, "pga-rotd")
+    with pytest.raises(FreestandError, match=r"^im: .*give the configuration"):
+        fs.intensity_measure(PAIR, "pga-alpha")
+    # with the block's configuration: PGA / (g tan alpha), alpha = atan(0.4 m / 1.2 m)
+    alpha = fs.intensity_measure(PAIR, "pga-alpha", stack=STACK)
+    assert alpha == pytest.approx(PAIR.peak_horizontal / (9.81 * 0.4 / 1.2), rel=1e-9)
+    measure = fs.IntensityMeasure("pga-rotd100")
+    assert fs.intensity_measure(PAIR, measure) == intensity(PAIR, measure, STACK)

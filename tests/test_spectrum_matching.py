@@ -10,6 +10,7 @@ from freestand.core.motion.ground_motion import GroundMotion, baseline_correct
 from freestand.core.motion.response_spectrum import response_spectrum
 from freestand.core.motion.spectrum_matching import (
     AcceptanceCriteria,
+    MatchSettings,
     arias_intensity,
     correlation_matrix,
     generate_suite,
@@ -201,3 +202,25 @@ def test_the_second_horizontal_component_has_its_own_seeds():
     assert abs(np.corrcoef(x.acceleration, y.acceleration)[0, 1]) < 0.3
     assert result.vertical is None and result.count == 1
     assert result.component_correlations()[0]["pairs"].keys() == {"horizontal-horizontal_y"}
+
+
+def test_components_that_are_not_independent_fail_the_srp_check():
+    horizontal = rg160_spectrum(0.3 * G, 0.05)
+    # a limit no independent pair of 6 s records meets: the check must fail, naming the
+    # record, the pair and SRP 3.7.1, and the suite must say "failed"
+    criteria = AcceptanceCriteria(max_correlation=0.002)
+    settings = MatchSettings(max_attempts=1)
+    result = generate_suite(
+        horizontal, count=1, duration=6.0, seed=2, horizontal_y_target=horizontal,
+        criteria=criteria, settings=settings,
+    )  # fmt: skip
+    largest = result.component_correlations()[0]["max"]
+    assert largest >= 0.002
+    assert result.status == "failed"
+    message = [f for f in result.failures if "SRP 3.7.1" in f]
+    assert message == [
+        "record 1: components horizontal and horizontal_y are not independent (SRP 3.7.1): "
+        f"correlation coefficient {largest:.3f} (must be below 0.002)"
+    ]
+    # one record: no pair of different records, so no message about two records
+    assert not any(f.startswith("records ") for f in result.failures)

@@ -15,8 +15,10 @@ API"); they are loaded on first use, so the command line starts fast:
   :func:`frequency` (Fig. 9), :func:`mode_map`, :func:`sample` (Monte
   Carlo), :func:`fragility` (and :func:`fragility_from_store`),
   :func:`write_report`, :func:`response_spectrum`, :func:`generate_suite`,
-  :func:`floor_motion`; also :class:`RockingBlock` and
-  :func:`overturning_limits`;
+  :func:`floor_motion`; also :class:`RockingBlock`,
+  :func:`overturning_limits`, and :func:`intensity_measure` with
+  :class:`IntensityMeasure` (PGA, PGV, Sa, and of two horizontal components
+  their geometric mean, RotD50 and RotD100);
 - :class:`FreestandError`, the one error class.
 
 The package is layered:
@@ -66,6 +68,8 @@ _PUBLIC = {
     "response_spectrum": "freestand.api",
     "generate_suite": "freestand.api",
     "floor_motion": "freestand.api",
+    "intensity_measure": "freestand.api",
+    "IntensityMeasure": "freestand.core.sweeps.fragility.intensity",
     "ScreeningResult": "freestand.api",
     "SimulationResult": "freestand.api",
     "BodySimulationResult": "freestand.api",

@@ -77,6 +77,7 @@ def test_box_along_x_screens_as_the_planar_block(width, height, static, ratio):
     friction = Friction(static, static * ratio)
     body = Body("b", Box((width, 0.8, height)), 1000.0, friction)
     block = _planar_block(1000.0, width, height, 1000.0 * (width**2 + height**2) / 12, friction)
+    slide_rocks = []
     for horizontal, vertical in itertools.product([0.5, 2, 4, 7, 12], [0.0, 3.0, -3.0]):
         # support acceleration along +x (phi = 0): the inertial force along -x (sense -1)
         for phi, sense in ((0.0, -1), (math.pi, 1)):
@@ -84,13 +85,24 @@ def test_box_along_x_screens_as_the_planar_block(width, height, static, ratio):
             planar = planar_initial_motion(Stack("s", (block,)), horizontal, vertical, sense)
             reference = planar.blocks[0]
             assert state.motion == reference.motion
-            if state.motion is Motion.ROCK:
+            if state.motion in (Motion.ROCK, Motion.SLIDE_ROCK):
                 normal = reference.base_normal_left + reference.base_normal_right
-                # the same equations solved two ways: 1e-9 relative
+                # the same equations solved two ways: 1e-9 relative (a slide-rock start by
+                # the time-history engine's mode choice, the planar one by the paper's kernel)
                 assert state.normal_force == pytest.approx(normal, rel=1e-9)
                 assert state.angular_acceleration == pytest.approx(
                     abs(reference.angular_acceleration), rel=1e-9
                 )
+                assert abs(state.tangential_force[0]) == pytest.approx(
+                    abs(reference.base_tangential), rel=1e-9
+                )
+                slide_rocks.append(state.motion is Motion.SLIDE_ROCK)
+
+    # tall blocks with mu_0 = 0.5 (b/h = 0.24, 0.48) start to slide and rock at the larger
+    # accelerations (the friction tips them while they slide)
+    if (width, height, static, ratio) in {(0.6, 2.5, 0.5, 0.6), (0.6, 2.5, 0.5, 1.0),
+                                          (1.2, 2.5, 0.5, 1.0)}:  # fmt: skip
+        assert any(slide_rocks)
 
 
 @pytest.mark.parametrize("phi", [0.3, 1.9, 4.0])
@@ -104,9 +116,12 @@ def test_cylinder_in_any_direction_screens_as_the_planar_block_of_its_inertia(ph
         state = initial_motion(body, horizontal, phi, vertical)
         reference = planar_initial_motion(Stack("s", (block,)), horizontal, vertical, -1).blocks[0]
         assert state.motion == reference.motion
-        if state.motion is Motion.ROCK:
+        if state.motion in (Motion.ROCK, Motion.SLIDE_ROCK):
             assert state.angular_acceleration == pytest.approx(
                 abs(reference.angular_acceleration), rel=1e-9
+            )
+            assert math.hypot(*state.tangential_force) == pytest.approx(
+                abs(reference.base_tangential), rel=1e-9
             )
 
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 from freestand.api.body_simulation import BodySimulationResult, support_motion3
 from freestand.api.fragility import FragilityResult, fragility, fragility_from_store
 from freestand.api.frequency import FrequencyResult, frequency
+from freestand.api.intensity import intensity_measure
 from freestand.api.maps import ModeMapResult, SampleResult, mode_map, sample
 from freestand.api.overturning import OverturningResult, overturning
 from freestand.api.records import (
@@ -45,6 +46,7 @@ __all__ = [
     "fragility_from_store",
     "frequency",
     "generate_suite",
+    "intensity_measure",
     "mode_map",
     "overturning",
     "response_spectrum",

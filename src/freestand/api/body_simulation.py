@@ -506,10 +506,12 @@ def check_body_options(configuration: BodyConfiguration, method: str, restitutio
             "3-D and has one engine: leave --method out",
             source="--method",
         )
-    if restitution is not None and restitution != 1.0:
+    if restitution is not None and not (
+        np.ndim(restitution) == 0 and 0.0 <= float(restitution) <= 1.0
+    ):
         raise FreestandError(
-            f"a restitution factor ({restitution}) is not available for 3-D bodies yet; their "
-            "impacts are plastic (Housner's law in a plane): leave it out",
+            f"restitution {restitution!r} for the 3-D body {configuration.name!r}: give one "
+            "factor in [0, 1] (1: the plastic impact law)",
             source="restitution",
         )
 
@@ -530,10 +532,10 @@ def simulate_body_configuration(
 ) -> BodySimulationResult:
     """The time history of a 3-D configuration (called by :func:`freestand.simulate`).
 
-    ``options``: ``tolerances`` and ``initial`` of
+    ``options``: ``tolerances``, ``initial`` and ``restitution`` of
     :func:`~freestand.core.dynamics.body_history.simulate_body`.
     """
-    unknown = sorted(set(options) - {"tolerances", "initial"})
+    unknown = sorted(set(options) - {"tolerances", "initial", "restitution"})
     if unknown:
         raise TypeError(f"simulate() got options a 3-D body does not take: {', '.join(unknown)}")
     support = support_motion3(motion, angle=angle)

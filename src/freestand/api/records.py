@@ -580,8 +580,9 @@ class GeneratedSuite:
         dict
             ``limit`` [-], ``max`` (the largest absolute correlation coefficient
             between two components of one record, over the suite),
-            ``passed``, and ``records``: per record its ``index``, ``max``
-            and the coefficient of each pair (``pairs``).
+            ``passed``, and ``records``: per record its ``index``, the
+            coefficient of each pair (``pairs``), ``max`` and ``passed``
+            (``max`` below ``limit``).
         """
         correlations = self.core.component_correlations()
         values = [c["max"] for c in correlations if c["max"] is not None]
@@ -591,7 +592,10 @@ class GeneratedSuite:
             "limit": limit,
             "max": largest,
             "passed": largest is None or largest < limit,
-            "records": [{"index": k + 1, **c} for k, c in enumerate(correlations)],
+            "records": [
+                {"index": k + 1, **c, "passed": c["max"] is None or c["max"] < limit}
+                for k, c in enumerate(correlations)
+            ],
         }
 
     def to_dict(self) -> dict:
@@ -602,9 +606,11 @@ class GeneratedSuite:
         ``max_correlation_pair``, ``horizontal`` (x), ``horizontal_y`` (y,
         only in a suite with two horizontal components), ``vertical`` (each:
         target, damping, the lowest suite-mean / target ratio, every check of
-        every record), ``independence`` (with y: the largest correlation
-        coefficient between a record's components, per record and for the
-        suite), ``output``, ``suite_file`` and ``files``. ``acceptance.json``
+        every record), ``independence`` (records of two or three
+        components: the correlation coefficient of every pair of a record's
+        components, the largest per record and for the suite, and whether
+        each is below the limit, US NRC SRP 3.7.1), ``output``,
+        ``suite_file`` and ``files``. ``acceptance.json``
         holds the same without the last three.
 
         Returns
@@ -637,7 +643,7 @@ class GeneratedSuite:
         document["vertical"] = (
             None if result.vertical is None else _component_document(result.vertical)
         )
-        if result.horizontal_y is not None:
+        if len(result.components) > 1:
             document["independence"] = self.independence()
         document.update(output=self.output, suite_file=self.suite_file, files=list(self.files))
         return document

@@ -482,7 +482,7 @@ def simulate(
         return simulate_body_configuration(
             what.name, body, motion, duration, angle=angle, max_step=max_step,
             gravity=what.gravity, until_rest=until_rest, free_time=free_time, progress=progress,
-            **options,
+            **({} if restitution is None else {"restitution": float(restitution)}), **options,
         )  # fmt: skip
     stack = what.configuration(configuration)
     check_planar_motion(stack, motion, angle)

@@ -82,8 +82,9 @@ def fragility(
     im: str = typer.Option(
         "pga",
         "--im",
-        help="Intensity measure: pga, pgv, sa:F[,DAMPING], pga-alpha[:BLOCK]; of two "
-        "horizontal components (records with x and y): pga-gm, pga-rotd50, pga-rotd100, "
+        help="Intensity measure of planar models: pga, pgv, sa:F[,DAMPING], "
+        "pga-alpha[:BLOCK]; of two horizontal components (records with x and y, for 3-D "
+        "configurations): pga-gm, pga-rotd50, pga-rotd100, "
         "pgv-gm, pgv-rotd50, pgv-rotd100, sa-gm:F[,DAMPING], sa-rotd50:F[,DAMPING], "
         "sa-rotd100:F[,DAMPING].",
     ),

@@ -58,12 +58,14 @@ FRAGILITY_KEYS = {
 MAX_SAMPLES = 10_000
 
 
-def parse_intensity(text: str, stack: Stack, option: str = "--im") -> IntensityMeasure:
+def parse_intensity(text: str, stack: Stack | None, option: str = "--im") -> IntensityMeasure:
     """Read ``pga``, ``pgv``, ``sa:F[,DAMPING]``, ``pga-alpha[:BLOCK]`` or a two-component IM.
 
     Two-component IMs (records with x and y): ``pga-gm``, ``pga-rotd50``,
     ``pga-rotd100``, the same for ``pgv``, and ``sa-gm:F[,DAMPING]``,
-    ``sa-rotd50:F[,DAMPING]``, ``sa-rotd100:F[,DAMPING]``.
+    ``sa-rotd50:F[,DAMPING]``, ``sa-rotd100:F[,DAMPING]``. ``stack`` (the
+    configuration) is needed by ``pga-alpha`` alone; whether the
+    configuration can take a two-component IM is :func:`check_planar_intensity`.
     """
     kind, _, rest = text.strip().partition(":")
     kind = kind.strip().lower()
@@ -84,6 +86,12 @@ def parse_intensity(text: str, stack: Stack, option: str = "--im") -> IntensityM
         target = parse_spectral_target(f"1@{rest}", source=option)
         return IntensityMeasure(kind, frequency=target.frequency, damping=target.damping)
     if kind == "pga-alpha":
+        if stack is None:
+            raise FreestandError(
+                f"{text!r} is a multiple of a block's rocking threshold; give the configuration "
+                "(a planar stack) it is of",
+                source=option,
+            )
         block = rest.strip() or stack.blocks[-1].name
         names = [b.name for b in stack.blocks]
         if block not in names:
@@ -236,6 +244,23 @@ def _is_float(text: str) -> bool:
     return True
 
 
+def check_planar_intensity(measure: IntensityMeasure, stack: Stack, option: str = "--im") -> None:
+    """Refuse an IM of two horizontal components for a planar configuration.
+
+    A planar model moves under the x component alone, so its fragility is
+    read against a one-component IM (``pga``, ``pgv``, ``sa``, ``pga-alpha``);
+    a two-component IM (geometric mean, RotD50, RotD100) measures a y
+    component the model never feels and is for 3-D configurations.
+    """
+    if measure.two_components:
+        raise FreestandError(
+            f"{measure.kind} ({measure.describe()}) measures two horizontal components (x and "
+            f"y), for 3-D configurations; configuration {stack.name!r} is planar and moves "
+            "under x alone: use pga, pgv, sa:FREQUENCY[,DAMPING] or pga-alpha[:BLOCK]",
+            source=option,
+        )
+
+
 def build_campaign(
     model, configuration, suite, im, levels, vary, samples, outcome, both_polarities, seed,
     free_time, *, source: str = "",
@@ -283,6 +308,7 @@ def build_campaign(
     measure = (
         im if isinstance(im, IntensityMeasure) else parse_intensity(im, stack, source + "--im")
     )
+    check_planar_intensity(measure, stack, source + "--im")
     level_values = (
         []
         if cloud

@@ -88,7 +88,8 @@ P_RHO_EDGE_X = 28  # of an edge along x (b_x / 2)
 P_RHO_EDGE_Y = 29  # of an edge along y (b_y / 2)
 P_GRAVITY = 30
 P_HEIGHT = 31
-P_SIZE = 32
+P_RESTITUTION = 32  # factor on the velocity after an impact [-] (1: plastic)
+P_SIZE = 33
 
 SHAPE_BOX = 0
 SHAPE_CYLINDER = 1
@@ -134,8 +135,12 @@ def annulus_twist_radius(radius: float, inner_radius: float = 0.0) -> float:
     return 2.0 / 3.0 * (radius**3 - inner_radius**3) / (radius**2 - inner_radius**2)
 
 
-def body_parameters(body: Body, gravity: float) -> np.ndarray:
-    """The parameter vector of the compiled kernel for ``body`` (SI units)."""
+def body_parameters(body: Body, gravity: float, restitution: float = 1.0) -> np.ndarray:
+    """The parameter vector of the compiled kernel for ``body`` (SI units).
+
+    ``restitution`` [-] multiplies the body's velocity after each impact (1:
+    the plastic impact law; the planar engine's factor, ``docs/timehistory.md``).
+    """
     out = np.zeros(P_SIZE)
     out[P_MASS] = body.mass
     inertia = np.asarray(body.inertia, dtype=float)
@@ -159,19 +164,20 @@ def body_parameters(body: Body, gravity: float) -> np.ndarray:
     out[P_MU_KINETIC] = body.friction.kinetic
     out[P_GRAVITY] = gravity
     out[P_HEIGHT] = shape.height
+    out[P_RESTITUTION] = restitution
     return out
 
 
 # --- small vector algebra ------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, inline="always")
+@nb.njit(cache=True, inline="always", error_model="numpy")
 def cross(a0, a1, a2, b0, b1, b2):
     """a x b as a tuple."""
     return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def rotation_matrix(y, out):
     """The rotation matrix R (3, 3) of the unit quaternion ``y[3:7]`` (w, x, y, z)."""
     w, x, yy, z = y[3], y[4], y[5], y[6]
@@ -186,7 +192,7 @@ def rotation_matrix(y, out):
     out[2, 2] = 1.0 - 2.0 * (x * x + yy * yy)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def world_inverse_inertia(par, rot, out):
     """I_w^-1 = R I^-1 R^T (3, 3) [1/(kg m^2)]."""
     for i in range(3):
@@ -198,7 +204,7 @@ def world_inverse_inertia(par, rot, out):
             out[i, j] = total
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def arm(par, rot, sx, sy, sz, out):
     """d = R (s - c) [m]: from G to the body-frame point s, in the support frame."""
     px = sx - par[P_CENTRE]
@@ -208,13 +214,13 @@ def arm(par, rot, sx, sy, sz, out):
         out[i] = rot[i, 0] * px + rot[i, 1] * py + rot[i, 2] * pz
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def sin_tilt(rot):
     """sin of the tilt (angle of the body's z axis from the vertical) [-]."""
     return math.sqrt(rot[2, 0] ** 2 + rot[2, 1] ** 2)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def box_corner(par, k):
     """Base corner k (0..3, counter-clockwise from (+b_x, +b_y)) in the body frame."""
     sx = par[P_HALF_X] if k == 0 or k == 3 else -par[P_HALF_X]
@@ -222,7 +228,7 @@ def box_corner(par, k):
     return sx, sy
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def rim_angle(par, rot, psi_stored):
     """Body-frame angle psi [rad] of the rim point a cylinder rolls on.
 
@@ -247,7 +253,7 @@ def rim_angle(par, rot, psi_stored):
     return lowest
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def lowest_rim_angle(rot, psi_stored):
     """Body-frame angle [rad] of the cylinder's lowest rim point (the stored one when flat)."""
     if sin_tilt(rot) <= PIVOT_LEAN:
@@ -258,7 +264,7 @@ def lowest_rim_angle(rot, psi_stored):
 # --- support motion -----------------------------------------------------------------------------
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def support_acceleration(record, dt, t):
     """(a_x, a_y, a_v) [m/s^2] at ``t`` [s]: linear between samples, zero outside.
 
@@ -276,7 +282,7 @@ def support_acceleration(record, dt, t):
     return a_x, a_y, a_v
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def applied_wrench(par, y, inv_inertia, rot, a_x, a_y, a_v, out):
     """f_0 = (m g_e, -omega x I_w omega) (6,) [N, N m]."""
     m = par[P_MASS]
@@ -300,7 +306,7 @@ def applied_wrench(par, y, inv_inertia, rot, a_x, a_y, a_v, out):
     out[5] = -gz
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def apply_inverse_mass(par, inv_inertia, w, out):
     """M^-1 w (6,)."""
     inv_m = 1.0 / par[P_MASS]
@@ -314,14 +320,14 @@ def apply_inverse_mass(par, inv_inertia, w, out):
 # --- rows of a patch ----------------------------------------------------------------------------
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def point_velocity(y, d, e0, e1, e2):
     """e . (v + omega x d) [m/s]: the velocity of the material point at arm d along e."""
     cx, cy, cz = cross(y[10], y[11], y[12], d[0], d[1], d[2])
     return e0 * (y[7] + cx) + e1 * (y[8] + cy) + e2 * (y[9] + cz)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _point_row(y, d, e0, e1, e2, column, rows, bias, k):
     """Row k: the point at arm d along the unit e.
 
@@ -340,7 +346,7 @@ def _point_row(y, d, e0, e1, e2, column, rows, bias, k):
     bias[k] = e0 * cx + e1 * cy + e2 * cz + column
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def _angular_row(e0, e1, e2, rows, bias, k):
     """Row k: the angular velocity about the unit e, ``w = (0, e)``, no bias."""
     for i in range(3):
@@ -351,7 +357,7 @@ def _angular_row(e0, e1, e2, rows, bias, k):
     bias[k] = 0.0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def rim_terms(par, y, rot, psi):
     """The moving rim point's extra acceleration terms (z, x, y) [m/s^2].
 
@@ -377,7 +383,7 @@ def rim_terms(par, y, rot, psi):
     return ez, ex, ey
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def patch_rows(par, y, rot, kind, index, psi, normal, nbias, tangent, tbias, arms):
     """Fill the rows of a patch; returns (normal rows, tangential rows, twist radius).
 
@@ -429,7 +435,7 @@ def patch_rows(par, y, rot, kind, index, psi, normal, nbias, tangent, tbias, arm
     return n_normal, 3, rho
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def normal_total(kind, lam):
     """The patch's total normal force N [N] from its normal multipliers."""
     if kind == POINT:
@@ -441,7 +447,7 @@ def normal_total(kind, lam):
     return 0.0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def tangential_velocity(y, tangent, n_tangent, out):
     """The tangential rows' velocities s (scaled slip velocity) [m/s]."""
     for k in range(n_tangent):
@@ -455,7 +461,7 @@ def tangential_velocity(y, tangent, n_tangent, out):
 # --- the solve of one mode ----------------------------------------------------------------------
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def solve_mode(par, inv_inertia, base, use_bias, slip, direction, normal, nbias, n_normal,
                tangent, tbias, n_tangent, work, matrix, rhs, acc, lam):  # fmt: skip
     """Solve the contact problem of one mode; False when its system is singular.
@@ -518,7 +524,7 @@ def solve_mode(par, inv_inertia, base, use_bias, slip, direction, normal, nbias,
     return True
 
 
-@nb.njit(cache=True, inline="always")
+@nb.njit(cache=True, inline="always", error_model="numpy")
 def normal_total_rows(n_normal, lam):
     """Total normal force of a patch from its row count (3 rows: FACE, lam[0])."""
     if n_normal == 2:
@@ -528,7 +534,7 @@ def normal_total_rows(n_normal, lam):
     return 0.0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def row_acceleration(rows, bias, k, acc):
     """w_k . x'' + b_k [m/s^2]."""
     total = bias[k]
@@ -540,7 +546,7 @@ def row_acceleration(rows, bias, k, acc):
 # --- admissibility -------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def face_centre_of_pressure(rot, lam):
     """Centre of pressure (body frame x, y) [m] of a FACE from (N, M_x, M_y)."""
     n = lam[0]
@@ -552,7 +558,7 @@ def face_centre_of_pressure(rot, lam):
     return rot[0, 0] * px + rot[1, 0] * py, rot[0, 1] * px + rot[1, 1] * py
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def normal_margin(par, rot, kind, lam):
     """The smallest normal admissibility margin of a patch [N] (>= 0 admissible).
 
@@ -575,7 +581,7 @@ def normal_margin(par, rot, kind, lam):
     return 0.0
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def friction_margin(par, n_normal, n_tangent, lam):
     """mu_0 N - |f_t| [N] of a sticking patch (>= 0 holds)."""
     total = normal_total_rows(n_normal, lam)
@@ -608,7 +614,7 @@ SC_DIR = 16
 SLIP_FLOOR = 1e-12  # [m/s] below which a slip velocity has no direction of its own
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def new_scratch():
     """The work arrays of the kernel, as one tuple (see the SC_* indices)."""
     return (
@@ -619,7 +625,7 @@ def new_scratch():
     )  # fmt: skip
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def pivot_angle(par, y, rot, kind, psi_stored):
     """The rim angle of a cylinder's POINT patch (stored when flat), else the stored value."""
     if kind == POINT and par[P_SHAPE] == SHAPE_CYLINDER:
@@ -627,7 +633,7 @@ def pivot_angle(par, y, rot, kind, psi_stored):
     return psi_stored
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def prepare(par, record, dt, t, y, kind, index, psi, sc):
     """Rotation, inverse inertia, applied wrench, M^-1 f_0 and the patch's rows at ``t``.
 
@@ -655,7 +661,7 @@ def prepare(par, record, dt, t, y, kind, index, psi, sc):
     return n_normal, n_tangent
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def slip_direction(y, n_tangent, data, sc):
     """The sliding direction u: the slip velocity's while it points on the stored one's side.
 
@@ -682,7 +688,7 @@ def slip_direction(y, n_tangent, data, sc):
     return direction
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def solve_at(par, record, dt, t, y, mode, data, sc):
     """Solve the held mode at (t, y): fills sc[SC_ACC] and sc[SC_LAM]; False if singular.
 
@@ -700,7 +706,7 @@ def solve_at(par, record, dt, t, y, mode, data, sc):
     return ok, n_normal, n_tangent
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def rate(par, record, dt, t, y, mode, data, sc, ydot):
     """y' of the held mode at (t, y); False when the mode's system is singular.
 
@@ -708,7 +714,13 @@ def rate(par, record, dt, t, y, mode, data, sc, ydot):
     ``(v', omega') = x''``.
     """
     ok, _, _ = solve_at(par, record, dt, t, y, mode, data, sc)
-    acc = sc[SC_ACC]
+    state_rate(y, sc[SC_ACC], ydot)
+    return ok
+
+
+@nb.njit(cache=True, error_model="numpy")
+def state_rate(y, acc, ydot):
+    """y' from the state and the accelerations ``acc`` = (v', omega') of a solve (:func:`rate`)."""
     for i in range(3):
         ydot[i] = y[7 + i]
         ydot[7 + i] = acc[i]
@@ -720,13 +732,12 @@ def rate(par, record, dt, t, y, mode, data, sc, ydot):
     ydot[4] = 0.5 * (q0 * wx + cx)
     ydot[5] = 0.5 * (q0 * wy + cy)
     ydot[6] = 0.5 * (q0 * wz + cz)
-    return ok
 
 
 # --- gaps of the base ---------------------------------------------------------------------------
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def corner_gap(par, y, rot, k, d):
     """(gap [m], gap velocity [m/s]) of the box's base corner k; its arm in ``d``."""
     sx, sy = box_corner(par, k)
@@ -734,7 +745,7 @@ def corner_gap(par, y, rot, k, d):
     return y[2] + d[2], point_velocity(y, d, 0.0, 0.0, 1.0)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def rim_gap(par, y, rot, d):
     """(gap [m], gap velocity [m/s], psi) of the cylinder's lowest rim point; arm in ``d``.
 
@@ -758,7 +769,7 @@ def rim_gap(par, y, rot, d):
     return y[2] + d[2], point_velocity(y, d, 0.0, 0.0, 1.0), psi
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def flat_gap(par, y, rot):
     """Largest gap [m] of the base's outline.
 
@@ -776,7 +787,7 @@ def flat_gap(par, y, rot):
     return g + 2.0 * par[P_HALF_X] * sin_tilt(rot)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, error_model="numpy")
 def energy(par, y):
     """Kinetic plus potential energy m g z_G [J] in the support's frame (no excitation)."""
     rot = np.empty((3, 3))

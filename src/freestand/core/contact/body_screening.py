@@ -34,7 +34,8 @@ where it can):
   sliding: the kinetic friction mu m (g - a_v) at the base, the only
   horizontal force, moves the centre of pressure by ``mu h`` from G_xy
   towards -u whatever a is, which must stay inside the base (``mu h <= rho``);
-- slide-rock otherwise (the pivot slides while the body tips);
+- slide-rock otherwise (the pivot slides while the body tips; its forces from
+  the time-history engine's mode choice, :func:`sliding_pivot`);
 - free flight when ``a_v >= g``.
 
 Sliding starts in the direction of the inertial force, -u, and in 3-D its
@@ -50,7 +51,21 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from freestand.core.body import Body, Box, base_ray_distance
+from freestand.core.contact.body_kernel import (
+    EDGE,
+    M_KIND,
+    M_SLIP,
+    POINT,
+    SC_ACC,
+    SC_LAM,
+    body_parameters,
+    new_scratch,
+    normal_total,
+    solve_at,
+)
+from freestand.core.contact.body_modes import select_mode
 from freestand.core.contact.screening import GRAVITY, Motion, vertical_label
+from freestand.core.dynamics.results import ContactTolerances
 
 #: Relative tolerance [-] of the comparisons with the thresholds (round-off).
 THRESHOLD_TOLERANCE = 1e-12
@@ -182,6 +197,42 @@ def _rocking(body: Body, load: np.ndarray, pivot: np.ndarray, axes) -> tuple | N
     return None
 
 
+def sliding_pivot(body: Body, horizontal: float, direction: float, vertical: float = 0.0,
+                  gravity: float = GRAVITY) -> tuple | None:  # fmt: skip
+    """(N [N], (F_x, F_y) [N], |omega'| [rad/s^2]) of a slide-rock start, or None.
+
+    The body at rest under the support acceleration ``horizontal`` [m/s^2]
+    along ``direction`` [rad] (and ``vertical`` a_v downward): the contact
+    mode the time-history engine starts in
+    (:func:`freestand.core.contact.body_modes.select_mode`: the pivot's slip
+    direction u with ``s'(u)`` along u and the kinetic friction
+    ``-mu N u``), solved for its contact force and angular acceleration.
+    None when that mode is not an edge or a point that slides.
+    """
+    par = body_parameters(body, gravity)
+    tolerances = ContactTolerances()
+    record = np.zeros((3, 2))
+    record[0, :] = horizontal * math.cos(direction)
+    record[1, :] = horizontal * math.sin(direction)
+    record[2, :] = vertical
+    y = np.zeros(13)  # flat on the support, at rest (the engine's initial state)
+    y[3] = 1.0
+    y[2] = body.centre[2]
+    mode = np.zeros(3, dtype=np.int64)
+    data = np.zeros(4)
+    scratch = new_scratch()
+    none = np.array([-1, 0, 0], dtype=np.int64)
+    chosen = select_mode(par, record, 1.0, 0.0, y, scratch, tolerances.gap, tolerances.velocity,
+                         mode, data, none)  # fmt: skip
+    if chosen < 0 or mode[M_SLIP] != 1 or mode[M_KIND] not in (EDGE, POINT):
+        return None
+    solve_at(par, record, 1.0, 0.0, y, mode, data, scratch)
+    lam = scratch[SC_LAM]
+    n_normal = 1 if mode[M_KIND] == POINT else 2
+    force = (float(lam[n_normal]), float(lam[n_normal + 1]))
+    return float(normal_total(mode[M_KIND], lam)), force, float(np.linalg.norm(scratch[SC_ACC][3:]))
+
+
 def initial_motion(
     body: Body, horizontal: float, direction: float, vertical: float = 0.0,
     gravity: float = GRAVITY,
@@ -204,8 +255,9 @@ def initial_motion(
     Returns
     -------
     BodyInitialMotion
-        For slide-rock the forces and the angular acceleration are not
-        computed (NaN): they need the sliding pivot's dynamics.
+        For slide-rock the forces and the angular acceleration are the
+        engine's starting mode's (:func:`sliding_pivot`); NaN where it has
+        none.
     """
     weight = gravity - vertical
     u = np.array([math.cos(direction), math.sin(direction), 0.0])
@@ -245,7 +297,11 @@ def initial_motion(
     if horizontal > slide_threshold * slack and stays_flat:
         return state(Motion.SLIDE, sliding=True, normal=body.mass * weight, force=friction,
                      alpha=0.0)  # fmt: skip
-    return state(Motion.SLIDE_ROCK, label, sliding=True)
+    start = sliding_pivot(body, horizontal, direction, vertical, gravity)
+    if start is None:
+        return state(Motion.SLIDE_ROCK, label, sliding=True)
+    normal, force, alpha = start
+    return state(Motion.SLIDE_ROCK, label, sliding=True, normal=normal, force=force, alpha=alpha)
 
 
 def screen_directions(

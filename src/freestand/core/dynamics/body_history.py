@@ -240,6 +240,7 @@ def simulate_body(
     gravity: float = GRAVITY,
     tolerances: ContactTolerances | None = None,
     initial: np.ndarray | None = None,
+    restitution: float = 1.0,
 ) -> BodyTimeHistory:
     """Event-driven time history of a box or cylinder on the support under three components.
 
@@ -260,6 +261,10 @@ def simulate_body(
         Gap [m] and velocity [m/s] within which a point touches.
     initial : numpy.ndarray, optional
         (13,) initial state; default at rest, flat on the support.
+    restitution : float, optional
+        Factor e in [0, 1] on the body's velocity after each impact [-] (1:
+        the plastic law; in a plane the angular-velocity ratio becomes ``e``
+        times Housner's, as the planar engine's factor).
 
     Returns
     -------
@@ -269,7 +274,8 @@ def simulate_body(
     -----
     Exact rigid unilateral contact with Coulomb friction on the circular
     cone, events located to 1e-11 s, impacts plastic at the impacting points
-    (Housner's law in a plane); see ``docs/three-d.md``.
+    (Housner's law in a plane), then scaled by ``restitution``; see
+    ``docs/three-d.md``.
     """
     tolerances = tolerances or ContactTolerances()
     end = motion.duration if duration is None else float(duration)
@@ -278,7 +284,12 @@ def simulate_body(
     step = default_body_step(body, gravity) if max_step is None else float(max_step)
     if not (step > 0.0 and math.isfinite(step)):
         raise FreestandError(f"max_step must be positive, not {max_step!r} s")
-    par = body_parameters(body, gravity)
+    if not 0.0 <= restitution <= 1.0:
+        raise FreestandError(
+            f"restitution must lie in [0, 1] (1: the plastic impact law), not {restitution!r}",
+            source="restitution",
+        )
+    par = body_parameters(body, gravity, float(restitution))
     record = np.ascontiguousarray(motion.array())
     breaks = _breaks(motion)
     y = initial_state(body) if initial is None else np.array(initial, dtype=float)

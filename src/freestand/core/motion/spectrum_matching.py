@@ -32,7 +32,9 @@ the target's damping, at 100 log-spaced frequencies per decade from 0.2 to
 50 Hz, within 0.9 and 1.3 times the target at every frequency; the suite mean
 not below the target; the peak acceleration within 5 % of the target's
 zero-period value; the 5-75 % Arias-intensity duration reported; the
-correlation coefficient of any two records below 0.3.
+correlation coefficient of any two records below 0.3, and of any two
+components of one record (x, y, vertical: their statistical independence)
+below 0.3.
 
 References
 ----------
@@ -49,7 +51,7 @@ US NRC (2014). Standard Review Plan 3.7.1, Seismic design parameters, Rev. 4.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -761,7 +763,11 @@ def generate_suite(
         ``settings.max_attempts``); a record too correlated with an earlier
         one (any component of any record, so also the components of one
         record with each other) is regenerated as well; what still fails is
-        listed in ``failures``, never dropped.
+        listed in ``failures``, never dropped: a record's spectrum, peak or
+        duration, a suite mean below its target, two records correlated,
+        or a record whose components are not independent (US NRC SRP
+        3.7.1: the correlation coefficient of every pair of its components
+        below ``criteria.max_correlation``, :meth:`SuiteResult.component_correlations`).
     """
     criteria = criteria or AcceptanceCriteria()
     settings = settings or MatchSettings()
@@ -828,11 +834,14 @@ def generate_suite(
             labels.append(f"{index + 1}{letters[direction]}")
             histories.append(results[direction][index].acceleration)
     max_corr, pair = 0.0, ("", "")
+    across = (0.0, ("", ""))
     if len(histories) > 1:
         matrix = np.abs(correlation_matrix(histories))
         np.fill_diagonal(matrix, 0.0)
-        i, j = np.unravel_index(int(np.argmax(matrix)), matrix.shape)
-        max_corr, pair = float(matrix[i, j]), (labels[min(i, j)], labels[max(i, j)])
+        max_corr, pair = _largest_pair(matrix, labels)
+        # pairs of different records (those of one record: the independence check below)
+        owners = np.repeat(np.arange(count), len(components))
+        across = _largest_pair(np.where(owners[:, None] == owners, 0.0, matrix), labels)
     suite_components = {}
     for direction, spectrum in components:
         records = tuple(results[direction])
@@ -855,12 +864,12 @@ def generate_suite(
                 f"suite mean {direction} spectrum is {mean_min:.3f} x target at its lowest "
                 "(must not be below the target)"
             )
-    if max_corr >= criteria.max_correlation:
+    if across[0] >= criteria.max_correlation:
         failures.append(
-            f"records {pair[0]} and {pair[1]} have a correlation coefficient {max_corr:.3f} "
-            f"(must be below {criteria.max_correlation:g})"
+            f"records {across[1][0]} and {across[1][1]} have a correlation coefficient "
+            f"{across[0]:.3f} (must be below {criteria.max_correlation:g})"
         )
-    return SuiteResult(
+    result = SuiteResult(
         horizontal=suite_components["horizontal"],
         vertical=suite_components.get("vertical"),
         dt=dt,
@@ -868,7 +877,35 @@ def generate_suite(
         max_correlation=max_corr,
         max_correlation_pair=pair,
         criteria=criteria,
-        status="failed" if failures else "accepted",
-        failures=tuple(failures),
+        status="accepted",
         horizontal_y=suite_components.get("horizontal_y"),
     )
+    failures += _independence_failures(result)
+    return replace(result, status="failed" if failures else "accepted", failures=tuple(failures))
+
+
+def _largest_pair(matrix: np.ndarray, labels: list[str]) -> tuple[float, tuple[str, str]]:
+    """The largest entry of a symmetric |correlation| matrix and its two labels."""
+    i, j = np.unravel_index(int(np.argmax(matrix)), matrix.shape)
+    return float(matrix[i, j]), (labels[min(i, j)], labels[max(i, j)])
+
+
+def _independence_failures(result: SuiteResult) -> list[str]:
+    """The records whose components are not statistically independent (SRP 3.7.1).
+
+    US NRC SRP 3.7.1 (Rev. 4) asks for the components of a record to be
+    statistically independent: the absolute correlation coefficient of every
+    pair below ``criteria.max_correlation`` (0.3).
+    """
+    limit = result.criteria.max_correlation
+    failures = []
+    for index, record in enumerate(result.component_correlations()):
+        if record["max"] is not None and record["max"] >= limit:
+            worst = max(record["pairs"], key=record["pairs"].get)
+            first, second = worst.split("-")
+            failures.append(
+                f"record {index + 1}: components {first} and {second} are not independent "
+                f"(SRP 3.7.1): correlation coefficient {record['max']:.3f} (must be below "
+                f"{limit:g})"
+            )
+    return failures

@@ -19,7 +19,10 @@ planar models:
     its two lower contacts (:class:`freestand.core.rocking.properties.RockingBlock`).
 
 Kinds of two horizontal components (x and y), independent of the record's
-orientation (:mod:`freestand.core.motion.rotd`, Boore 2010):
+orientation (:mod:`freestand.core.motion.rotd`, Boore 2010), for 3-D
+configurations (a planar model moves under x alone, and
+:func:`freestand.io.fragility_options.check_planar_intensity` refuses them
+for it):
 
 ``pga-gm``, ``pgv-gm``, ``sa-gm``
     Geometric mean sqrt(IM_x IM_y) of the two components' PGA [m/s^2], PGV
@@ -87,6 +90,15 @@ class IntensityMeasure:
         Damping ratio zeta [-] (``"sa"`` kinds; default 0.05).
     block : str, optional
         Block name (``"pga-alpha"``; default the stack's top block).
+
+    Examples
+    --------
+    >>> import freestand as fs
+    >>> measure = fs.IntensityMeasure("sa-rotd50", frequency=2.5)
+    >>> measure.describe(), measure.unit, measure.two_components
+    ('Sa(2.5 Hz, 5 %) RotD50', 'm/s^2', True)
+    >>> fs.IntensityMeasure("pga").two_components
+    False
     """
 
     kind: str
