@@ -15,7 +15,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 
 #: Benchmarks that need an optional dependency (``pip install -e ".[bench]"``).
-OPTIONAL = {"mujoco_rocking": "mujoco", "engine": "mujoco"}
+OPTIONAL = {"mujoco_rocking": "mujoco", "engine": "mujoco", "mujoco_body": "mujoco"}
 
 
 def main(names: list[str]) -> int:

@@ -14,7 +14,13 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from freestand.core.body import Body, Box
-from freestand.core.contact.body_kernel import FACE, FREE, STATE_SIZE, body_parameters
+from freestand.core.contact.body_kernel import (
+    FACE,
+    FREE,
+    PIVOT_LEAN,
+    STATE_SIZE,
+    body_parameters,
+)
 from freestand.core.dynamics import body_engine as engine
 from freestand.core.dynamics.results import ContactTolerances
 from freestand.core.dynamics.single_block import UPLIFT_GAP_FRACTION
@@ -23,14 +29,15 @@ from freestand.errors import FreestandError
 GRAVITY = 9.81
 
 MOTION_NAMES = {0: "free-flight", 1: "rock-corner", 2: "rock-edge", 3: "rest"}
+EVENT_ROWS = 200_000  # events kept (the engine counts the others)
 
 #: After the record, the body is at rest when it sits flat, sticks and no velocity
 #: component exceeds this [m/s, rad/s] (the planar engine's rest test).
 REST_VELOCITY = 1e-9
 
-#: A base point deeper below the support than this fraction of the base width [-] means the
-#: contact was lost (round-off stays below 1e-11 of it): the simulation failed there.
-LOST_CONTACT_FRACTION = 1e-6
+#: A base point deeper below the support than this many times the depth the engine's
+#: tolerances allow (:func:`lost_contact_depth`) means the contact was lost [-].
+LOST_CONTACT_MARGIN = 10.0
 
 
 @dataclass(frozen=True)
@@ -143,12 +150,14 @@ class BodyTimeHistory:
     overturn_time : float or None
         [s].
     diagnostics : dict
-        steps, events, impacts, remedies (modes without an admissible
-        candidate, continued in free flight).
+        steps, events, impacts, remedies (where no contact mode was
+        admissible: a velocity-level impact or time stepping) and
+        stretch_steps (the time-stepping steps).
     message : str
-        Why the simulation failed (status ``"failed"``: a base point went
-        more than :data:`LOST_CONTACT_FRACTION` of the base width below the
-        support; the histories, events and peaks stop before it), else empty.
+        Why the simulation failed (status ``"failed"``: the state stopped
+        being finite, or a base point went deeper below the support than
+        :func:`lost_contact_depth`; the histories, events and peaks stop
+        before it), else empty.
     """
 
     body: str
@@ -297,9 +306,11 @@ def simulate_body(
     mode = np.zeros(3, dtype=np.int64)
     data = np.zeros(4)
     istate = np.zeros(engine.I_SIZE, dtype=np.int64)
-    capacity = int(end / step * 1.2) + 1000
+    # a step ends at max_step, at every break of the record and at every event
+    capacity = int(end / step * 1.1) + 2 * int(np.count_nonzero(breaks < end)) + 64
     buffers = _buffers(capacity)
-    events = (np.zeros(200_000),) + tuple(np.zeros(200_000, dtype=np.int64) for _ in range(3))
+    # written by the engine before they are read: not zeroed
+    events = (np.empty(EVENT_ROWS),) + tuple(np.empty(EVENT_ROWS, dtype=np.int64) for _ in range(3))
     t = 0.0
     chunks = []
     while True:
@@ -318,36 +329,120 @@ def simulate_body(
         np.concatenate([c[k] if i == 0 else c[k][1:] for i, c in enumerate(chunks)])
         for k in range(4)
     )
-    return _result(body, par, istate, time, state, modes, forces, events)
+    return _result(body, par, istate, time, state, modes, forces, events, tolerances.gap)
 
 
 def _buffers(capacity: int):
-    return (np.zeros(capacity), np.zeros((capacity, STATE_SIZE)),
-            np.zeros((capacity, 3), dtype=np.int64), np.zeros((capacity, 2)))  # fmt: skip
+    return (np.empty(capacity), np.empty((capacity, STATE_SIZE)),
+            np.empty((capacity, 3), dtype=np.int64), np.empty((capacity, 2)))  # fmt: skip
 
 
-def _result(body, par, istate, time, state, modes, forces, events) -> BodyTimeHistory:
-    # base centre = r - R c
-    rot = rotation_matrices(state[:, 3:7])
-    base = state[:, 0:3] - rot @ np.asarray(body.centre)
-    width = min(body.shape.size[:2]) if isinstance(body.shape, Box) else 2.0 * body.shape.radius
-    lowest, highest = _base_heights(body, rot, base)
-    lost = np.flatnonzero(lowest < -LOST_CONTACT_FRACTION * width)
-    message = ""
-    if lost.size:  # the histories stop before a base point went through the support
-        first = int(lost[0])
-        message = (
-            f"a base point went {-lowest[first]:.3g} m below the support at t = "
-            f"{time[first]:.6g} s: the contact was lost; the histories stop before it"
-        )
-        time, state, modes, forces, base, highest = (
-            a[:first] for a in (time, state, modes, forces, base, highest))  # fmt: skip
+@dataclass(frozen=True)
+class BodyMotion:
+    """The motion of a body read from its states (:func:`body_motion`).
+
+    Attributes
+    ----------
+    tilt : numpy.ndarray
+        (K,) angle of the body's z axis from the vertical [rad].
+    slide : numpy.ndarray
+        (K, 2) horizontal displacement of the base centre from the first state [m].
+    twist : numpy.ndarray
+        (K,) rotation about the vertical from the first state (swing-twist
+        decomposition of the orientation, unwrapped) [rad].
+    lowest, highest : numpy.ndarray
+        (K,) height of the lowest and of the highest point of the base's
+        outline above the support [m] (a box's corners, a cylinder's rim).
+    """
+
+    tilt: np.ndarray
+    slide: np.ndarray
+    twist: np.ndarray
+    lowest: np.ndarray
+    highest: np.ndarray
+
+
+def body_motion(body: Body, state: np.ndarray) -> BodyMotion:
+    """Tilt, slide, twist and base heights of ``body`` from its states.
+
+    Parameters
+    ----------
+    body : Body
+    state : numpy.ndarray
+        (K, >= 7): the centre of gravity r [m] and the orientation quaternion
+        (w, x, y, z) [-] of the body frame (origin at the base centre, z
+        along the body's axis) in the support frame, as
+        :attr:`BodyTimeHistory.state`.
+
+    Returns
+    -------
+    BodyMotion
+
+    Notes
+    -----
+    With the quaternion q = (w, x, y, z): ``cos(tilt) = 1 - 2 (x^2 + y^2)``
+    (the z component of the body's axis), ``twist = 2 atan2(z, w)`` (the
+    rotation about the vertical when the orientation is split into a twist
+    about the vertical followed by a swing of the axis), the base centre
+    ``r - R c`` with c the centre of gravity in the body frame.
+    """
+    state = np.asarray(state, dtype=float)
     w, qx, qy, qz = state[:, 3], state[:, 4], state[:, 5], state[:, 6]
     cos_tilt = 1.0 - 2.0 * (qx**2 + qy**2)
     tilt = np.arccos(np.clip(cos_tilt, -1.0, 1.0))
     twist = np.unwrap(2.0 * np.arctan2(qz, w))
     twist -= twist[0]
-    slide = base[:, 0:2] - base[0, 0:2]
+    rot = rotation_matrices(state[:, 3:7])
+    # base centre = r - R c
+    base = state[:, 0:3] - rot @ np.asarray(body.centre)
+    lowest, highest = _base_heights(body, rot, base)
+    return BodyMotion(tilt, base[:, 0:2] - base[0, 0:2], twist, lowest, highest)
+
+
+def lost_contact_depth(width: float, gap: float) -> float:
+    """Depth [m] of a base point below the support past which the contact was lost.
+
+    ``LOST_CONTACT_MARGIN (gap + PIVOT_LEAN width)``: the engine lets a
+    point within the gap tolerance ``gap`` [m] touch, and turns a cylinder
+    within ``PIVOT_LEAN`` of flat about its stored rim point, whose lowest
+    rim point may then lie up to ``2 R sin(tilt) <= PIVOT_LEAN width`` below
+    it; ``width`` [m] is the base's smaller side or diameter.
+    """
+    return LOST_CONTACT_MARGIN * (gap + PIVOT_LEAN * width)
+
+
+def _valid_rows(time, state, lowest, depth) -> tuple[int, str]:
+    """Rows before the first state that is not finite or lies below the support; why.
+
+    A base point more than ``depth`` [m] below the support
+    (:func:`lost_contact_depth`) means the contact was lost; at least the
+    first row is kept.
+    """
+    finite = np.all(np.isfinite(state), axis=1)
+    below = lowest < -depth
+    bad = np.flatnonzero(~finite | below)
+    if bad.size == 0:
+        return time.size, ""
+    first = int(bad[0])
+    rows = max(first, 1)
+    if not finite[first]:
+        why = f"the state stopped being finite at t = {time[first]:.6g} s"
+    else:
+        why = (f"a base point went {-lowest[first]:.3g} m below the support at "
+               f"t = {time[first]:.6g} s: the contact was lost")  # fmt: skip
+    return rows, (f"{why} (a defect of the 3-D engine); the histories and peaks stop at "
+                  f"t = {time[rows - 1]:.6g} s")  # fmt: skip
+
+
+def _result(
+    body, par, istate, time, state, modes, forces, events, gap=ContactTolerances.gap
+) -> BodyTimeHistory:
+    motion = body_motion(body, state)
+    width = min(body.shape.size[:2]) if isinstance(body.shape, Box) else 2.0 * body.shape.radius
+    rows, message = _valid_rows(time, state, motion.lowest, lost_contact_depth(width, gap))
+    time, state, modes, forces = time[:rows], state[:rows], modes[:rows], forces[:rows]
+    tilt, slide, twist = motion.tilt[:rows], motion.slide[:rows], motion.twist[:rows]
+    highest = motion.highest[:rows]
     count = int(istate[engine.I_EVENTS])
     names = ("free", "point", "edge", "face")
     event_list = tuple(

@@ -1,0 +1,77 @@
+"""Reading a 3-D body's motion from its states (issue #18): tilt, slide, twist, base heights."""
+
+import math
+
+import numpy as np
+import pytest
+
+from freestand.core.body import Body, Box, Cylinder
+from freestand.core.dynamics.body_history import (
+    _valid_rows,
+    body_motion,
+    initial_state,
+    lost_contact_depth,
+)
+from freestand.core.model import Friction
+
+BOX = Body("box", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.5, 0.5))
+CASK = Body("cask", Cylinder(0.5, 2.0), 1000.0, Friction(0.5, 0.5))
+
+
+def _yawed(state, angle):
+    """The state turned by ``angle`` about the vertical through the origin."""
+    turned = state.copy()
+    c, s = math.cos(0.5 * angle), math.sin(0.5 * angle)
+    w, x, y, z = state[3:7]
+    turned[3:7] = (c * w - s * z, c * x - s * y, c * y + s * x, c * z + s * w)
+    r = state[0:3]
+    turned[0:3] = (math.cos(angle) * r[0] - math.sin(angle) * r[1],
+                   math.sin(angle) * r[0] + math.cos(angle) * r[1], r[2])  # fmt: skip
+    return turned
+
+
+@pytest.mark.parametrize("body", [BOX, CASK], ids=["box", "cylinder"])
+def test_a_body_tilted_on_its_base_edge_has_that_tilt_and_lifts_its_far_side(body):
+    angle = 0.2
+    states = np.array([initial_state(body), initial_state(body, (angle, 0.0))])
+    motion = body_motion(body, states)
+    np.testing.assert_allclose(motion.tilt, [0.0, angle], atol=1e-12)
+    # turned about x with G kept over the same point, standing on its edge (or rim point)
+    # at y = -w/2: the far side rises by w sin(angle), the base centre moves by h sin(angle)
+    width = body.shape.size[1] if isinstance(body.shape, Box) else 2.0 * body.shape.radius
+    np.testing.assert_allclose(motion.lowest, [0.0, 0.0], atol=1e-12)
+    np.testing.assert_allclose(motion.highest, [0.0, width * math.sin(angle)], atol=1e-12)
+    expected = [0.0, body.centre_height * math.sin(angle)]
+    np.testing.assert_allclose(motion.slide[1], expected, atol=1e-12)
+    np.testing.assert_allclose(motion.twist, 0.0, atol=1e-12)
+
+
+def test_a_yaw_is_a_twist_and_turns_the_slide_with_it():
+    tilted = initial_state(BOX, (0.1, 0.05))
+    tilted[0:2] += (0.3, -0.2)
+    states = np.array([initial_state(BOX), tilted, _yawed(tilted, 2.5), _yawed(tilted, 4.0)])
+    motion = body_motion(BOX, states)
+    # a tilt is a swing: it leaves the twist alone; turning about the vertical adds to it,
+    # unwrapped past pi
+    np.testing.assert_allclose(motion.twist, [0.0, 0.0, 2.5, 4.0], atol=1e-12)
+    np.testing.assert_allclose(motion.tilt[1:], math.hypot(0.1, 0.05), atol=1e-12)
+    slide = motion.slide[1]
+    for k, angle in ((2, 2.5), (3, 4.0)):
+        turned = (math.cos(angle) * slide[0] - math.sin(angle) * slide[1],
+                  math.sin(angle) * slide[0] + math.cos(angle) * slide[1])  # fmt: skip
+        np.testing.assert_allclose(motion.slide[k], turned, atol=1e-12)
+
+
+def test_a_history_is_cut_before_a_state_below_the_support_or_not_finite():
+    time = np.arange(5.0)
+    state = np.tile(initial_state(BOX), (5, 1))
+    lowest = np.array([0.0, -1e-7, -0.01, 0.0, 0.0])  # within the gap tolerance, then lost
+    depth = lost_contact_depth(0.6, 1e-7)
+    rows, message = _valid_rows(time, state, lowest, depth)
+    assert rows == 2
+    assert "0.01 m below the support at t = 2 s: the contact was lost" in message
+    state[1, 4] = math.nan
+    rows, message = _valid_rows(time, state, np.zeros(5), depth)
+    assert rows == 1
+    assert "stopped being finite at t = 1 s" in message
+    assert _valid_rows(time, np.tile(initial_state(BOX), (5, 1)), np.zeros(5), depth) == (5, "")
