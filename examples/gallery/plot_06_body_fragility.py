@@ -1,6 +1,6 @@
 """
 Fragility of a 3-D body: does the direction of the shaking matter?
-=================================================================
+==================================================================
 
 A free-standing cabinet is narrower one way than the other; a cylinder is
 round. Shaken along one horizontal direction, the cabinet should tip sooner

@@ -73,7 +73,7 @@ class BodyOverturningResult(Result):
         The same on 48 frequencies from 0.1 to 20 Hz (the figure).
     operating_amplitude : float or None
         The amplitude of interest [m/s^2] (the largest horizontal excitation,
-        |(x, y)|), None without excitations.
+        ``|(x, y)|``), None without excitations.
     include_vertical : bool
         Whether the weight is m (g - a_v).
     vertical_acceleration : float

@@ -168,7 +168,7 @@ def slides_flat(body: Body) -> bool:
 
 
 def largest_horizontal(excitations) -> float | None:
-    """The largest horizontal magnitude |(x, y)| of the excitations [m/s^2], None if none."""
+    """The largest horizontal magnitude ``|(x, y)|`` of the excitations [m/s^2], None if none."""
     if not excitations:
         return None
     return max(math.hypot(e.horizontal, e.horizontal_y) for e in excitations)
