@@ -212,6 +212,17 @@ def _free_decision(par, theta, omega):
     return False, margin
 
 
+@nb.njit(cache=True, inline="always")
+def _keep(hist_t, hist_th, hist_om, n_hist, t, theta, omega):
+    """Write (t, theta, omega) at row ``n_hist`` of the history while it has room; the new count."""
+    if n_hist < hist_t.shape[0]:
+        hist_t[n_hist] = t
+        hist_th[n_hist] = theta
+        hist_om[n_hist] = omega
+        return n_hist + 1
+    return n_hist
+
+
 @nb.njit(cache=True)
 def _simulate(
     par,
@@ -263,7 +274,6 @@ def _simulate(
     if theta < 0.0 or (theta == 0.0 and omega < 0.0):
         side = -1
     n_hist = 0
-    n_hist_max = hist_t.shape[0]
     n_imp = 0
     n_imp_max = imp_log.shape[0]
     n_lift = 0
@@ -283,11 +293,7 @@ def _simulate(
     if rest_speed > 0.0:
         w_rest_p = rest_speed
         w_rest_m = rest_speed
-    if n_hist < n_hist_max:
-        hist_t[n_hist] = t
-        hist_th[n_hist] = theta
-        hist_om[n_hist] = omega
-        n_hist += 1
+    n_hist = _keep(hist_t, hist_th, hist_om, n_hist, t, theta, omega)
     while True:
         if in_pulse and t >= dur * (1.0 - 1e-13):
             in_pulse = False
@@ -332,11 +338,7 @@ def _simulate(
                 # again at once would undo the same start forever)
                 settled = False
                 t = t + h
-                if n_hist < n_hist_max:
-                    hist_t[n_hist] = t
-                    hist_th[n_hist] = theta
-                    hist_om[n_hist] = omega
-                    n_hist += 1
+                n_hist = _keep(hist_t, hist_th, hist_om, n_hist, t, theta, omega)
                 continue
             settled = False
             if s_now != 0:
@@ -375,18 +377,10 @@ def _simulate(
                     lift_log[n_lift, 0] = t
                     lift_log[n_lift, 1] = side
                 n_lift += 1
-                if n_hist < n_hist_max:
-                    hist_t[n_hist] = t
-                    hist_th[n_hist] = theta
-                    hist_om[n_hist] = omega
-                    n_hist += 1
+                n_hist = _keep(hist_t, hist_th, hist_om, n_hist, t, theta, omega)
                 continue
             t = t + h
-            if n_hist < n_hist_max:
-                hist_t[n_hist] = t
-                hist_th[n_hist] = theta
-                hist_om[n_hist] = omega
-                n_hist += 1
+            n_hist = _keep(hist_t, hist_th, hist_om, n_hist, t, theta, omega)
             continue
         th1, om1 = _rk4(par, kind, exc, rec, vrec, side, t, theta, omega, h, in_pulse)
         if side * th1 < 0.0:
@@ -472,11 +466,7 @@ def _simulate(
             omega = om1
         if abs(theta) > max_abs:
             max_abs = abs(theta)
-        if n_hist < n_hist_max:
-            hist_t[n_hist] = t
-            hist_th[n_hist] = theta
-            hist_om[n_hist] = omega
-            n_hist += 1
+        n_hist = _keep(hist_t, hist_th, hist_om, n_hist, t, theta, omega)
         if side * theta >= _HALF_PI:
             overturned = True
             t_over = t
