@@ -648,19 +648,18 @@ def prepare(par, record, dt, t, y, kind, index, psi, sc):
     a_x, a_y, a_v = support_acceleration(record, dt, t)
     applied_wrench(par, y, sc[SC_INV], rot, a_x, a_y, a_v, sc[SC_F0])
     apply_inverse_mass(par, sc[SC_INV], sc[SC_F0], sc[SC_BASE])
-    n_normal, n_tangent, _ = patch_rows(
-        par,
-        y,
-        rot,
-        kind,
-        index,
-        psi,
-        sc[SC_NORMAL],
-        sc[SC_NBIAS],
-        sc[SC_TANGENT],
-        sc[SC_TBIAS],
-        sc[SC_ARMS],
-    )
+    return scratch_rows(par, y, kind, index, psi, sc)
+
+
+@nb.njit(cache=True, inline="always", error_model="numpy")
+def scratch_rows(par, y, kind, index, psi, sc):
+    """The patch's rows (:func:`patch_rows`) in the scratch, at the rotation it holds.
+
+    Returns (normal rows, tangential rows).
+    """
+    n_normal, n_tangent, _ = patch_rows(par, y, sc[SC_ROT], kind, index, psi, sc[SC_NORMAL],
+                                        sc[SC_NBIAS], sc[SC_TANGENT], sc[SC_TBIAS],
+                                        sc[SC_ARMS])  # fmt: skip
     return n_normal, n_tangent
 
 

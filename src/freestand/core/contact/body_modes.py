@@ -52,7 +52,6 @@ from freestand.core.contact.body_kernel import (
     P_SHAPE,
     POINT,
     SC_ACC,
-    SC_ARMS,
     SC_BASE,
     SC_DIR,
     SC_INV,
@@ -73,9 +72,9 @@ from freestand.core.contact.body_kernel import (
     cross,
     friction_margin,
     normal_margin,
-    patch_rows,
     prepare,
     rim_gap,
+    scratch_rows,
     sin_tilt,
     solve_mode,
     tangential_velocity,
@@ -430,19 +429,7 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
     rotation, inverse inertia and base of the instant.
     """
     rot = sc[SC_ROT]
-    n_normal, n_tangent, _ = patch_rows(
-        par,
-        y,
-        rot,
-        kind,
-        index,
-        psi,
-        sc[SC_NORMAL],
-        sc[SC_NBIAS],
-        sc[SC_TANGENT],
-        sc[SC_TBIAS],
-        sc[SC_ARMS],
-    )
+    n_normal, n_tangent = scratch_rows(par, y, kind, index, psi, sc)
     svel = sc[SC_SVEL]
     speed = 0.0
     tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
@@ -553,8 +540,7 @@ def candidates(par, touching, psi, kinds, indices, angles):
 def _face_pivot(par, y, sc):
     """Rim angle towards which a FACE solution's centre of pressure leaves the disc."""
     rot = sc[SC_ROT]
-    n_normal, n_tangent, _ = patch_rows(par, y, rot, FACE, 0, 0.0, sc[SC_NORMAL], sc[SC_NBIAS],
-                                        sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS])  # fmt: skip
+    n_normal, n_tangent = scratch_rows(par, y, FACE, 0, 0.0, sc)
     if not _solve(par, y, sc, ACCELERATION, 0, sc[SC_DIR], n_normal, n_tangent):
         return 0.0, False
     lam = sc[SC_LAM]
