@@ -65,6 +65,7 @@ from freestand.core.contact.body_kernel import (
 )
 from freestand.core.contact.body_modes import select_mode
 from freestand.core.contact.screening import GRAVITY, Motion, vertical_label
+from freestand.core.dynamics.body_history import initial_state
 from freestand.core.dynamics.results import ContactTolerances
 
 #: Relative tolerance [-] of the comparisons with the thresholds (round-off).
@@ -215,9 +216,7 @@ def sliding_pivot(body: Body, horizontal: float, direction: float, vertical: flo
     record[0, :] = horizontal * math.cos(direction)
     record[1, :] = horizontal * math.sin(direction)
     record[2, :] = vertical
-    y = np.zeros(13)  # flat on the support, at rest (the engine's initial state)
-    y[3] = 1.0
-    y[2] = body.centre[2]
+    y = initial_state(body)  # flat on the support, at rest
     mode = np.zeros(3, dtype=np.int64)
     data = np.zeros(4)
     scratch = new_scratch()
