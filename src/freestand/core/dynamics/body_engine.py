@@ -86,10 +86,14 @@ from freestand.core.contact.body_modes import NONE_ADMISSIBLE, impact, select_mo
 
 EVENT_TIME = 1e-11  # [s] width of the bracket of a located event
 GAP_SLACK = 1e-12  # [m] a released point may sit this far below the support
+LANDING_SLACK = 1e-12  # [-] a landed cylinder's lean may sit this far past its pivot's side
 MAX_EVENT_FUNCTIONS = 8
 CLOSING_OVERSHOOT = 1.25  # a step ends this far past a gap's predicted closing [-]
 WHIRL_ANGLE = 0.1  # [rad] largest turn of a rolling cylinder's lean in one step
 TILT_FRACTION = 0.5  # a whirling lean covers at most this part of its way to the vertical in a step
+PLANAR_PASS = 0.1  # a lean predicted to pass within this part of PIVOT_LEAN lands as in a plane [-]
+LEAN_TRUST = 1e-4  # sin(tilt) below which the lean's predicted passing distance is trusted [-]
+ROUND_OFF_PASS = 1e-12  # a passing distance below this is a planar motion's round-off [-]
 SLIP_FRACTION = 0.5  # a step lasts at most this part of a slip's time scale |s| / |s'|
 SLIP_MIN_STEP = 1e-4  # [s] the slip's time scale bounds no step below this
 STRETCH_STEP = 1e-4  # [s] step of the velocity-level time stepping (the remedy)
@@ -344,7 +348,10 @@ def closing_step(par, y, mode, sc, ref):
         areal = abs(ex * uy - ey * ux)
         if lean > PIVOT_LEAN and landing < math.inf:
             landing_speed = abs(slope + curvature * landing)
-            limit = _whirl_step(lean, areal, landing, landing_speed)
+            # the lean's side component where it meets the vertical plane of the pivot
+            side = (-ex * ref[4] + ey * ref[3]) + (-ux * ref[4] + uy * ref[3]) * landing + 0.5 * (
+                -(ax + cx) * ref[4] + (ay + cy) * ref[3]) * landing * landing  # fmt: skip
+            limit = _whirl_step(lean, areal, landing, landing_speed, abs(side))
             if limit < math.inf:
                 return max(min(limit, CLOSING_OVERSHOOT * earliest), MIN_STEP)
         earliest = min(earliest, landing)
@@ -383,29 +390,37 @@ def _slip_turn_time(mode, sc):
 
 
 @nb.njit(cache=True, error_model="numpy")
-def _whirl_step(lean, areal, landing_time, landing_speed):
+def _whirl_step(lean, areal, landing_time, landing_speed, distance):
     """Largest step [s] of a rolling cylinder whose lean whirls; inf when it lands as in a plane.
 
     The lean e_h (the horizontal projection of the axis, |e_h| = sin(tilt))
-    sweeps area at ``areal`` = |e_h x e_h'| [1/s], nearly conserved near flat
-    (the restoring moment points at the vertical); predicted to reach the
-    vertical in ``landing_time`` [s] at ``landing_speed`` [1/s], it passes it
-    at the distance ``d = areal / landing_speed``, where the rolling point
-    swings round the rim at ``landing_speed / d`` [rad/s]. Within
-    ``PIVOT_LEAN`` the body lands as in a plane (the contact point keeps its
-    side, :func:`rim_angle`). Otherwise a step turns the lean by at most
-    ``WHIRL_ANGLE`` now (at ``areal / lean^2`` [rad/s]) and covers at most
-    ``TILT_FRACTION`` of the time left to the approach plus ``WHIRL_ANGLE`` of
-    the swing there: the steps shrink geometrically to the approach and
-    resolve it (the contact lifts off there or the lean passes over).
+    is predicted by its Taylor polynomial to reach the vertical plane of the
+    pivot in ``landing_time`` [s] at ``landing_speed`` [1/s], passing the
+    vertical at ``distance`` (its side component there). Where it passes,
+    the rolling point swings round the rim at ``landing_speed / distance``
+    [rad/s]. Within ``PIVOT_LEAN`` of flat the body lands as in a plane (the
+    contact point keeps its side, :func:`rim_angle`): the step may cross the
+    landing when the lean is predicted to pass within ``PLANAR_PASS`` of
+    ``PIVOT_LEAN`` (so that the rim point's jump to its stored angle there is
+    at most asin(PLANAR_PASS)) and the prediction is trusted: the motion is
+    planar to round-off, or the lean is below ``LEAN_TRUST`` (a prediction
+    from further away may be off by more than ``PIVOT_LEAN``: friction turns
+    the lean's sweep). Otherwise a step turns the lean by at most
+    ``WHIRL_ANGLE`` now (at ``areal / lean^2`` [rad/s], ``areal`` = |e_h x
+    e_h'| [1/s]) and covers at most ``TILT_FRACTION`` of the time left to the
+    approach plus ``WHIRL_ANGLE`` of the swing there: the steps shrink
+    geometrically to the approach and resolve it (the contact lifts off there,
+    the lean passes over, or it lands as in a plane once trusted).
     """
-    if areal == 0.0 or landing_speed == 0.0:
+    if landing_speed == 0.0:
         return math.inf
-    distance = areal / landing_speed
-    if distance <= PIVOT_LEAN:
+    trusted = lean <= LEAN_TRUST or distance <= ROUND_OFF_PASS
+    if trusted and distance <= PLANAR_PASS * PIVOT_LEAN:
         return math.inf
-    now = WHIRL_ANGLE * lean * lean / areal
-    return min(now, TILT_FRACTION * landing_time + WHIRL_ANGLE * distance / landing_speed)
+    limit = TILT_FRACTION * landing_time + WHIRL_ANGLE * distance / landing_speed
+    if areal > 0.0:
+        limit = min(limit, WHIRL_ANGLE * lean * lean / areal)
+    return limit
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -414,15 +429,21 @@ def _levels(par, n, start_values, kinds, levels):
 
     A force margin fires when it falls below ``-slack`` having started above
     it, the slack being the admissibility tolerance (a mode is chosen within
-    it); the tilt and landing functions likewise with no slack. A gap fires
-    when it falls ``GAP_SLACK`` below the lower of zero and its value at the
-    step's start: a point released at an event may sit the held rows' drift
-    (some 1e-11 m) below the support, and it must still be caught when it
-    comes back down.
+    it); the tilt function likewise with no slack. A gap fires when it falls
+    ``GAP_SLACK`` below the lower of zero and its value at the step's start:
+    a point released at an event may sit the held rows' drift (some 1e-11 m)
+    below the support, and it must still be caught when it comes back down.
+    The landing function likewise, ``LANDING_SLACK`` below: a cylinder that
+    has just landed leans by round-off, to either side of its new pivot, and
+    may rock back within the step (a decaying sequence of landings), or
+    within ``PIVOT_LEAN`` of flat tilt away from the pivot it keeps there.
     """
     for i in range(n):
         if kinds[i] == FN_GAP:
             levels[i] = min(start_values[i], 0.0) - GAP_SLACK
+            continue
+        if kinds[i] == FN_LANDING:
+            levels[i] = min(start_values[i], 0.0) - LANDING_SLACK
             continue
         slack = 0.0
         if kinds[i] == FN_NORMAL or kinds[i] == FN_FRICTION:
@@ -519,6 +540,33 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
     # the solve at the event's state (the caller's next phase reads the scratch)
     event_functions(par, record, dt, t + high, out, mode, data, sc, ref, values, kinds)
     return high, kinds[target]
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _lean_comes_flat(par, y, mode, sc):
+    """True when a rolling cylinder's lean whirls within ``PIVOT_LEAN`` of flat, closing.
+
+    There the rim point it rolls on is kept (:func:`rim_angle`): a lean that
+    whirls past the vertical at about ``PIVOT_LEAN`` would swing round the
+    rim about a point that is no longer the lowest (the rolling disc's finite
+    time singularity, Le Saux et al. 2005). The base is then flat to 2 R
+    PIVOT_LEAN: it lands (:func:`resolve`). A lean heading for the vertical
+    (to pass it within ``PLANAR_PASS`` of ``PIVOT_LEAN``, as in a plane) is
+    located by the landing function instead, and a lean growing from flat is
+    not closing.
+    """
+    if par[P_SHAPE] == SHAPE_BOX or mode[M_KIND] != POINT:
+        return False
+    rot = sc[SC_ROT]
+    rotation_matrix(y, rot)
+    ex, ey = rot[0, 2], rot[1, 2]
+    if ex * ex + ey * ey > PIVOT_LEAN * PIVOT_LEAN:
+        return False
+    ux, uy, _ = cross(y[10], y[11], y[12], ex, ey, rot[2, 2])
+    if ex * ux + ey * uy >= 0.0:
+        return False
+    # the distance at which the lean passes the vertical, |e_h x e_h'| / |e_h'|
+    return abs(ex * uy - ey * ux) > PLANAR_PASS * PIVOT_LEAN * math.hypot(ux, uy)
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -947,6 +995,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         for i in range(STATE_SIZE):
             y[i] = out[i]
         istate[I_STEPS] += 1
+        if which < 0 and _lean_comes_flat(par, y, mode, sc):
+            which = FN_LANDING
         if which >= 0:
             before = mode[M_KIND]
             event = resolve(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol,
