@@ -48,6 +48,7 @@ MODEL = HERE / "cask.toml"
 SUITE = HERE / "cask-records"
 OUTPUT = HERE / "cask-comparison.json"
 G = 9.81
+RADIUS, CENTRE_HEIGHT = 1.683, 3.0  # m, as in cask.toml
 
 TARGET = "rg1.60:pga=0.3g,damping=5%"
 VERTICAL = "rg1.60:pga=0.2g,damping=5%,direction=vertical"
@@ -203,6 +204,11 @@ def run(
     counted_x = status_x.isin(("completed", "capped")).to_numpy()
     counted_y = status_y.isin(("completed", "capped")).to_numpy()
     methods = {"3-D": {}, "planar x": {}, "planar y": {}, "planar, worse of x and y": {}}
+    # the cask can lift only where static friction holds it against the inertial force of
+    # its uplift threshold: mu_0 > R / h (tan alpha); below, it slides flat (docs/cask.md)
+    tan_alpha = RADIUS / CENTRE_HEIGHT
+    lifting = rows["input:cask.friction.static"].to_numpy(float) > tan_alpha
+    above = {"3-D": {}, "planar, worse of x and y": {}}
     paired = {}
     for number, (key, outcome) in enumerate(zip(KEYS, OUTCOMES, strict=True)):
         in_3d = rows[f"outcome:{outcome}"].to_numpy(bool)
@@ -216,6 +222,10 @@ def run(
         worse = in_x | in_y
         methods["planar, worse of x and y"][key] = fit(
             level_values, index, worse, both, seed, bootstrap
+        )
+        above["3-D"][key] = fit(level_values, index, in_3d, counted_3d & lifting, seed, bootstrap)
+        above["planar, worse of x and y"][key] = fit(
+            level_values, index, worse, both & lifting, seed, bootstrap
         )
         pair = counted_3d & both
         paired[key] = {
@@ -252,11 +262,19 @@ def run(
             "planar y": statuses(status_y),
         },
         "fragility": methods,
+        "friction_above_tan_alpha": {
+            "tan_alpha": round(tan_alpha, 4),
+            "simulations": int(lifting.sum()),
+            "fragility": above,
+        },
         "paired": paired,
         "three_d_peaks": {
             "twist_above_5deg": int((twist > math.radians(5.0)).sum()),
             "twist_above_90deg": int((twist > math.radians(90.0)).sum()),
             "flight": int(rows["cask.flight"].to_numpy(bool).sum()),
+            "overturned_with_friction_below_tan_alpha": int(
+                (rows["cask.overturned"].to_numpy(bool) & ~lifting).sum()
+            ),
         },
         "runtime": {
             "workers": workers,
