@@ -157,6 +157,11 @@ def fit(levels, level_index, occurred, counted, seed: int, bootstrap: int) -> di
     }
 
 
+def _range(values) -> dict:
+    return {key: round(float(f(values)), 3) for key, f in (("min", np.min), ("mean", np.mean),
+                                                        ("max", np.max))}  # fmt: skip
+
+
 def statuses(values) -> dict:
     """Completed, capped and failed counts (invalid counts as failed)."""
     values = [_status(str(v)) for v in values]
@@ -235,6 +240,10 @@ def run(
             "neither": int((~in_3d & ~worse & pair).sum()),
         }
     twist = rows["cask.max_twist"].to_numpy(float)
+    # the pair against its components: RotD50 and the peak of the resultant |(x, y)|
+    rotd50 = np.array([fs.intensity_measure(m, "pga-rotd50") for m in suite.motions])
+    larger = np.array([max(m.peak_horizontal, m.peak_horizontal_y) for m in suite.motions])
+    resultant = np.array([np.hypot(m.horizontal, m.horizontal_y).max() for m in suite.motions])
     return {
         "title": "Storage cask of the HI-STORM 100 class: 3-D fragility against two planar "
         "problems (examples/cask_comparison.py)",
@@ -246,6 +255,8 @@ def run(
             "vertical": VERTICAL,
             "seed": SUITE_SEED,
             "duration": float(suite.motions[0].duration),
+            "rotd50_over_larger_pga": _range(rotd50 / larger),
+            "resultant_over_larger_pga": _range(resultant / larger),
         },
         "im": "pga-rotd50",
         "unit": "m/s^2",
