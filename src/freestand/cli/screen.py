@@ -28,7 +28,7 @@ from freestand.report.tables import (
     paper_case_rows,
 )
 
-EXAMPLES = {"crane": "crane.toml", "bodies": "bodies.toml"}
+EXAMPLES = {"crane": "crane.toml", "bodies": "bodies.toml", "cask": "cask.toml"}
 
 
 def _number(value: float, digits: int) -> str:

@@ -41,7 +41,9 @@ _QUANTITY = {"m/s^2": "acceleration", "-": "dimensionless"}
 FRAGILITY_KEYS = {
     "suite": TableKey("the record suite file, relative to the model file", required=True),
     "configuration": TableKey("the configuration", shown_default="the first"),
-    "im": TableKey("the intensity measure, as --im", default="pga"),
+    "im": TableKey(
+        "the intensity measure, as --im", shown_default='"pga" (planar), "pga-rotd50" (3-D)'
+    ),
     "levels": TableKey(
         'the levels, as --levels, e.g. "1:8:15" (IM unit); or cloud = true',
         shown_default="required without cloud",
@@ -56,6 +58,12 @@ FRAGILITY_KEYS = {
     "seed": TableKey("seed of the inputs and of the bootstrap", "-", default=0),
     "bootstrap": TableKey("bootstrap replicates", "-", default=1000),
     "free_time": TableKey("cap on the time simulated after a record", "s", default=10.0),
+    "angle": TableKey(
+        "3-D: a fixed incidence angle of the records' x axis, as --angle",
+        "deg",
+        shown_default="drawn uniformly over 0-360 deg per simulation",
+    ),
+    "angles": TableKey("3-D: every record at N incidence angles, as --angles", "-"),
 }
 
 #: Most samples per record and level: with 1000 levels and a suite of 30 records, 3e8

@@ -5,7 +5,7 @@ The table names the campaign (paths relative to the model file)::
     [fragility]
     suite = "records/suite.toml"     # required
     configuration = "x-z cart right" # default: the first
-    im = "pga"                       # as --im
+    im = "pga"                       # as --im; default pga, pga-rotd50 for a 3-D body
     levels = "1:8:15"                # as --levels; or cloud = true
     outcomes = ["overturn:cart", "slide:cart>0.05m"]   # default: per configuration
     vary = ["friction.static=uniform(0.15,0.35)"]      # optional
@@ -13,8 +13,13 @@ The table names the campaign (paths relative to the model file)::
     both_polarities = true           # optional
     seed = 0                         # optional
     bootstrap = 1000                 # optional
+    angle = 30                       # 3-D, optional: as --angle [deg]
+    angles = 8                       # 3-D, optional: as --angles
 
-The campaign runs on every local core, as ``freestand fragility`` would.
+The campaign runs on every local core, as ``freestand fragility`` would. A 3-D
+configuration (a box or a cylinder) runs under the records' three components,
+turned by an incidence angle drawn per simulation unless ``angle`` or ``angles``
+fixes it (``docs/fragility.md``, 3-D bodies).
 """
 
 from __future__ import annotations
@@ -73,12 +78,16 @@ def assess_fragility(model, workers: int | None = None) -> FragilitySection | No
     from freestand.io.fragility_results import fragility_document, im_label
 
     suite = model.base_dir / table["suite"]
+    im = get("im")
+    angle, angles = get("angle"), get("angles")
     campaign, records = build_campaign(
-        model, get("configuration"), suite, str(get("im")),
+        model, get("configuration"), suite, None if im is None else str(im),
         None if cloud else str(table["levels"]), list(get("vary")) or None,
         get("samples"), list(get("outcomes")) or None,
         bool(get("both_polarities")), int(get("seed")),
         float(get("free_time")), source=source,
+        angle=None if angle is None else _number(angle, "angle", source),
+        angles=None if angles is None else int(_number(angles, "angles", source)),
     )  # fmt: skip
     bootstrap = int(get("bootstrap"))
     definition, result = run_fragility(
@@ -88,6 +97,16 @@ def assess_fragility(model, workers: int | None = None) -> FragilitySection | No
     )  # fmt: skip
     document = fragility_document(definition, result, bootstrap, 0.95)
     return FragilitySection(document, result, im_label(definition["im"]))
+
+
+def _number(value, key: str, source: str) -> float:
+    """A number of the table (an int or a float, not text nor a bool)."""
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        example = "angle = 30" if key == "angle" else "angles = 8"
+        raise FreestandError(f"{key} = {value!r} is not a number; e.g. {example}", source=source)
+    if key == "angles" and value != int(value):
+        raise FreestandError(f"angles = {value!r}: give a whole number, e.g. 8", source=source)
+    return value
 
 
 def _n(value, digits: int = 4) -> str:
@@ -130,6 +149,22 @@ def fragility_html(doc, section: FragilitySection) -> str:
     varied = "; ".join(d["variations"]) or "none"
     versions = ", ".join(f"{k} {v}" for k, v in d["versions"].items() if v)
     levels = ", ".join(f"{x:.4g}" for x in d["levels"]) or "each record unscaled (cloud)"
+    three_d = "shape" in d
+    if three_d:
+        angles = d["angles"]
+        turned = (
+            "turned by an incidence angle drawn uniformly over 0&#8211;360 deg per simulation"
+            if angles == "uniform"
+            else "turned by the incidence angle(s) " + ", ".join(f"{a:g}" for a in angles) + " deg"
+        )
+        motion = (
+            f"A 3-D {e(d['shape'])}: each record's x, y and vertical components, the "
+            f"horizontal pair {turned}; {d['statuses'].get('capped', 0)} simulation(s) still "
+            "moving at the cap, counted with the peaks reached. "
+        )
+        body = "the body"
+    else:
+        motion, body = "", "the stack"
     table = doc.table(
         f"Lognormal fragility of each outcome against {e(section.im_label)}: maximum likelihood "
         "on the binomial counts, bootstrap intervals.",
@@ -149,8 +184,8 @@ def fragility_html(doc, section: FragilitySection) -> str:
         f"{d['samples']} sample(s) of the uncertain inputs per record and level "
         f"({e(varied)})"
         f"{', both polarities' if len(d['polarities']) == 2 else ''}; seed {d['seed']}. "
-        f"{d['simulations']} simulations, {d['failed']} failed or invalid (left out of the "
-        f"fits). Each simulation runs until the stack is at rest after the record, at most "
+        f"{motion}{d['simulations']} simulations, {d['failed']} failed or invalid (left out "
+        f"of the fits). Each simulation runs until {body} is at rest after the record, at most "
         f"{d['free_time']:g} s after it. The HCLPF is the {e(d['fit']['hclpf'])}.</p>"
         f"{table}{figure}"
         f'<p class="note">Reproduce with <code>freestand fragility</code> and the same '
