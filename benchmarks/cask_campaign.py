@@ -8,9 +8,11 @@ levels), 4 samples of the static friction uniform on 0.2-0.8 per record and leve
 incidence angle drawn per simulation: 20 x 15 x 4 = 1,200 simulations, each run
 (``fs.fragility``, as ``freestand fragility``) until the cask rests after the record,
 at most 10 s later. Printed: the wall time of the whole campaign on 1 and on 2 workers
-(the worker processes' start included), the rate per core, the scaling from 1 to 2
-workers, and the simulations completed, capped (still moving 10 s after the record)
-and failed. A small campaign on each worker count first warms the compiled code.
+(the worker processes' start included), the rate per core, the CPU time per
+simulation (this process and its worker processes: other work on the machine inflates
+it less than the wall time), the scaling from 1 to 2 workers, and the simulations
+completed, capped (still moving 10 s after the record) and failed. A small campaign on
+each worker count first warms the compiled code.
 
     python benchmarks/cask_campaign.py [--workers 1,2]
 """
@@ -19,6 +21,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import resource
 import time
 from pathlib import Path
 
@@ -43,16 +46,24 @@ def suite_file() -> Path:
     return path
 
 
+def _cpu() -> float:
+    """CPU seconds of this process and of its finished children (the worker processes)."""
+    own = resource.getrusage(resource.RUSAGE_SELF)
+    children = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
+
+
 def campaign(model, suite, workers: int, levels: str = "0.1g:1.5g:15", records=None):
-    """One campaign; (wall seconds, result)."""
+    """One campaign; (wall seconds, CPU seconds, result)."""
     if records is not None:
         suite = suite.motions[:records]
+    cpu = _cpu()
     start = time.perf_counter()
     result = fs.fragility(
         model, suite, "pga-rotd50", levels, OUTCOMES, configuration="cask", vary=FRICTION,
         samples=4, seed=20, bootstrap=0, workers=workers,
     )  # fmt: skip
-    return time.perf_counter() - start, result
+    return time.perf_counter() - start, _cpu() - cpu, result
 
 
 def main() -> None:
@@ -65,7 +76,7 @@ def main() -> None:
     wall = {}
     for workers in counts:
         campaign(model, suite, workers, "0.5g:1.5g:2", records=2)  # warm the compiled code
-        seconds, result = campaign(model, suite, workers)
+        seconds, cpu, result = campaign(model, suite, workers)
         document = result.to_dict()
         statuses = document["statuses"]
         total = document["simulations"]
@@ -73,6 +84,8 @@ def main() -> None:
         print(
             f"{workers} worker(s): {total} simulations in {seconds:.1f} s wall, "
             f"{total / seconds:.1f} /s, {total / seconds / workers:.1f} /s per core; "
+            f"{cpu:.1f} s of CPU ({1000 * cpu / total:.1f} ms per simulation, "
+            f"{total / cpu:.1f} per CPU second); "
             f"completed {statuses.get('completed', 0)}, capped {statuses.get('capped', 0)}, "
             f"failed {statuses.get('failed', 0) + statuses.get('invalid', 0)} "
             f"(load average {os.getloadavg()[0]:.1f})"

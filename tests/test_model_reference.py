@@ -45,4 +45,6 @@ def test_the_tables_read_key_by_key_come_from_their_readers_key_tables():
     for name, key in FRAGILITY_KEYS.items():
         assert f"| `fragility.{name}` | {key.default_text()} | {key.unit} |" in text
     assert "| `pga` | required | m/s^2 |" in text
-    assert '| `fragility.im` | "pga" |' in text and "| `fragility.free_time` | 10 | s |" in text
+    assert '| `fragility.im` | "pga" (planar), "pga-rotd50" (3-D) |' in text
+    assert "| `fragility.free_time` | 10 | s |" in text
+    assert "| `fragility.angle` | drawn uniformly over 0-360 deg per simulation | deg |" in text

@@ -138,14 +138,18 @@ def test_a_3d_fragility_table_takes_angle_and_angles(tmp_path):
     section = assess_fragility(_body_model(tmp_path, "angle = 30\n"), workers=1)
     assert section.document["angles"] == [30.0] and section.document["simulations"] == 6
     (tmp_path / "records").rename(tmp_path / "old")
-    swept = assess_fragility(_body_model(tmp_path, "angles = 2\nim = \"pga\"\n"), workers=1)
+    swept = assess_fragility(_body_model(tmp_path, 'angles = 2\nim = "pga"\n'), workers=1)
     assert swept.document["angles"] == [0.0, 180.0] and swept.document["simulations"] == 12
     assert swept.document["im"]["kind"] == "pga" and swept.document["im"]["components"] == "x"
 
 
 @pytest.mark.parametrize(
     ("extra", "match"),
-    [("angle = \"north\"\n", "angle"), ("angles = 2.5\n", "angles"), ("angle = 10\nangles = 4\n", "angles")],
+    [
+        ('angle = "north"\n', "angle"),
+        ("angles = 2.5\n", "angles"),
+        ("angle = 10\nangles = 4\n", "angles"),
+    ],
 )
 def test_bad_3d_fragility_keys_are_named(tmp_path, extra, match):
     from freestand.report.fragility import assess_fragility
