@@ -1,6 +1,7 @@
 """Properties of the 3-D body engine (issue #18): rotation invariance of a cylinder."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -162,3 +163,21 @@ def test_rest_ends_at_the_closed_form_threshold(body, rate, vertical, expected, 
     np.testing.assert_allclose(result.friction_force[resting],
                                body.mass * rate * result.time[resting], rtol=1e-9,
                                atol=1e-6)  # fmt: skip
+
+
+def test_a_cylinder_lifting_from_flat_at_the_default_step_stays_as_small_as_at_fine_steps():
+    # Recorded case: the first 7 s of a generated three-component RG 1.60 record (the
+    # 3-D MuJoCo benchmark's suite, record 1, times 0.7105) on a slender cylinder (R 0.4 m,
+    # H 3 m, mu 0.5). It lifts at 5.07 s by about 1e-5 rad and lands (fine steps: peak
+    # 9.3e-6 rad at 1 ms, 9.0e-6 at 0.5 ms). A 5 ms step from below PIVOT_LEAN (where the
+    # rim point is the stored one) to 2.7e-6 (where it is the lowest) took the jump of the
+    # rim point inside its RK4 stages: the cylinder rolled, 2.8e-3 rad by 7 s, and later
+    # overturned. Steps now end about where the lean rises past RISE_LEAN. Tolerance 1e-4
+    # rad: the scale of the fine runs (measured 3.3e-5 at the default step), 28 times below
+    # the rolling one.
+    data = np.load(Path(__file__).parent / "data" / "slender_lift.npz")
+    motion = SupportMotion3(float(data["dt"]), data["x"], data["y"], data["vertical"])
+    body = Body("slender", Cylinder(0.4, 3.0), 2000.0, Friction(0.5, 0.5))
+    result = simulate_body(body, motion, 7.0)
+    assert result.status == "completed"
+    assert 1e-6 < result.max_rotation < 1e-4
