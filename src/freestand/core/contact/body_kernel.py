@@ -748,27 +748,56 @@ def corner_gap(par, y, rot, k, d):
 
 
 @nb.njit(cache=True, error_model="numpy")
+def slowest_rim_angle(y, rot):
+    """Body-frame angle [rad] of the rim point of a flat base with the smallest normal velocity.
+
+    ``(cos phi, sin phi) = (omega_y, -omega_x) / |omega_h|`` in the support
+    frame, ``phi`` minus the body's yaw (0 when the body does not turn about
+    a horizontal axis): the point about which it starts to rock.
+    """
+    wx, wy = y[10], y[11]
+    size = math.hypot(wx, wy)
+    if size == 0.0:
+        return 0.0
+    phi = math.atan2(-wx / size, wy / size)
+    return phi - math.atan2(rot[1, 0], rot[0, 0])
+
+
+@nb.njit(cache=True, error_model="numpy")
 def rim_gap(par, y, rot, d):
     """(gap [m], gap velocity [m/s], psi) of the cylinder's lowest rim point; arm in ``d``.
 
-    Flat base: the rim point whose normal velocity is the smallest.
+    Flat base (sin(tilt) below ``TILT_EPSILON``): the rim point whose normal
+    velocity is the smallest (:func:`slowest_rim_angle`).
     """
     radius = par[P_HALF_X]
     s = sin_tilt(rot)
     if s > TILT_EPSILON:
         psi = math.atan2(-rot[2, 1], -rot[2, 0])
     else:
-        # flat: (cos phi, sin phi) = (omega_y, -omega_x)/|omega_h| in the support frame
-        wx, wy = y[10], y[11]
-        size = math.hypot(wx, wy)
-        if size == 0.0:
-            psi = 0.0
-        else:
-            phi = math.atan2(-wx / size, wy / size)
-            yaw = math.atan2(rot[1, 0], rot[0, 0])
-            psi = phi - yaw
+        psi = slowest_rim_angle(y, rot)
     arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
     return y[2] + d[2], point_velocity(y, d, 0.0, 0.0, 1.0), psi
+
+
+@nb.njit(cache=True, error_model="numpy")
+def rim_contact(par, y, rot, gap_tol, d):
+    """(gap [m], gap velocity [m/s], psi) of the rim point that touches; arm in ``d``.
+
+    The lowest rim point (:func:`rim_gap`); when the whole rim lies within
+    ``gap_tol`` [m] of the support, the one with the smallest normal velocity
+    (:func:`slowest_rim_angle`): a cylinder that has just landed leans by
+    round-off towards the side it came from, and rocks about the other.
+    Taking the lowest point there saw that point rise and left the body in
+    free flight until the other point hit again, microseconds later.
+    """
+    g, gv, psi = rim_gap(par, y, rot, d)
+    if g + 2.0 * par[P_HALF_X] * sin_tilt(rot) <= gap_tol:
+        radius = par[P_HALF_X]
+        psi = slowest_rim_angle(y, rot)
+        arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
+        g, gv = y[2] + d[2], point_velocity(y, d, 0.0, 0.0, 1.0)
+    return g, gv, psi
 
 
 @nb.njit(cache=True, error_model="numpy")

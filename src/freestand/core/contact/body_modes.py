@@ -73,7 +73,7 @@ from freestand.core.contact.body_kernel import (
     friction_margin,
     normal_margin,
     prepare,
-    rim_gap,
+    rim_contact,
     scratch_rows,
     sin_tilt,
     solve_mode,
@@ -148,7 +148,9 @@ def _others_separate(par, y, sc, kind, index, psi, touching, level, tolerance):
                 if _point_normal_rate(y, d, x, level) < -tolerance:
                     return False
         if touching[4]:
-            rim_gap(par, y, rot, d)
+            # the touching rim point (psi from touching_points)
+            radius = par[P_HALF_X]
+            arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
             if _point_normal_rate(y, d, x, level) < -tolerance:
                 return False
     return True
@@ -497,7 +499,7 @@ def touching_points(par, y, rot, gap_tol, velocity_tol, level, touching):
             g, gv = corner_gap(par, y, rot, k, d)
             touching[k] = g <= gap_tol and (level == VELOCITY or gv <= velocity_tol)
         return 0.0
-    g, gv, psi = rim_gap(par, y, rot, d)
+    g, gv, psi = rim_contact(par, y, rot, gap_tol, d)
     touching[4] = g <= gap_tol and (level == VELOCITY or gv <= velocity_tol)
     flat = g + 2.0 * par[P_HALF_X] * sin_tilt(rot) <= gap_tol
     if touching[4] and flat:
@@ -593,7 +595,7 @@ def select_mode(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, ex
                 mode[M_INDEX] = indices[c]
                 mode[M_SLIP] = slip
                 return c
-    if try_mode(par, y, sc, FREE, 0, 0.0, 0, ACCELERATION, touching, velocity_tol, scales, data):
+    if try_mode(par, y, sc, FREE, 0, psi, 0, ACCELERATION, touching, velocity_tol, scales, data):
         mode[M_KIND] = FREE
         mode[M_INDEX] = 0
         mode[M_SLIP] = 0
