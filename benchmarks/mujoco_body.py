@@ -57,8 +57,15 @@ remedies and time-stepping steps (no admissible mode), the time per step, and
 the share of the compiled loop (the rest is the Python front end: arrays in,
 histories and peaks out).
 
+(d) Ensemble: the slender cylinder's response is chaotic (one run's peaks move
+with a 1e-3 change of the record), so it is also compared over all 20 records
+of the suite at its scale: the runs that stay near flat, that overturn, and
+the median peaks of the others, freestand at both steps against MuJoCo's
+first fine run (:func:`ensemble`).
+
     python benchmarks/mujoco_body.py [accuracy] [speed] [profile]
     python benchmarks/mujoco_body.py single | campaign     # one half of (b)
+    python benchmarks/mujoco_body.py ensemble              # (d), not in the default run
 
 Each check prints PASS or FAIL; the command exits 1 if any failed.
 
@@ -526,6 +533,64 @@ def accuracy(records: list[SupportMotion3]) -> bool:
     return agreed
 
 
+# ------------------------------------------------------------------------------ (d)
+#: The case whose response is chaotic (the slender cylinder): compared over the suite.
+ENSEMBLE_CASE = 2
+NEAR_FLAT = 0.01  # [rad] a run whose peak tilt stays below this has not started to roll
+
+
+def _band(count_a: int, count_b: int, n: int) -> bool:
+    """Two counts of n agree within two standard deviations of their difference (+1)."""
+    p = 0.5 * (count_a + count_b) / n
+    return abs(count_a - count_b) <= 2.0 * math.sqrt(2.0 * n * p * (1.0 - p)) + 1.0
+
+
+def ensemble(records: list[SupportMotion3]) -> bool:
+    """(d) The slender cylinder under every record of the suite at its case's scale.
+
+    Its single-run peaks are chaotic (the record times 1 +- 1e-3 moves freestand's
+    peak tilt from 0.22 to 0.07 rad at one step, and MuJoCo's two fine runs differ
+    by 11 %): what a campaign reads is the statistics. Per engine: the runs that
+    stay near flat (peak tilt below ``NEAR_FLAT``), that overturn, and the median
+    peak tilt and slide of the runs that rock and stay up. Counts agree within
+    two standard deviations of a difference of binomial counts (:func:`_band`).
+    """
+    case = CASES[ENSEMBLE_CASE]
+    body = case.body
+    (step, timeconst), rim = case.fine[0], case.rim[0]
+    engine = MujocoBody(body, step, timeconst, "points", rim)
+    names = ("freestand, default step", f"freestand, {1e3 * FINE_STEP:g} ms",
+             f"MuJoCo {1e3 * step:g} ms, T {1e3 * timeconst:g} ms, rim {rim}")  # fmt: skip
+    runs: dict[str, list[Peaks]] = {name: [] for name in names}
+    print(f"\n(d) {body.name} under the {len(records)} records of the suite x {case.scale:g}")
+    for motion in records:
+        motion = scaled(motion, case.scale)
+        runs[names[0]].append(freestand_peaks(body, motion)[0])
+        runs[names[1]].append(freestand_peaks(body, motion, FINE_STEP)[0])
+        runs[names[2]].append(engine.peaks(motion, SUITE_DURATION))
+    n = len(records)
+    counts = {}
+    header = ("run", "near flat", "overturned", "tilt [rad]", "slide [m]")
+    print("  {:40s} {:>9s} {:>10s} {:>10s} {:>9s}".format(*header))
+    for name, peaks in runs.items():
+        flat = sum(p.tilt < NEAR_FLAT for p in peaks)
+        over = sum(p.overturned for p in peaks)
+        rocking = [p for p in peaks if p.tilt >= NEAR_FLAT and not p.overturned]
+        tilt = np.median([p.tilt for p in rocking]) if rocking else math.nan
+        slide = np.median([p.slide for p in rocking]) if rocking else math.nan
+        counts[name] = (flat, over)
+        print(f"  {name:40s} {flat:9d} {over:10d} {tilt:10.4f} {slide:9.4f}")
+    agreed = True
+    reference = counts[names[2]]
+    for name in names[:2]:
+        for k, label in enumerate(("near flat", "overturned")):
+            ok = _band(counts[name][k], reference[k], n)
+            agreed &= ok
+            print(f"  {label:10s} {name} {counts[name][k]} against MuJoCo {reference[k]} of {n}:"
+                  f" {'within' if ok else 'FAIL: outside'} two standard deviations")  # fmt: skip
+    return agreed
+
+
 # ------------------------------------------------------------------------------ (b)
 _CAMPAIGN: dict = {}
 
@@ -700,7 +765,7 @@ def main(sections: list[str]) -> int:
     if mujoco is None:
         print("mujoco is not installed (pip install -e '.[bench]'): benchmark skipped")
         return 0
-    known = ("accuracy", "speed", "single", "campaign", "profile")
+    known = ("accuracy", "speed", "single", "campaign", "profile", "ensemble")
     unknown = [name for name in sections if name not in known]
     if unknown:
         print(f"unknown section {', '.join(unknown)}: give any of {', '.join(known)}")
@@ -720,6 +785,8 @@ def main(sections: list[str]) -> int:
         status = 1
     if "profile" in sections:
         profile(records)
+    if "ensemble" in sections and not ensemble(records):
+        status = 1
     return status
 
 
