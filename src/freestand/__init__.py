@@ -3,7 +3,7 @@
 ``import freestand as fs`` gives the public entry points (README, "Python
 API"); they are loaded on first use, so the command line starts fast:
 
-- models and records: :func:`load_model`, :func:`load_record`,
+- models and records: :func:`load_model` (and :func:`example_path`), :func:`load_record`,
   :func:`load_suite`, :func:`load_station`, :class:`GroundMotion`, :class:`SupportMotion`,
   :class:`SupportMotion3` (and :func:`support_motion3`),
   :class:`Block`, :class:`Stack`, :class:`Friction`, :class:`Sliding`,
@@ -43,6 +43,7 @@ __version__ = "0.1.0"
 #: Public name -> module that defines it.
 _PUBLIC = {
     "load_model": "freestand.io.model_file",
+    "example_path": "freestand.io.examples",
     "load_record": "freestand.io.records",
     "load_suite": "freestand.io.suites",
     "GroundMotion": "freestand.core.motion.ground_motion",

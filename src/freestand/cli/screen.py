@@ -5,7 +5,6 @@ from __future__ import annotations
 import json
 import math
 from dataclasses import replace
-from importlib import resources
 from pathlib import Path
 
 import typer
@@ -15,6 +14,7 @@ from rich.table import Table
 
 from freestand.cli.common import check_folder, load, staging
 from freestand.errors import FreestandError
+from freestand.io.examples import EXAMPLES, example_path
 from freestand.plot.body_screening import shape_text
 from freestand.report.tables import (
     BODY_DIRECTION_HEADERS,
@@ -27,8 +27,6 @@ from freestand.report.tables import (
     motion_rows,
     paper_case_rows,
 )
-
-EXAMPLES = {"crane": "crane.toml", "bodies": "bodies.toml", "cask": "cask.toml"}
 
 
 def _number(value: float, digits: int) -> str:
@@ -290,13 +288,7 @@ def example(
     name: str = typer.Argument("crane", help=f"Example name: {', '.join(EXAMPLES)}."),
 ) -> None:
     """Print a built-in example model file."""
-    if name not in EXAMPLES:
-        raise FreestandError(
-            f"{name!r} is not a built-in example; choose one of {', '.join(EXAMPLES)}",
-            source="freestand example",
-        )
-    text = resources.files("freestand.examples").joinpath(EXAMPLES[name]).read_text()
-    typer.echo(text, nl=False)
+    typer.echo(example_path(name).read_text(), nl=False)
 
 
 def register(app: typer.Typer) -> None:
