@@ -103,7 +103,9 @@ for name, colour in (("x", "C0"), ("y", "C2")):
               label=f"planar under {name}: |rotation|")  # fmt: skip
 left.axhline(np.arctan(1.683 / 3.0), color="k", ls=":", label="alpha = atan(R/h)")
 left.set_xlabel("time [s]")
-left.set_ylabel("[rad]")
+left.set_ylabel("tilt, rotation [rad]")
+left.set_title("An RG 1.60 record at PGA RotD50 0.8 g, mu_0 = 0.6: 3-D against planar",
+               fontsize=10)  # fmt: skip
 left.legend(fontsize=8)
 left.grid(alpha=0.3)
 right.plot(history["cask.tilt_x [rad]"], history["cask.tilt_y [rad]"], color="C3", lw=0.8)
