@@ -42,6 +42,7 @@ import pandas as pd
 
 import freestand as fs
 from freestand.core.sweeps.fragility.fit import fit_fragility
+from freestand.io.store import CampaignStore
 
 HERE = Path(__file__).resolve().parent
 MODEL = HERE / "cask.toml"
@@ -73,12 +74,6 @@ def generate_suite(folder: Path) -> Path:
         )  # fmt: skip
         print(f"generated {suite}: {generated.status}")
     return suite
-
-
-def read_store(store: Path) -> pd.DataFrame:
-    """Every simulation of a fragility store (its Parquet parts), in task order."""
-    parts = sorted(store.glob("part-*.parquet"))
-    return pd.concat([pd.read_parquet(p) for p in parts]).sort_values("task", ignore_index=True)
 
 
 def _planar_record(motion, component: str):
@@ -194,7 +189,8 @@ def run(
             vary=[FRICTION], samples=samples, seed=SEED, bootstrap=bootstrap,
             workers=workers, store=Path(folder) / "store", free_time=free_time,
         )  # fmt: skip
-        rows = read_store(Path(folder) / "store")
+        # every simulation of the campaign, in task order
+        rows = pd.DataFrame(CampaignStore(Path(folder) / "store").read())
     seconds_3d = time.perf_counter() - start
     start = time.perf_counter()
     planar = planar_runs(model, suite, rows, workers, free_time)
