@@ -59,3 +59,43 @@ def test_no_landing_while_the_support_still_moves():
     assert result.status == "completed"
     assert result.diagnostics.zeno_landings == 0
     assert len(result.events_of("impact")) > 60
+
+
+def test_a_rocking_pair_lands_at_the_accumulation_of_its_impacts():
+    # two blocks rocking as one (the upper one sticks) after a half-sine: once the
+    # flights rise less than 1e-3 of the largest lift, the tail is summed and the pair
+    # lands at the instant the resolved impacts' intervals accumulate at
+    lower = Block.rectangle("lower", 0.6, 2.0, 1200.0, Friction(0.8, 0.7))
+    upper = Block.rectangle("upper", 0.4, 1.2, 400.0, Friction(0.8, 0.7), level=2.0)
+    dt = 0.005
+    time = np.arange(0.0, 10.0 + dt, dt)
+    pulse = np.where(time < 0.5, 1.2 * 9.81 * 0.3 * np.sin(2.0 * math.pi * time), 0.0)
+    result = simulate(Stack("pair", (lower, upper)), SupportMotion(dt, pulse), 10.0)
+    assert result.status == "completed"
+    assert result.diagnostics.zeno_landings == 1
+    impacts = result.events_of("impact")
+    landing = impacts[-1]
+    assert landing.motions == ("rest", "rest")
+    times = np.array([event.time for event in impacts[:-1]])
+    last, before = np.diff(times)[-1], np.diff(times)[-2]
+    ratio = last / before  # the intervals fall geometrically (0.9365)
+    accumulation = times[-1] + last * ratio / (1.0 - ratio)
+    # measured: 9.268264 s against 9.268233 s extrapolated from the last two intervals
+    # (0.30 s after the last resolved impact): within 1e-3 of that remaining time
+    assert abs(landing.time - accumulation) <= 1e-3 * (accumulation - times[-1])
+    # from the landing on nothing moves (round-off of the projection)
+    assert np.abs(landing.velocity_after).max() < 1e-12
+    assert np.abs(result.velocity[result.time >= landing.time]).max() < 1e-12
+
+
+def test_the_tail_is_resolved_when_it_would_outlast_the_run():
+    # the same pair run to 9.2 s, before its accumulation instant: no landing, every
+    # impact of the tail located
+    lower = Block.rectangle("lower", 0.6, 2.0, 1200.0, Friction(0.8, 0.7))
+    upper = Block.rectangle("upper", 0.4, 1.2, 400.0, Friction(0.8, 0.7), level=2.0)
+    dt = 0.005
+    time = np.arange(0.0, 10.0 + dt, dt)
+    pulse = np.where(time < 0.5, 1.2 * 9.81 * 0.3 * np.sin(2.0 * math.pi * time), 0.0)
+    result = simulate(Stack("pair", (lower, upper)), SupportMotion(dt, pulse), 9.2)
+    assert result.diagnostics.zeno_landings == 0
+    assert len(result.events_of("impact")) > 70

@@ -80,7 +80,11 @@ def test_free_rocking_follows_housner_impacts_and_conserves_energy(half_width, h
     assert len(impacts) >= 3
 
     # angular-velocity ratio at every impact: the impact law reproduces eq. 4 to round-off
-    for event in impacts[:6]:
+    # (all but the last, where the sequence's tail is summed and the block lands at rest:
+    # after 5 impacts for the squattest block)
+    located = [event for event in impacts if event.motions != ("rest",)]
+    assert len(located) >= 3
+    for event in located[:6]:
         before, after = event.velocity_before[0, 2], event.velocity_after[0, 2]
         assert after / before == pytest.approx(ratio, rel=1e-9)
         # the new pivot does not slip, the old one lifts: rotation about the new corner only

@@ -11,8 +11,8 @@ Sources:
   is ``2 omega_k / c`` with ``c = m g R sin(alpha) / I_O``, the intervals fall
   geometrically with ratio eta, and the impacts accumulate at
   ``t_inf = t_k + 2 omega_k / (c (1 - eta))``, after which the block rests: a
-  Zeno point the engine must pass (it settles the sequence where the impact
-  velocity falls below its contact velocity tolerance).
+  Zeno point the engine must pass (it sums the sequence's tail to the
+  accumulation instant and lands the block there).
 """
 
 from __future__ import annotations
@@ -64,12 +64,17 @@ def test_intervals_fall_with_housners_ratio(impacts):
 
 
 def test_impacts_accumulate_at_the_closed_form_instant(impacts):
-    k = 20
-    omega = abs(impacts[k].velocity_after[0][2])
-    accumulation = impacts[k].time + 2.0 * omega / (DECELERATION * (1.0 - ETA))
-    last = impacts[-1].time
-    # the sequence ends where the impact velocity falls below the contact tolerance,
-    # just before t_inf (measured 7.1815 s against 7.1799 s predicted from impact 20,
-    # 2.11 s earlier): within 1 % of the time remaining at impact 20
-    assert abs(last - accumulation) <= 0.01 * (accumulation - impacts[k].time)
-    assert len(impacts) > 60  # a true Zeno sequence, passed
+    last = impacts[-1]
+    # the engine sums the sequence once a flight rises less than 1e-3 of the largest lift
+    # (engine.ZENO_FRACTION): the block lands at rest at the accumulation instant it
+    # predicts from the next two impacts, after 58 impacts resolved one by one
+    assert last.motions == ("rest",)
+    assert len(impacts) > 50  # a true Zeno sequence, passed
+    for k, tolerance in ((20, 0.01), (50, 1e-3)):
+        omega = abs(impacts[k].velocity_after[0][2])
+        accumulation = impacts[k].time + 2.0 * omega / (DECELERATION * (1.0 - ETA))
+        # the landing against t_inf predicted from impact k: measured 7.18654 s against
+        # 7.17994 s from impact 20 (0.31 % of the 2.11 s remaining: the constant restoring
+        # moment is exact only as theta / alpha -> 0) and 7.18650 s from impact 50
+        # (0.01 % of the 0.35 s remaining); tolerances 1 % and 0.1 %
+        assert abs(last.time - accumulation) <= tolerance * (accumulation - impacts[k].time)

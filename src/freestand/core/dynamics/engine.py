@@ -182,6 +182,10 @@ STEPPING_STEP = 1e-4
 STRETCH_STEPS = 20
 #: Relative rise of the kinetic energy [-] an impact's state may show (round-off).
 ENERGY_SLACK = 1e-9
+#: A Zeno sequence of impacts on a quiet support is summed to its accumulation instant
+#: once its next flight rises at most this fraction [-] of the interface's largest lift
+#: so far (:func:`_zeno_end`)
+ZENO_FRACTION = 1e-3
 
 
 # --- excitation ---------------------------------------------------------------------------------
@@ -927,13 +931,107 @@ def _land(params, active, mode, work, problem):
 
 
 @nb.njit(cache=True, _nrt=False)
+def _zeno_end(model, exc, params, active, t, q, qd, slide, work, problem, istate, mode,
+              lift_peak):  # fmt: skip
+    """Accumulation instant [s] of the Zeno sequence an impact starts, or -1 if not summed.
+
+    After an impact on a quiet support (``P_QUIET``), in the chosen state (``mode``;
+    contact accelerations of the first state in ``problem``, kinematics in ``work``):
+    when every interface sticks, all but one closed on both contacts, and the one
+    that rocks opens its contact ``c`` at ``v_1 > 0`` against a gap acceleration
+    ``a_1 < 0`` so slowly that the flight rises ``v_1^2 / (2 |a_1|)`` at most
+    :data:`ZENO_FRACTION` of the interface's largest lift so far (or the gap
+    tolerance), the stack rocks as one rigid body by angles small against its
+    slenderness: each flight returns to the flat configuration with the rates
+    reversed (one degree of freedom, no loss in flight) after ``2 v / |a|``
+    (constant restoring moment: Brogliato 2016, section 1.3.2), and every impact
+    is the same linear map of the rates. Two impacts of the reversed rates give
+    the other contact's flight (``v_2``, ``a_2``) and the ratio ``rho = v_3 / v_1``
+    over a pair of flights, and the sequence ends at
+
+        t_inf = t + (2 v_1 / |a_1| + 2 v_2 / |a_2|) / (1 - rho)
+
+    (Housner 1963's ``eta^2 = rho`` for one block). The neglected rocking is at
+    most :data:`ZENO_FRACTION` of the largest lift, and the constant restoring
+    moment errs by about the amplitude over the slenderness (a few 1e-4 of the
+    remaining time). ``mode`` gets the contact closed when summed; otherwise
+    ``work`` and ``problem`` read as before. Not summed past the run's end.
+    """
+    tol_gap = params[P_TOL_GAP]
+    rocking = -1
+    for i in range(active):
+        if mode[i, 2] != 1:
+            return -1.0
+        closed = mode[i, 0] + mode[i, 1]
+        if closed == 1 and rocking < 0:
+            rocking = i
+        elif closed != 2:
+            return -1.0
+    if rocking < 0:
+        return -1.0
+    i = rocking
+    c = 1 if mode[i, 0] == 1 else 0
+    other = 1 - c
+    gap = work.contact[GAP]
+    gap_velocity = work.contact[GAP_VELOCITY]
+    v1 = gap_velocity[i, c]
+    a1 = problem.accelerations[0, i, c]
+    if not (gap[i, c] <= tol_gap and v1 > 0.0 and a1 < 0.0):
+        return -1.0
+    if v1 * v1 > -2.0 * a1 * max(tol_gap, ZENO_FRACTION * lift_peak[i]):
+        return -1.0
+    n = 3 * active
+    reversed_ = problem.vectors[P_REVERSED]
+    second = problem.vectors[P_SECOND]
+    third = problem.vectors[P_THIRD]
+    qdd = problem.vectors[P_ZENO_QDD]
+    lam = problem.forces[MAX_DISTINCT - 1]
+    end = -1.0
+    for k in range(n):
+        reversed_[k] = -qd[k]
+    if _impact(model, params, active, q, reversed_, slide, False, work, problem, istate, second):
+        # the other contact's flight: rocking on contact c, the held mode swapped
+        _kin(model, active, q, second, work)
+        v2 = gap_velocity[i, other]
+        mode[i, c] = 1
+        mode[i, other] = 0
+        held = _evaluate(model, exc, params, active, t, q, second, mode, work, qdd, lam)
+        mode[i, c] = 0
+        mode[i, other] = 1
+        a2 = work.contact[GAP_BIAS][i, other]
+        for k in range(n):
+            a2 += work.jacobian[0][i, other, k] * qdd[k]
+            reversed_[k] = -second[k]
+        if (
+            held
+            and v2 > 0.0
+            and a2 < 0.0
+            and _impact(model, params, active, q, reversed_, slide, False, work, problem,
+                        istate, third)  # fmt: skip
+        ):
+            _kin(model, active, q, third, work)
+            ratio = gap_velocity[i, c] / v1
+            if 0.0 < ratio < 1.0:
+                end = t + (-2.0 * v1 / a1 - 2.0 * v2 / a2) / (1.0 - ratio)
+    _kin(model, active, q, qd, work)
+    problem.accelerations[0, i, c] = a1
+    if not (end >= t and end <= params[P_END]):
+        return -1.0
+    mode[i, c] = 1
+    return end
+
+
+@nb.njit(cache=True, _nrt=False)
 def _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
-            directions, uplift, free_flight, result):  # fmt: skip
+            directions, flags, sum_to_end, result):  # fmt: skip
     """Impact if needed, then the mode to hold, then the projection.
 
     ``result`` (3,) int: [failure code, impact kind (0 none, IMPACT,
     TANGENTIAL_IMPACT), solve count of the selection]; ``problem``: the
-    :data:`Problem` work arrays.
+    :data:`Problem` work arrays; ``flags``: the state's flags (uplift and free
+    flight raised here, the largest lifts read). With ``sum_to_end`` a Zeno
+    sequence that :func:`_zeno_end` can sum moves the state's time to its
+    accumulation instant.
 
     After an impact once the support no longer accelerates (``P_QUIET``), an
     interface whose contact opens so slowly that it cannot rise beyond the gap
@@ -958,18 +1056,22 @@ def _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, 
     count = _select(
         model, exc, params, active, t, q, qd, slide, work, problem, istate, mode, directions
     )
-    if (
-        count > 0
-        and result[1] == IMPACT
-        and t >= params[P_QUIET]
-        and _land(params, active, mode, work, problem)
-    ):
-        # the rest of a Zeno sequence of impacts, summed: the interfaces land
-        _project(model, active, q, qd, mode, work, fstate)
-        istate[S_ZENO] += 1
-        count = _select(
-            model, exc, params, active, t, q, qd, slide, work, problem, istate, mode, directions
-        )
+    if count > 0 and result[1] == IMPACT and t >= params[P_QUIET]:
+        end = -1.0
+        if sum_to_end:
+            end = _zeno_end(model, exc, params, active, t, q, qd, slide, work, problem, istate,
+                            mode, flags[4])  # fmt: skip
+        if end >= 0.0 or _land(params, active, mode, work, problem):
+            # the rest of a Zeno sequence of impacts, summed: the interfaces land (at
+            # the sequence's accumulation instant when it is known)
+            _project(model, active, q, qd, mode, work, fstate)
+            istate[S_ZENO] += 1
+            count = _select(
+                model, exc, params, active, t, q, qd, slide, work, problem, istate, mode,
+                directions,
+            )
+            if end > t:
+                fstate[F_TIME] = end
     if count == 0:
         # no consistent sliding state (Painleve-type): a tangential impact at
         # velocity level, in which the sliding contacts may stick
@@ -989,9 +1091,9 @@ def _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, 
     for i in range(active):
         closed = mode[i, 0] + mode[i, 1]
         if closed < 2:
-            uplift[i] = 1.0
+            flags[0, i] = 1.0
         if closed == 0 and i > 0:
-            free_flight[i] = 1.0
+            flags[1, i] = 1.0
 
 
 @nb.njit(cache=True, _nrt=False)
@@ -1310,7 +1412,7 @@ def _time_step(model, exc, params, active, t, h, q, qd, slide, work, mode, direc
 
 @nb.njit(cache=True, _nrt=True)
 def _try_resume(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
-                directions, uplift, free_flight, settle, qdd, lam):  # fmt: skip
+                directions, flags, settle, qdd, lam):  # fmt: skip
     """End the stretch if an event-driven mode is consistent at the state; whether it did.
 
     The state is left as it was when none is (the attempt works on copies).
@@ -1322,7 +1424,7 @@ def _try_resume(model, exc, params, active, t, q, qd, slide, work, problem, ista
     mode_saved = mode[:active].copy()
     directions_saved = directions[:active].copy()
     _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
-            directions, uplift, free_flight, settle)  # fmt: skip
+            directions, flags, False, settle)  # fmt: skip
     if settle[0] == NO_FAILURE and _evaluate(model, exc, params, active, t, q, qd, mode, work,
                                              qdd, lam):  # fmt: skip
         istate[S_STEPPING] = 0
@@ -1431,8 +1533,10 @@ def _loop_arrays(count):
 #:   friction), ``P_LOW``, ``P_HIGH`` its friction bounds in a dissipative impact;
 #: - ``contact_active`` (B, 2) bool, ``sliding`` (B) int: the problem's contacts and
 #:   effective sliding codes;
-#: - ``vectors`` (2, 3 B): ``P_FREE`` the free accelerations (zero in an impact),
-#:   ``P_NEW_QD`` the rates after an impact;
+#: - ``vectors`` (6, 3 B): ``P_FREE`` the free accelerations (zero in an impact),
+#:   ``P_NEW_QD`` the rates after an impact; ``P_REVERSED``, ``P_SECOND``, ``P_THIRD``,
+#:   ``P_ZENO_QDD`` the rates and accelerations of a Zeno sequence's next impacts
+#:   (:func:`_zeno_end`);
 #: - ``modes``, ``solutions``, ``forces``, ``accelerations``, ``index``, ``info``: the
 #:   kernel's first :data:`MAX_DISTINCT` admissible states;
 #: - ``impulses`` (2, B, 2): normal and tangential impulses of a dissipative impact.
@@ -1444,7 +1548,7 @@ Problem = namedtuple(
     ),
 )  # fmt: skip
 P_SLIP, P_LOW, P_HIGH = range(3)
-P_FREE, P_NEW_QD = range(2)
+P_FREE, P_NEW_QD, P_REVERSED, P_SECOND, P_THIRD, P_ZENO_QDD = range(6)
 #: Admissible modes the contact problem's work arrays hold (more: the kernel's own).
 PROBLEM_CAPACITY = 64
 
@@ -1459,7 +1563,7 @@ def _problem_arrays(count):
         np.zeros((3, count)),
         np.zeros((count, 2), dtype=np.bool_),
         np.zeros(count, dtype=np.int64),
-        np.zeros((2, n)),
+        np.zeros((6, n)),
         np.zeros((MAX_DISTINCT, count, 3), dtype=np.int64),
         np.zeros((MAX_DISTINCT, n)),
         np.zeros((MAX_DISTINCT, count, 3)),
@@ -1574,7 +1678,7 @@ def _start(model, exc, params, state, work, loop, problem, rec, ev):
         istate[S_STARTED] = 1
         _copy(velocity_before, qd, qd.shape[0])
         _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
-                directions, flags[0], flags[1], settle)  # fmt: skip
+                directions, flags, False, settle)  # fmt: skip
         cause = settle[0]
         status = 1 if settle[2] > 1 else 0
         if cause == NO_FAILURE and not _evaluate(model, exc, params, active, t, q, qd, mode,
@@ -2158,7 +2262,8 @@ def resolve(model, exc, params, max_events, h, state, work, loop, problem, rec, 
             _record_event(state, kind, interface, contact, 0, before, velocity_before, ev)
             return COMPLETED
     _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
-            directions, flags[0], flags[1], settle)  # fmt: skip
+            directions, flags, True, settle)  # fmt: skip
+    t = fstate[F_TIME]  # the accumulation instant of a summed Zeno sequence
     if settle[0] != NO_FAILURE:
         _begin_stretch(settle[0], state, ev)
         return RUNNING
@@ -2212,7 +2317,7 @@ def _overturn_after_excitation(model, exc, params, state, work, loop, problem, e
         return COMPLETED
     _copy(velocity_before, qd, 3 * active)
     _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
-            directions, flags[0], flags[1], settle)  # fmt: skip
+            directions, flags, False, settle)  # fmt: skip
     if settle[0] != NO_FAILURE:
         _begin_stretch(settle[0], state, ev)
         return RUNNING
@@ -2252,9 +2357,7 @@ def resolve_stretch(model, exc, params, state, work, loop, problem, rec, ev):
     if active > 0 and istate[S_STRETCH_STEPS] >= STRETCH_STEPS:
         _copy(velocity_before, qd, 3 * active)
         if _try_resume(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate,
-                       mode,
-                       directions, flags[0], flags[1], settle, qdd,
-                       lam):  # fmt: skip
+                       mode, directions, flags, settle, qdd, lam):  # fmt: skip
             step[L_REST_READY] = 0
             _record_event(state, RESUME, -1, -1, 1 if settle[2] > 1 else 0, active,
                           velocity_before, ev)  # fmt: skip
