@@ -1006,8 +1006,9 @@ def _zeno_end(model, exc, params, active, t, q, qd, slide, work, problem, istate
             held
             and v2 > 0.0
             and a2 < 0.0
-            and _impact(model, params, active, q, reversed_, slide, False, work, problem,
-                        istate, third)  # fmt: skip
+            and _impact(
+                model, params, active, q, reversed_, slide, False, work, problem, istate, third
+            )
         ):
             _kin(model, active, q, third, work)
             ratio = gap_velocity[i, c] / v1
@@ -1066,10 +1067,8 @@ def _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, 
             # the sequence's accumulation instant when it is known)
             _project(model, active, q, qd, mode, work, fstate)
             istate[S_ZENO] += 1
-            count = _select(
-                model, exc, params, active, t, q, qd, slide, work, problem, istate, mode,
-                directions,
-            )
+            count = _select(model, exc, params, active, t, q, qd, slide, work, problem, istate,
+                            mode, directions)  # fmt: skip
             if end > t:
                 fstate[F_TIME] = end
     if count == 0:
