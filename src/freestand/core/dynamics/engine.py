@@ -931,6 +931,27 @@ def _land(params, active, mode, work, problem):
 
 
 @nb.njit(cache=True, _nrt=False)
+def _moves_as_one(work, active, rocking, pivot, tolerance):
+    """Whether the stack moves as one body rocking on ``pivot`` of interface ``rocking``.
+
+    Every other interface's contacts neither open, close nor slip, and the
+    pivot does not slip (relative velocities within ``tolerance`` [m/s];
+    kinematics in ``work``).
+    """
+    gap_velocity = work.contact[GAP_VELOCITY]
+    slip_velocity = work.contact[SLIP_VELOCITY]
+    for j in range(active):
+        for c in range(2):
+            if j == rocking and c != pivot:
+                continue
+            if abs(slip_velocity[j, c]) > tolerance:
+                return False
+            if j != rocking and abs(gap_velocity[j, c]) > tolerance:
+                return False
+    return True
+
+
+@nb.njit(cache=True, _nrt=False)
 def _zeno_end(model, exc, params, active, t, q, qd, slide, work, problem, istate, mode,
               lift_peak):  # fmt: skip
     """Accumulation instant [s] of the Zeno sequence an impact starts, or -1 if not summed.
@@ -947,7 +968,8 @@ def _zeno_end(model, exc, params, active, t, q, qd, slide, work, problem, istate
     (constant restoring moment: Brogliato 2016, section 1.3.2), and every impact
     is the same linear map of the rates. Two impacts of the reversed rates give
     the other contact's flight (``v_2``, ``a_2``) and the ratio ``rho = v_3 / v_1``
-    over a pair of flights, and the sequence ends at
+    over a pair of flights (after each, the stack must still move as one body:
+    :func:`_moves_as_one`), and the sequence ends at
 
         t_inf = t + (2 v_1 / |a_1| + 2 v_2 / |a_2|) / (1 - rho)
 
@@ -989,10 +1011,11 @@ def _zeno_end(model, exc, params, active, t, q, qd, slide, work, problem, istate
     end = -1.0
     for k in range(n):
         reversed_[k] = -qd[k]
+    tol_vel = params[P_TOL_VEL]
     if _impact(model, params, active, q, reversed_, slide, False, work, problem, istate, second):
         # the other contact's flight: rocking on contact c, the held mode swapped
         _kin(model, active, q, second, work)
-        v2 = gap_velocity[i, other]
+        v2 = gap_velocity[i, other] if _moves_as_one(work, active, i, c, tol_vel) else -1.0
         mode[i, c] = 1
         mode[i, other] = 0
         held = _evaluate(model, exc, params, active, t, q, second, mode, work, qdd, lam)
@@ -1012,7 +1035,7 @@ def _zeno_end(model, exc, params, active, t, q, qd, slide, work, problem, istate
         ):
             _kin(model, active, q, third, work)
             ratio = gap_velocity[i, c] / v1
-            if 0.0 < ratio < 1.0:
+            if 0.0 < ratio < 1.0 and _moves_as_one(work, active, i, other, tol_vel):
                 end = t + (-2.0 * v1 / a1 - 2.0 * v2 / a2) / (1.0 - ratio)
     _kin(model, active, q, qd, work)
     problem.accelerations[0, i, c] = a1
