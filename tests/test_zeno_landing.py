@@ -61,16 +61,21 @@ def test_no_landing_while_the_support_still_moves():
     assert len(result.events_of("impact")) > 60
 
 
-def test_a_rocking_pair_lands_at_the_accumulation_of_its_impacts():
-    # two blocks rocking as one (the upper one sticks) after a half-sine: once the
-    # flights rise less than 1e-3 of the largest lift, the tail is summed and the pair
-    # lands at the instant the resolved impacts' intervals accumulate at
+def rocking_pair() -> tuple[Stack, SupportMotion]:
+    """Two blocks (the upper one sticks) under a 1 Hz half-sine, then a still support."""
     lower = Block.rectangle("lower", 0.6, 2.0, 1200.0, Friction(0.8, 0.7))
     upper = Block.rectangle("upper", 0.4, 1.2, 400.0, Friction(0.8, 0.7), level=2.0)
     dt = 0.005
     time = np.arange(0.0, 10.0 + dt, dt)
     pulse = np.where(time < 0.5, 1.2 * 9.81 * 0.3 * np.sin(2.0 * math.pi * time), 0.0)
-    result = simulate(Stack("pair", (lower, upper)), SupportMotion(dt, pulse), 10.0)
+    return Stack("pair", (lower, upper)), SupportMotion(dt, pulse)
+
+
+def test_a_rocking_pair_lands_at_the_accumulation_of_its_impacts():
+    # the pair rocks as one: once the flights rise less than 1e-3 of the largest lift,
+    # the tail is summed and the pair lands at the instant the resolved impacts'
+    # intervals accumulate at
+    result = simulate(*rocking_pair(), 10.0)
     assert result.status == "completed"
     assert result.diagnostics.zeno_landings == 1
     impacts = result.events_of("impact")
@@ -91,11 +96,6 @@ def test_a_rocking_pair_lands_at_the_accumulation_of_its_impacts():
 def test_the_tail_is_resolved_when_it_would_outlast_the_run():
     # the same pair run to 9.2 s, before its accumulation instant: no landing, every
     # impact of the tail located
-    lower = Block.rectangle("lower", 0.6, 2.0, 1200.0, Friction(0.8, 0.7))
-    upper = Block.rectangle("upper", 0.4, 1.2, 400.0, Friction(0.8, 0.7), level=2.0)
-    dt = 0.005
-    time = np.arange(0.0, 10.0 + dt, dt)
-    pulse = np.where(time < 0.5, 1.2 * 9.81 * 0.3 * np.sin(2.0 * math.pi * time), 0.0)
-    result = simulate(Stack("pair", (lower, upper)), SupportMotion(dt, pulse), 9.2)
+    result = simulate(*rocking_pair(), 9.2)
     assert result.diagnostics.zeno_landings == 0
     assert len(result.events_of("impact")) > 70
