@@ -63,9 +63,14 @@ of the suite at its scale: the runs that stay near flat, that overturn, and
 the median peaks of the others, freestand at both steps against MuJoCo's
 first fine run (:func:`ensemble`).
 
+(e) Edges: a diagnosis of the cabinet with mu 0.5, whose slide and twist
+differ from MuJoCo's: MuJoCo's base edges loaded at their corners and
+uniformly, for friction coefficients around b_x / h (:func:`edges`).
+
     python benchmarks/mujoco_body.py [accuracy] [speed] [profile]
     python benchmarks/mujoco_body.py single | campaign     # one half of (b)
     python benchmarks/mujoco_body.py ensemble              # (d), not in the default run
+    python benchmarks/mujoco_body.py edges                 # (e), a diagnosis of the cabinet
 
 Each check prints PASS or FAIL; the command exits 1 if any failed.
 
@@ -276,19 +281,40 @@ def base_points(body: Body, rim: int = RIM_POINTS) -> np.ndarray:
     return np.array(points)
 
 
+def boundary_points(body: Body, rim: int = RIM_POINTS) -> np.ndarray:
+    """Contact points of a box's base on a grid that includes its boundary [m].
+
+    Nodes every ``CELL`` at most, from edge to edge: a rocking edge rests on a
+    row of equally loaded points (about freestand's uniform line pressure,
+    lever L/4 for the twist) instead of its two corners. A cylinder's points
+    are those of :func:`base_points`.
+    """
+    if not isinstance(body.shape, Box):
+        return base_points(body, rim)
+    lx, ly = body.shape.size[:2]
+    xs = np.linspace(-lx / 2, lx / 2, math.ceil(lx / CELL) + 1)
+    ys = np.linspace(-ly / 2, ly / 2, math.ceil(ly / CELL) + 1)
+    return np.array([(x, y) for x in xs for y in ys])
+
+
 def mujoco_xml(
     body: Body, step: float, timeconst: float, contact: str, rim: int = RIM_POINTS
 ) -> str:
-    """MJCF of the body on the plane: ``contact`` "points" (:func:`base_points`) or "primitive"."""
+    """MJCF of the body on the plane.
+
+    ``contact``: "points" (:func:`base_points`), "boundary" (:func:`boundary_points`)
+    or "primitive" (MuJoCo's box or cylinder).
+    """
     c = np.asarray(body.centre)
     inertia = np.asarray(body.inertia)
     mu = body.friction.kinetic
     soft = f'solref="{timeconst} 1" solimp="0.99 0.999 0.0001" friction="{mu} 0.005 0.0001"'
-    if contact == "points":
+    if contact in ("points", "boundary"):
+        points = base_points(body, rim) if contact == "points" else boundary_points(body, rim)
         geoms = [
             f'<geom type="sphere" size="{SPHERE}" pos="{x - c[0]} {y - c[1]} {SPHERE - c[2]}" '
             f'mass="0" {soft}/>'
-            for x, y in base_points(body, rim)
+            for x, y in points
         ]
     elif isinstance(body.shape, Box):
         lx, ly, lz = body.shape.size
@@ -761,11 +787,45 @@ def profile(records: list[SupportMotion3]) -> None:
             )
 
 
+#: Friction coefficients of the cabinet in (e): around its b_x / h = 0.5
+EDGE_FRICTIONS = (0.4, 0.49, 0.5, 0.51)
+
+
+def edges(records: list[SupportMotion3]) -> None:
+    """(e) The cabinet with mu 0.5: does the edge's pressure explain the difference?
+
+    MuJoCo's fine runs with the base's edges loaded at their two corners
+    (:func:`base_points`) and uniformly (:func:`boundary_points`), beside
+    freestand, for friction coefficients around b_x / h = 0.5 (where sliding
+    and rocking about the long edges start together). Prints the peaks; no
+    verdict (a diagnosis, not a check).
+    """
+    case = CASES[0]
+    print(f"\n(e) {case.body.name} under record {case.record} x {case.scale:g}: peaks tilt [rad],"
+          " slide [mm], twist [rad]")  # fmt: skip
+    for mu in EDGE_FRICTIONS:
+        body = Body(case.body.name, case.body.shape, case.body.mass, Friction(mu, mu))
+        motion = case_motion(case, records)
+        runs = {
+            "freestand, default step": freestand_peaks(body, motion)[0],
+            f"freestand, {1e3 * FINE_STEP:g} ms": freestand_peaks(body, motion, FINE_STEP)[0],
+        }
+        for contact, label in (("points", "corners"), ("boundary", "uniform edges")):
+            for step, timeconst in case.fine:
+                name = f"MuJoCo {1e3 * step:g} ms, T {1e3 * timeconst:g} ms, {label}"
+                runs[name] = MujocoBody(body, step, timeconst, contact).peaks(
+                    motion, SUITE_DURATION
+                )
+        print(f"  mu = {mu:g}")
+        for name, peaks in runs.items():
+            print(f"    {name:42s} {peaks.tilt:8.4f} {1e3 * peaks.slide:7.2f} {peaks.twist:9.2e}")
+
+
 def main(sections: list[str]) -> int:
     if mujoco is None:
         print("mujoco is not installed (pip install -e '.[bench]'): benchmark skipped")
         return 0
-    known = ("accuracy", "speed", "single", "campaign", "profile", "ensemble")
+    known = ("accuracy", "speed", "single", "campaign", "profile", "ensemble", "edges")
     unknown = [name for name in sections if name not in known]
     if unknown:
         print(f"unknown section {', '.join(unknown)}: give any of {', '.join(known)}")
@@ -787,6 +847,8 @@ def main(sections: list[str]) -> int:
         profile(records)
     if "ensemble" in sections and not ensemble(records):
         status = 1
+    if "edges" in sections:
+        edges(records)
     return status
 
 
