@@ -9,9 +9,9 @@ mode is admissible there: rocking on the long edge with the base sticking
 needs 0.2 % more friction than mu_0 gives (5.7 N of 3.2 kN), the slip of that
 edge drives a corner outside it into the support, and the corners' modes fail
 friction or separation. The engine then passes the instant by time stepping
-(a remedy), and the cabinet slides flat where MuJoCo's lifts: the start of the
-cabinet's difference from MuJoCo (docs/benchmarks.md, section (e);
-docs/three-d.md, Known limits). The state just before the instant is stored
+(a remedy); from here the rigid base rocks on an edge by micrometres where
+MuJoCo's soft base stays on its face: the start of the cabinet's difference
+from MuJoCo (docs/benchmarks.md, section (e); docs/three-d.md, Known limits). The state just before the instant is stored
 in ``tests/data/cabinet_onset.npz`` (state, time, a 0.15 s slice of the record).
 """
 
