@@ -7,6 +7,9 @@ first links the loop to them. Loading must never compile, fail or change a resul
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import numba as nb
 import numpy as np
 
@@ -43,3 +46,18 @@ def test_loading_twice_loads_nothing_more_and_the_engine_runs():
     motion = SupportMotion(0.01, 3.0 * np.sin(2.0 * np.pi * time))
     result = timehistory.simulate(Stack("one", (block,)), motion, method="general")
     assert result.status == "completed"
+
+
+def test_a_new_process_loads_the_hot_kernels_from_the_cache():
+    # the engine has run in this process, so numba's cache holds its kernels; a new
+    # process must find them there (this breaks if numba's cache layout changes and
+    # the loading silently finds nothing: docs/benchmarks.md, the cache's copies)
+    block = Block.rectangle("block", 0.4, 2.0, 1000.0, Friction(0.8, 0.7))
+    time = np.arange(0.0, 1.0, 0.01)
+    motion = SupportMotion(0.01, 3.0 * np.sin(2.0 * np.pi * time))
+    timehistory.simulate(Stack("one", (block,)), motion, method="general")
+    code = "from freestand.core.dynamics import timehistory; print(timehistory._load_engine())"
+    output = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, timeout=600
+    )
+    assert int(output.stdout.split()[-1]) >= len(engine.HOT_KERNELS)
