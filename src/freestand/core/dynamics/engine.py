@@ -978,8 +978,10 @@ def _zeno_end(model, exc, params, active, t, q, qd, slide, work, problem, istate
     (Housner 1963's ``eta^2 = rho`` for one block). The neglected rocking is at
     most :data:`ZENO_FRACTION` of the largest lift, and the constant restoring
     moment errs by about the amplitude over the slenderness (a few 1e-4 of the
-    remaining time). ``mode`` gets the contact closed when summed; otherwise
-    ``work`` and ``problem`` read as before. Not summed past the run's end.
+    remaining time). ``mode`` gets the contact closed when summed. Either way
+    the kinematics in ``work`` and the open contact's acceleration that
+    :func:`_land` reads are restored; the trial impacts overwrite the rest of
+    ``problem``. Not summed past the run's end.
     """
     tol_gap = params[P_TOL_GAP]
     rocking = -1
@@ -1017,19 +1019,21 @@ def _zeno_end(model, exc, params, active, t, q, qd, slide, work, problem, istate
     if _impact(model, params, active, q, reversed_, slide, False, work, problem, istate, second):
         # the other contact's flight: rocking on contact c, the held mode swapped
         _kin(model, active, q, second, work)
-        v2 = gap_velocity[i, other] if _moves_as_one(work, active, i, c, tol_vel) else -1.0
-        mode[i, c] = 1
-        mode[i, other] = 0
-        held = _evaluate(model, exc, params, active, t, q, second, mode, work, qdd, lam)
-        mode[i, c] = 0
-        mode[i, other] = 1
-        a2 = work.contact[GAP_BIAS][i, other]
-        for k in range(n):
-            a2 += work.jacobian[0][i, other, k] * qdd[k]
-            reversed_[k] = -second[k]
+        v2 = gap_velocity[i, other]
+        held = v2 > 0.0 and _moves_as_one(work, active, i, c, tol_vel)
+        a2 = 0.0
+        if held:
+            mode[i, c] = 1
+            mode[i, other] = 0
+            held = _evaluate(model, exc, params, active, t, q, second, mode, work, qdd, lam)
+            mode[i, c] = 0
+            mode[i, other] = 1
+            a2 = work.contact[GAP_BIAS][i, other]
+            for k in range(n):
+                a2 += work.jacobian[0][i, other, k] * qdd[k]
+                reversed_[k] = -second[k]
         if (
             held
-            and v2 > 0.0
             and a2 < 0.0
             and _impact(
                 model, params, active, q, reversed_, slide, False, work, problem, istate, third
