@@ -26,7 +26,8 @@ RECORDS = ROOT / "examples" / "records"
 X, UP = RECORDS / "synthetic_H.AT2", RECORDS / "synthetic_UP.AT2"
 
 #: The cabinet rocks about an edge (with impacts) under the synthetic record on x and y,
-#: turned by 30 deg, with the vertical, for 6 s.
+#: turned by 30 deg, with the vertical, for 6 s; at its friction limit the edge slips by
+#: micrometres (twist below 1e-6 rad).
 CABINET_ARGS = ("--record", str(X), "--record-y", str(X), "--vertical", str(UP), "--peak", "5",
                 "--angle", "30", "--duration", "6")  # fmt: skip
 
@@ -75,7 +76,12 @@ def test_tables_have_the_documented_columns(cabinet):
     assert history["cabinet.tilt [rad]"].max() == cabinet.max_rotation[0]
     tilt = np.hypot(history["cabinet.tilt_x [rad]"], history["cabinet.tilt_y [rad]"])
     np.testing.assert_allclose(tilt, history["cabinet.tilt [rad]"], atol=1e-12)
-    assert set(history["cabinet.motion"]) == {"rest", "rock-edge"}
+    # it rests, rocks about an edge, and where the edge's friction is at its limit slips by
+    # micrometres (with a remedy and one free row after it)
+    motions = history["cabinet.motion"].value_counts()
+    assert {"rest", "rock-edge"} <= set(motions.index) <= {"rest", "rock-edge", "slide-rock",
+                                                          "free-flight"}  # fmt: skip
+    assert motions["rock-edge"] > 0.5 * len(history) and motions.get("free-flight", 0) <= 3
     assert history.attrs["angle [deg]"] == 30.0 and history.attrs["method"] == "3-D"
     peaks = cabinet.to_frame("peaks")
     assert peaks.columns.tolist() == ["block", "max_rotation [rad]", "max_slide [m]",
@@ -103,7 +109,8 @@ def test_the_history_figure_has_its_panels_curves_and_events(cabinet):
     assert max(tilt.get_ydata()) == pytest.approx(1000.0 * cabinet.max_rotation[0])
     impacts = next(line for line in axes[2].lines if line.get_gid() == "event:impact")
     assert len(impacts.get_xdata()) == cabinet.event_counts()["impact"]
-    assert {patch.get_gid() for patch in axes[1].patches} == {"motion:rest", "motion:rock-edge"}
+    motions = set(cabinet.to_frame()["cabinet.motion"])
+    assert {patch.get_gid() for patch in axes[1].patches} == {f"motion:{m}" for m in motions}
     assert "largest tilt" in figure.get_suptitle() and "turned 30 deg" in figure.get_suptitle()
     # round-off twist (a box rocking about an edge) is drawn flat within +-1 mrad
     assert axes[4].get_ylim() == (-1.0, 1.0)
@@ -117,9 +124,11 @@ def test_the_plan_view_shows_the_path_and_the_tilt_vector(cabinet):
     assert slide.get_xlabel() == "x [mm]" and tilt.get_xlabel() == "tilt towards x [mrad]"
     assert [c.get_gid() for c in slide.collections] == ["slide"]
     assert [c.get_gid() for c in tilt.collections] == ["tilt"]
-    # rocking about an edge along x: the tilt vector stays on the y axis
+    # rocking about an edge along x: the tilt vector stays on the y axis, to the twist
+    # (below 1e-6 rad: 1e-6 of the tilt)
     segments = np.concatenate(tilt.collections[0].get_segments())
-    assert np.max(np.abs(segments[:, 0])) < 1e-6 < np.max(np.abs(segments[:, 1]))
+    assert np.max(np.abs(segments[:, 0])) < 1e-6 * np.max(np.abs(segments[:, 1]))
+    assert cabinet.max_twist[0] < 1e-6
     # far below the tilt at which G stands over the long edge, atan(b_y / h): said, not drawn
     assert f"G over the pivot from {1000.0 * math.atan(0.25 / 1.05):.3g} mrad" in tilt.get_title()
     assert not any(line.get_gid() == "tipping" for line in tilt.lines)

@@ -20,10 +20,11 @@ inertial force, as in the planar engine).
 patch     when                                normal rows           tangential rows
 ========  ==================================  ====================  =================
 FACE      the base lies flat                  3: z of the base      3: horizontal
-                                              centre, tilt about    velocity of the
-                                              x and y               base centre, twist
-EDGE      two adjacent corners (box)          2: the corners' z     3: as FACE, at the
-                                                                    edge's midpoint
+                                              centre, tilt about    velocity at the
+                                              x and y               centre of pressure,
+                                                                    twist
+EDGE      two adjacent corners (box)          2: the corners' z     3: as FACE, at its
+                                                                    centre of pressure
 POINT     one corner, or the lowest rim       1                     2: the material
           point (cylinder)                                          point's horizontal
                                                                     velocity (rolling)
@@ -39,16 +40,19 @@ an angular row about e is ``w = (0, e)``. The twist row of a FACE or EDGE is
 
 **Friction** (Coulomb, static mu_0 to hold, kinetic mu to slide). POINT: the
 circular cone ``|f_t| <= mu_0 N``, sliding ``f_t = -mu N s/|s|`` (s the slip
-velocity; maximal dissipation). FACE and EDGE: force and twist torque with a
-uniform pressure over the contact (Goyal, Ruina and Papadopoulos 1991, Wear
-143, 307-330) and the ellipsoidal limit surface of Howe and Cutkosky 1996 (Int.
-J. Robotics Research 15(6), 557-572): with the scaled slip velocity
-``s = (v_c,x, v_c,y, rho omega_z)`` and ``f_t = (F_x, F_y, T_z / rho)``, hold
-while ``|f_t| <= mu_0 N`` and slide with ``f_t = -mu N s/|s|``. ``rho`` is the
-mean distance of the contact from its centre (disc (2/3) R, annulus
-(2/3)(R^3 - r^3)/(R^2 - r^2), rectangle its closed form, edge L/4): the
-pure-twist limit torque is ``mu N rho`` (uniform pressure) and pure
-translation is Coulomb's circular cone exactly.
+velocity; maximal dissipation). FACE and EDGE: force and twist torque about
+the centre of pressure c, with the ellipsoidal limit surface of Howe and
+Cutkosky 1996 (Int. J. Robotics Research 15(6), 557-572): with the scaled
+slip velocity ``s = (v_c,x, v_c,y, rho omega_z)`` (v_c of the material point
+at c) and ``f_t = (F_x, F_y, T_c / rho)``, hold while ``|f_t| <= mu_0 N`` and
+slide with ``f_t = -mu N s/|s|``. The pressure is taken uniform over the
+effective area, the largest part of the contact concentric with c (Meyerhof
+1953, Proc. 3rd Int. Conf. Soil Mech. Found. Eng. 1, 440-445), and ``rho``
+is that area's mean distance from c (Goyal, Ruina and Papadopoulos 1991,
+Wear 143, 307-330; :func:`effective_twist_radius`): the pure-twist limit
+torque is ``mu N rho`` and pure translation is Coulomb's circular cone
+exactly. The tangential rows sit at the *friction centre*
+(``sc[SC_CENTRE]``), which :func:`solve_patch` moves to c.
 
 **The rolling rim point.** A tilted cylinder touches at the lowest point of
 its base circle, ``s* = -R (R_31, R_32, 0) / sin(tilt)`` in the body frame.
@@ -83,13 +87,11 @@ P_HALF_X = 23  # box half-width b_x, or the cylinder's radius R
 P_HALF_Y = 24  # box half-width b_y, or R
 P_MU_STATIC = 25
 P_MU_KINETIC = 26
-P_RHO_FACE = 27  # twist radius of the base [m]
-P_RHO_EDGE_X = 28  # of an edge along x (b_x / 2)
-P_RHO_EDGE_Y = 29  # of an edge along y (b_y / 2)
-P_GRAVITY = 30
-P_HEIGHT = 31
-P_RESTITUTION = 32  # factor on the velocity after an impact [-] (1: plastic)
-P_SIZE = 33
+P_RHO_FACE = 27  # twist radius of the whole base about its centre [m]
+P_GRAVITY = 28
+P_HEIGHT = 29
+P_RESTITUTION = 30  # factor on the velocity after an impact [-] (1: plastic)
+P_SIZE = 31
 
 SHAPE_BOX = 0
 SHAPE_CYLINDER = 1
@@ -115,16 +117,25 @@ STATE_SIZE = 13  # r (3), q (4), v (3), omega (3)
 # row scratch: W (6, 6) columns, bias (6); normal rows first, then tangential ones
 TILT_EPSILON = 1e-9  # sin(tilt) below which a cylinder counts as flat for its rim point
 PIVOT_LEAN = 1e-6  # sin(tilt) below which a rocking cylinder keeps its rim point (see rim_angle)
+RHO_FLOOR = 1e-9  # smallest twist radius of a FACE or EDGE, relative to the base's half-width [-]
+CENTRE_ITERATIONS = 12  # most solves of a sliding FACE or EDGE to settle its friction centre
+CENTRE_TOLERANCE = 1e-12  # its settling: a move below this times the half-width [-]
 
 
+@nb.njit(cache=True, error_model="numpy")
 def rectangle_twist_radius(half_x: float, half_y: float) -> float:
     """Mean distance [m] from the centre of the rectangle |x| <= p, |y| <= q.
 
     ``(2 p q d + p^3 ln((q + d)/p) + q^3 ln((p + d)/q)) / (6 p q)``,
     ``d = sqrt(p^2 + q^2)``: the pure-twist friction torque of a uniformly
     loaded rectangle is mu N times this (Goyal, Ruina and Papadopoulos 1991).
+    A side below 1e-9 of the other is a line: half its half-length.
     """
     p, q = half_x, half_y
+    if q <= 1e-9 * p:
+        return 0.5 * p
+    if p <= 1e-9 * q:
+        return 0.5 * q
     d = math.hypot(p, q)
     integral = 2.0 * p * q * d + p**3 * math.log((q + d) / p) + q**3 * math.log((p + d) / q)
     return integral / (6.0 * p * q)
@@ -151,15 +162,13 @@ def body_parameters(body: Body, gravity: float, restitution: float = 1.0) -> np.
     if isinstance(shape, Box):
         half_x, half_y = 0.5 * shape.size[0], 0.5 * shape.size[1]
         out[P_SHAPE] = SHAPE_BOX
-        out[P_RHO_FACE] = rectangle_twist_radius(half_x, half_y)
+        out[P_RHO_FACE] = float(rectangle_twist_radius(half_x, half_y))
     else:
         half_x = half_y = shape.radius
         out[P_SHAPE] = SHAPE_CYLINDER
         out[P_RHO_FACE] = annulus_twist_radius(shape.radius, shape.inner_radius)
     out[P_HALF_X] = half_x
     out[P_HALF_Y] = half_y
-    out[P_RHO_EDGE_X] = 0.5 * half_x
-    out[P_RHO_EDGE_Y] = 0.5 * half_y
     out[P_MU_STATIC] = body.friction.static
     out[P_MU_KINETIC] = body.friction.kinetic
     out[P_GRAVITY] = gravity
@@ -384,18 +393,21 @@ def rim_terms(par, y, rot, psi):
 
 
 @nb.njit(cache=True, error_model="numpy")
-def patch_rows(par, y, rot, kind, index, psi, normal, nbias, tangent, tbias, arms):
-    """Fill the rows of a patch; returns (normal rows, tangential rows, twist radius).
+def patch_rows(par, y, rot, kind, index, psi, centre, normal, nbias, tangent, tbias, arms):
+    """Fill the rows of a patch; returns (normal rows, tangential rows).
 
     ``normal`` (6, 3) and ``tangent`` (6, 3) hold the rows as columns, ``nbias``
     and ``tbias`` their biases, ``arms`` (4, 3) the arms of the patch's points:
     the normal points (EDGE: its two corners; POINT: the point; FACE: the base
-    centre) then, in row 3, the patch centre of the tangential rows.
+    centre) then, in row 3, the friction centre of the tangential rows. A
+    FACE's or EDGE's tangential rows are at its friction centre ``centre``
+    (body-frame base x, y [m] and the twist radius rho [m], see
+    :func:`move_friction_centre`).
     """
-    d = arms[3]
     if kind == FREE:
-        return 0, 0, 0.0
+        return 0, 0
     if kind == POINT:
+        d = arms[3]
         if par[P_SHAPE] == SHAPE_BOX:
             sx, sy = box_corner(par, index)
             arm(par, rot, sx, sy, 0.0, arms[0])
@@ -409,30 +421,155 @@ def patch_rows(par, y, rot, kind, index, psi, normal, nbias, tangent, tbias, arm
         _point_row(y, arms[0], 0.0, 0.0, 1.0, zt, normal, nbias, 0)
         _point_row(y, d, 1.0, 0.0, 0.0, xt, tangent, tbias, 0)
         _point_row(y, d, 0.0, 1.0, 0.0, yt, tangent, tbias, 1)
-        return 1, 2, 0.0
+        return 1, 2
     if kind == EDGE:
         ax, ay = box_corner(par, index)
         bx, by = box_corner(par, (index + 1) % 4)
         arm(par, rot, ax, ay, 0.0, arms[0])
         arm(par, rot, bx, by, 0.0, arms[1])
-        arm(par, rot, 0.5 * (ax + bx), 0.5 * (ay + by), 0.0, d)
         _point_row(y, arms[0], 0.0, 0.0, 1.0, 0.0, normal, nbias, 0)
         _point_row(y, arms[1], 0.0, 0.0, 1.0, 0.0, normal, nbias, 1)
-        rho = par[P_RHO_EDGE_X] if index % 2 == 0 else par[P_RHO_EDGE_Y]
         n_normal = 2
     else:  # FACE
         arm(par, rot, 0.0, 0.0, 0.0, arms[0])
-        for i in range(3):
-            d[i] = arms[0, i]
-        _point_row(y, d, 0.0, 0.0, 1.0, 0.0, normal, nbias, 0)
+        _point_row(y, arms[0], 0.0, 0.0, 1.0, 0.0, normal, nbias, 0)
         _angular_row(1.0, 0.0, 0.0, normal, nbias, 1)
         _angular_row(0.0, 1.0, 0.0, normal, nbias, 2)
-        rho = par[P_RHO_FACE]
         n_normal = 3
+    tangent_rows(par, y, rot, centre, tangent, tbias, arms)
+    return n_normal, 3
+
+
+@nb.njit(cache=True, error_model="numpy")
+def tangent_rows(par, y, rot, centre, tangent, tbias, arms):
+    """A FACE's or EDGE's tangential rows at its friction centre (arm in ``arms[3]``).
+
+    The horizontal velocity of the material point at the centre, then the
+    twist ``(0, rho e_z)`` with rho = ``centre[2]``.
+    """
+    d = arms[3]
+    arm(par, rot, centre[0], centre[1], 0.0, d)
     _point_row(y, d, 1.0, 0.0, 0.0, 0.0, tangent, tbias, 0)
     _point_row(y, d, 0.0, 1.0, 0.0, 0.0, tangent, tbias, 1)
-    _angular_row(0.0, 0.0, rho, tangent, tbias, 2)
-    return n_normal, 3, rho
+    _angular_row(0.0, 0.0, centre[2], tangent, tbias, 2)
+
+
+# --- the friction centre of a FACE or EDGE ---------------------------------------------------
+
+
+@nb.njit(cache=True, error_model="numpy")
+def effective_twist_radius(par, kind, index, cx, cy):
+    """Twist radius rho [m] of a FACE or EDGE whose centre of pressure is (cx, cy).
+
+    The pressure is taken uniform over the *effective area*, the largest part
+    of the contact concentric with the centre of pressure (Meyerhof 1953):
+    for a box face the rectangle of half-sides ``b_x - |c_x|``, ``b_y -
+    |c_y|``, for an edge of half-length ``L/2`` the segment of half-length
+    ``L/2 - |e|`` (e the offset along it), for a disc or annulus the base
+    shrunk about the centre by ``1 - |c|/R``. rho is the mean distance of
+    that area from its centre: the full base's at the centre, an edge's
+    (``L/4``) when the centre of pressure reaches a side, zero at a corner or
+    on the rim, so that the friction of a FACE, an EDGE and a POINT agree
+    where one becomes the other. Floored at ``RHO_FLOOR`` times the base's
+    half-width so that the twist row stays a row.
+    """
+    floor = RHO_FLOOR * par[P_HALF_X]
+    if kind == FACE:
+        if par[P_SHAPE] == SHAPE_BOX:
+            p = par[P_HALF_X] - abs(cx)
+            q = par[P_HALF_Y] - abs(cy)
+            if p <= 0.0 or q <= 0.0:
+                return floor
+            return max(rectangle_twist_radius(p, q), floor)
+        shrink = 1.0 - math.hypot(cx, cy) / par[P_HALF_X]
+        return max(par[P_RHO_FACE] * shrink, floor)
+    if kind == EDGE:
+        ax, ay = box_corner(par, index)
+        bx, by = box_corner(par, (index + 1) % 4)
+        if ay == by:  # an edge along x
+            half, offset = 0.5 * abs(bx - ax), cx - 0.5 * (ax + bx)
+        else:
+            half, offset = 0.5 * abs(by - ay), cy - 0.5 * (ay + by)
+        return max(0.5 * (half - abs(offset)), floor)
+    return 0.0
+
+
+@nb.njit(cache=True, error_model="numpy")
+def reset_friction_centre(par, kind, index, centre):
+    """The friction centre at the patch's geometric centre (the base centre, an edge's midpoint).
+
+    ``centre`` (5,): x, y [m] in the body frame's base plane, rho [m], then the
+    patch's kind and index (as floats), which :func:`solve_patch` reads.
+    """
+    centre[3] = kind
+    centre[4] = index
+    centre[0] = 0.0
+    centre[1] = 0.0
+    if kind == EDGE:
+        ax, ay = box_corner(par, index)
+        bx, by = box_corner(par, (index + 1) % 4)
+        centre[0] = 0.5 * (ax + bx)
+        centre[1] = 0.5 * (ay + by)
+    centre[2] = effective_twist_radius(par, kind, index, centre[0], centre[1])
+
+
+@nb.njit(cache=True, error_model="numpy")
+def move_friction_centre(par, rot, kind, index, lam, centre):
+    """Move the friction centre to the patch's centre of pressure; returns how far [m].
+
+    The centre of pressure of the normal multipliers ``lam`` (FACE: from N
+    and its couples; EDGE: ``(N_a a + N_b b) / N`` of its corners), kept on
+    the contact; unchanged while N <= 0. Sets ``centre`` = (x, y, rho).
+    """
+    if kind == FACE:
+        n = lam[0]
+        if n <= 0.0:
+            return 0.0
+        cx, cy = face_centre_of_pressure(rot, lam)
+        if par[P_SHAPE] == SHAPE_BOX:
+            cx = min(max(cx, -par[P_HALF_X]), par[P_HALF_X])
+            cy = min(max(cy, -par[P_HALF_Y]), par[P_HALF_Y])
+        else:
+            size = math.hypot(cx, cy)
+            if size > par[P_HALF_X]:
+                cx *= par[P_HALF_X] / size
+                cy *= par[P_HALF_X] / size
+    elif kind == EDGE:
+        n = lam[0] + lam[1]
+        if n <= 0.0:
+            return 0.0
+        share = min(max(lam[1] / n, 0.0), 1.0)
+        ax, ay = box_corner(par, index)
+        bx, by = box_corner(par, (index + 1) % 4)
+        cx = ax + share * (bx - ax)
+        cy = ay + share * (by - ay)
+    else:
+        return 0.0
+    moved = math.hypot(cx - centre[0], cy - centre[1])
+    centre[0] = cx
+    centre[1] = cy
+    centre[2] = effective_twist_radius(par, kind, index, cx, cy)
+    return moved
+
+
+@nb.njit(cache=True, error_model="numpy")
+def centre_stick_friction(par, rot, kind, index, n_normal, lam, centre):
+    """A sticking FACE's or EDGE's friction, solved on rows at ``centre``, about its CoP.
+
+    The force is the same; the twist torque about the new centre is
+    ``T' = T - (delta x F)_z`` (delta the horizontal move of the centre), its
+    multiplier ``T' / rho'``. ``centre`` is moved (:func:`move_friction_centre`).
+    """
+    old_x, old_y, old_rho = centre[0], centre[1], centre[2]
+    move_friction_centre(par, rot, kind, index, lam, centre)
+    sx = centre[0] - old_x
+    sy = centre[1] - old_y
+    dx = rot[0, 0] * sx + rot[0, 1] * sy
+    dy = rot[1, 0] * sx + rot[1, 1] * sy
+    force_x = lam[n_normal]
+    force_y = lam[n_normal + 1]
+    torque = lam[n_normal + 2] * old_rho - (dx * force_y - dy * force_x)
+    lam[n_normal + 2] = torque / centre[2]
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -610,11 +747,15 @@ SC_LAM = 13
 SC_SVEL = 14
 SC_SACC = 15
 SC_DIR = 16
+SC_CENTRE = 17  # the friction centre of the rows: base x, y [m] (body frame), rho [m]; kind, index
 
-#: [m/s] below which a slip velocity has no direction of its own: above the residue (some
-#: 1e-11 m/s) that the drift projection leaves in the rows of a slip starting from rest,
-#: whose direction is round-off and not the onset's.
-SLIP_FLOOR = 1e-9
+#: [m/s] below which a slip velocity has no direction of its own: a slip this slow keeps the
+#: direction it started with (or had at its step's start). Above the residue (some 1e-11
+#: m/s) that the drift projection leaves in the rows of a slip starting from rest, and above
+#: the micro-slips of an edge at its friction limit, whose direction swings within
+#: microseconds (the friction's direction moves the centre of pressure along the edge, and
+#: with it the slip velocity there); 1e-9 m/s let them turn it.
+SLIP_FLOOR = 1e-6
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -624,7 +765,7 @@ def new_scratch():
         np.zeros((3, 3)), np.zeros((3, 3)), np.zeros(6), np.zeros(6),
         np.zeros((6, 3)), np.zeros(3), np.zeros((6, 3)), np.zeros(3), np.zeros((4, 3)),
         np.zeros((13, 6)), np.zeros((6, 6)), np.zeros(6), np.zeros(6), np.zeros(6),
-        np.zeros(3), np.zeros(3), np.zeros(3),
+        np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(5),
     )  # fmt: skip
 
 
@@ -655,12 +796,56 @@ def prepare(par, record, dt, t, y, kind, index, psi, sc):
 def scratch_rows(par, y, kind, index, psi, sc):
     """The patch's rows (:func:`patch_rows`) in the scratch, at the rotation it holds.
 
-    Returns (normal rows, tangential rows).
+    The friction centre starts at the patch's geometric centre
+    (:func:`reset_friction_centre`). Returns (normal rows, tangential rows).
     """
-    n_normal, n_tangent, _ = patch_rows(par, y, sc[SC_ROT], kind, index, psi, sc[SC_NORMAL],
-                                        sc[SC_NBIAS], sc[SC_TANGENT], sc[SC_TBIAS],
-                                        sc[SC_ARMS])  # fmt: skip
-    return n_normal, n_tangent
+    reset_friction_centre(par, kind, index, sc[SC_CENTRE])
+    return patch_rows(par, y, sc[SC_ROT], kind, index, psi, sc[SC_CENTRE], sc[SC_NORMAL],
+                      sc[SC_NBIAS], sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS])  # fmt: skip
+
+
+@nb.njit(cache=True, error_model="numpy")
+def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal, n_tangent):
+    """Solve a mode on the rows in the scratch, its friction about the centre of pressure.
+
+    A FACE's or EDGE's friction acts about its centre of pressure, with the
+    twist radius of its effective area (:func:`effective_twist_radius`).
+    Sticking, the rows' centre does not change the solution (every point of
+    the patch is held): one solve, then the friction is expressed about the
+    centre of pressure (:func:`centre_stick_friction`). Sliding, the friction
+    ``-mu N u`` acts at the centre of pressure, which the solution moves: the
+    rows are rebuilt at the centre and solved again until it settles
+    (``CENTRE_TOLERANCE``, at most ``CENTRE_ITERATIONS`` solves). ``kinetic``:
+    the slip direction u is the slip velocity's at each centre
+    (:func:`slip_direction`, ``stored`` its fallback, as mode data); else u
+    is ``direction`` as given. The patch is the one whose rows the scratch
+    holds (``sc[SC_CENTRE][3:5]``, :func:`scratch_rows`); the rows and
+    ``sc[SC_CENTRE]`` are left at the final centre. False when a system is
+    singular.
+    """
+    rot = sc[SC_ROT]
+    centre = sc[SC_CENTRE]
+    kind = int(centre[3])
+    index = int(centre[4])
+    lam = sc[SC_LAM]
+    patch = kind == FACE or kind == EDGE
+    for _ in range(CENTRE_ITERATIONS):
+        if kinetic:
+            direction = slip_direction(y, n_tangent, stored, sc)
+        ok = solve_mode(par, sc[SC_INV], sc[SC_BASE], use_bias, slip, direction, sc[SC_NORMAL],
+                        sc[SC_NBIAS], n_normal, sc[SC_TANGENT], sc[SC_TBIAS], n_tangent,
+                        sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS], sc[SC_ACC], lam)  # fmt: skip
+        if not ok or not patch:
+            return ok
+        if slip == 0:
+            centre_stick_friction(par, rot, kind, index, n_normal, lam, centre)
+            tangent_rows(par, y, rot, centre, sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS])
+            return True
+        moved = move_friction_centre(par, rot, kind, index, lam, centre)
+        if moved <= CENTRE_TOLERANCE * par[P_HALF_X]:
+            return True
+        tangent_rows(par, y, rot, centre, sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS])
+    return True
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -694,6 +879,8 @@ def slip_direction(y, n_tangent, data, sc):
 def solve_at(par, record, dt, t, y, mode, data, sc):
     """Solve the held mode at (t, y): fills sc[SC_ACC] and sc[SC_LAM]; False if singular.
 
+    A sliding patch slides along its slip velocity (:func:`slip_direction`)
+    and its friction acts about its centre of pressure (:func:`solve_patch`).
     Returns (ok, normal rows, tangential rows).
     """
     kind = mode[M_KIND]
@@ -701,8 +888,26 @@ def solve_at(par, record, dt, t, y, mode, data, sc):
     rotation_matrix(y, rot)
     psi = pivot_angle(par, y, rot, kind, data[D_PSI])
     n_normal, n_tangent = prepare(par, record, dt, t, y, kind, mode[M_INDEX], psi, sc)
-    direction = slip_direction(y, n_tangent, data, sc) if mode[M_SLIP] == 1 else sc[SC_DIR]
-    ok = solve_mode(par, sc[SC_INV], sc[SC_BASE], True, mode[M_SLIP], direction, sc[SC_NORMAL],
+    ok = solve_patch(par, y, sc, True, mode[M_SLIP], sc[SC_DIR], mode[M_SLIP] == 1, data,
+                     n_normal, n_tangent)  # fmt: skip
+    return ok, n_normal, n_tangent
+
+
+@nb.njit(cache=True, error_model="numpy")
+def solve_at_centre(par, record, dt, t, y, mode, data, sc):
+    """A sticking mode solved with its rows at the patch's geometric centre.
+
+    The multipliers are then linear in the applied load (the rest phase's
+    unit solutions, ``body_engine.rest_prepare``); :func:`centre_stick_friction`
+    expresses their friction about the centre of pressure. Returns
+    (ok, normal rows, tangential rows).
+    """
+    kind = mode[M_KIND]
+    rot = sc[SC_ROT]
+    rotation_matrix(y, rot)
+    psi = pivot_angle(par, y, rot, kind, data[D_PSI])
+    n_normal, n_tangent = prepare(par, record, dt, t, y, kind, mode[M_INDEX], psi, sc)
+    ok = solve_mode(par, sc[SC_INV], sc[SC_BASE], True, 0, sc[SC_DIR], sc[SC_NORMAL],
                     sc[SC_NBIAS], n_normal, sc[SC_TANGENT], sc[SC_TBIAS], n_tangent,
                     sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS], sc[SC_ACC], sc[SC_LAM])  # fmt: skip
     return ok, n_normal, n_tangent

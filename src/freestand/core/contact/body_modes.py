@@ -53,19 +53,14 @@ from freestand.core.contact.body_kernel import (
     POINT,
     SC_ACC,
     SC_BASE,
+    SC_CENTRE,
     SC_DIR,
-    SC_INV,
     SC_LAM,
-    SC_MATRIX,
-    SC_NBIAS,
-    SC_NORMAL,
-    SC_RHS,
     SC_ROT,
     SC_SACC,
     SC_SVEL,
     SC_TANGENT,
     SC_TBIAS,
-    SC_WORK,
     SHAPE_BOX,
     arm,
     corner_gap,
@@ -76,7 +71,7 @@ from freestand.core.contact.body_kernel import (
     rim_contact,
     scratch_rows,
     sin_tilt,
-    solve_mode,
+    solve_patch,
     tangential_velocity,
 )
 
@@ -158,25 +153,9 @@ def _others_separate(par, y, sc, kind, index, psi, touching, level, tolerance):
 
 @nb.njit(cache=True, error_model="numpy")
 def _solve(par, y, sc, level, slip, direction, n_normal, n_tangent):
-    return solve_mode(
-        par,
-        sc[SC_INV],
-        sc[SC_BASE],
-        level == ACCELERATION,
-        slip,
-        direction,
-        sc[SC_NORMAL],
-        sc[SC_NBIAS],
-        n_normal,
-        sc[SC_TANGENT],
-        sc[SC_TBIAS],
-        n_tangent,
-        sc[SC_WORK],
-        sc[SC_MATRIX],
-        sc[SC_RHS],
-        sc[SC_ACC],
-        sc[SC_LAM],
-    )
+    """The mode on the scratch's rows, sliding along ``direction`` (friction about the CoP)."""
+    return solve_patch(par, y, sc, level == ACCELERATION, slip, direction, False, sc[SC_CENTRE],
+                       n_normal, n_tangent)  # fmt: skip
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -449,9 +428,11 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
             return False
     elif kind != FREE:
         if level == ACCELERATION and speed > velocity_tol:
+            # kinetic: along the slip velocity at the centre of pressure
+            stored = np.zeros(4)
             for k in range(n_tangent):
-                direction[k] = svel[k] / speed
-            if not _solve(par, y, sc, level, 1, direction, n_normal, n_tangent):
+                stored[D_SLIP + k] = svel[k] / speed
+            if not solve_patch(par, y, sc, True, 1, direction, True, stored, n_normal, n_tangent):
                 return False
         else:
             # the friction the patch would need to stick, reversed, starts the search

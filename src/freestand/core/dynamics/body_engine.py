@@ -52,6 +52,7 @@ from freestand.core.contact.body_kernel import (
     POINT,
     SC_ACC,
     SC_BASE,
+    SC_CENTRE,
     SC_INV,
     SC_LAM,
     SC_ROT,
@@ -62,6 +63,7 @@ from freestand.core.contact.body_kernel import (
     SLIP_FLOOR,
     STATE_SIZE,
     arm,
+    centre_stick_friction,
     corner_gap,
     cross,
     flat_gap,
@@ -72,11 +74,13 @@ from freestand.core.contact.body_kernel import (
     normal_total_rows,
     prepare,
     rate,
+    reset_friction_centre,
     rim_angle,
     rotation_matrix,
     row_acceleration,
     sin_tilt,
     solve_at,
+    solve_at_centre,
     solve_mode,
     state_rate,
     support_acceleration,
@@ -195,15 +199,20 @@ def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
 
 
 @nb.njit(cache=True, error_model="numpy")
-def references(par, y, mode, data, sc, ref):
-    """The step's references: the slip direction (3) and the pivot's horizontal direction (2)."""
+def references(par, record, dt, t, y, mode, data, sc, ref):
+    """The step's references: the slip direction (3) and the pivot's horizontal direction (2).
+
+    The slip direction is the slip velocity's at the held patch's centre of
+    pressure at (t, y), or the stored one while the slip is slower than
+    ``SLIP_FLOOR``.
+    """
     rot = sc[SC_ROT]
     rotation_matrix(y, rot)
     for i in range(5):
         ref[i] = 0.0
     if mode[M_SLIP] == 1:
-        # rows of the held patch at y
-        ok, n_normal, n_tangent = solve_at(par, np.zeros((3, 2)), 1.0, 0.0, y, mode, data, sc)
+        # rows of the held patch at (t, y), at its centre of pressure
+        ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
         svel = sc[SC_SVEL]
         tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
         size = 0.0
@@ -813,7 +822,9 @@ def rest_prepare(par, y, mode, data, sc, rest):
 
     At rest (no velocity) the held rows have no bias and the applied wrench
     is ``m (-a_x, -a_y, -(g - a_v))`` at G: ``lam = rest[0] + a_x rest[1] +
-    a_y rest[2] + a_v rest[3]``.
+    a_y rest[2] + a_v rest[3]``, with the rows at the base centre
+    (:func:`solve_at_centre`; the friction is taken about the centre of
+    pressure in :func:`rest_margins`).
     """
     unit = np.zeros((3, 2))
     for j in range(4):
@@ -821,7 +832,7 @@ def rest_prepare(par, y, mode, data, sc, rest):
             value = 1.0 if i == j - 1 else 0.0
             unit[i, 0] = value
             unit[i, 1] = value
-        solve_at(par, unit, 1.0, 0.0, y, mode, data, sc)
+        solve_at_centre(par, unit, 1.0, 0.0, y, mode, data, sc)
         lam = sc[SC_LAM]
         for i in range(6):
             rest[j, i] = lam[i]
@@ -831,37 +842,45 @@ def rest_prepare(par, y, mode, data, sc, rest):
 
 
 @nb.njit(cache=True, error_model="numpy")
-def rest_margins(par, record, dt, t, rest, rot, lam):
-    """The resting mode's multipliers at t in ``lam``; (normal margin, friction margin)."""
+def rest_margins(par, record, dt, t, rest, rot, lam, centre):
+    """The resting mode's multipliers at t in ``lam``; (normal margin, friction margin).
+
+    The friction is expressed about the centre of pressure
+    (:func:`centre_stick_friction`): at rest the load's line of action
+    passes through it, so its twist torque vanishes and the friction margin
+    is ``mu_0 N - |F|``.
+    """
     a_x, a_y, a_v = support_acceleration(record, dt, t)
     for i in range(6):
         lam[i] = rest[0, i] + a_x * rest[1, i] + a_y * rest[2, i] + a_v * rest[3, i]
+    reset_friction_centre(par, FACE, 0, centre)
+    centre_stick_friction(par, rot, FACE, 0, 3, lam, centre)
     return normal_margin(par, rot, FACE, lam), friction_margin(par, 3, 3, lam)
 
 
 @nb.njit(cache=True, error_model="numpy")
-def rest_step(par, record, dt, t, h, rest, rot, lam):
+def rest_step(par, record, dt, t, h, rest, rot, lam, centre):
     """A step of the resting mode over h (within one segment of the record).
 
     The margins are concave in the multipliers (a minimum of linear ones, or
-    ``R N - |M|``, ``mu N - |f_t|``), which are linear in time over a
+    ``R N - |M|``, ``mu N - |F|``), which are linear in time over a
     segment: where both ends hold, the whole step holds. Otherwise the
     crossing is bisected to EVENT_TIME. Returns (step taken, kind fired or -1).
     """
     slack = 1e-9 * par[P_MASS] * par[P_GRAVITY]
-    normal, friction = rest_margins(par, record, dt, t + h, rest, rot, lam)
+    normal, friction = rest_margins(par, record, dt, t + h, rest, rot, lam, centre)
     if normal >= -slack and friction >= -slack:
         return h, -1
     low = 0.0
     high = h
     while high - low > EVENT_TIME:
         middle = 0.5 * (low + high)
-        normal, friction = rest_margins(par, record, dt, t + middle, rest, rot, lam)
+        normal, friction = rest_margins(par, record, dt, t + middle, rest, rot, lam, centre)
         if normal < -slack or friction < -slack:
             high = middle
         else:
             low = middle
-    normal, friction = rest_margins(par, record, dt, t + high, rest, rot, lam)
+    normal, friction = rest_margins(par, record, dt, t + high, rest, rot, lam, centre)
     return high, FN_NORMAL if normal < -slack else FN_FRICTION
 
 
@@ -920,7 +939,7 @@ def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mo
     Returns t + the step taken; the scratch holds the contact force at it.
     """
     h = _next_end(t, breaks, h_max, t_end) - t
-    h, which = rest_step(par, record, dt, t, h, rest, sc[SC_ROT], sc[SC_LAM])
+    h, which = rest_step(par, record, dt, t, h, rest, sc[SC_ROT], sc[SC_LAM], sc[SC_CENTRE])
     t += h
     istate[I_STEPS] += 1
     if which >= 0:
@@ -996,7 +1015,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             continue
         rest_ready = False
         if not fresh:
-            references(par, y, mode, data, sc, ref)
+            references(par, record_, dt, t, y, mode, data, sc, ref)
             count = event_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
                                     kinds)  # fmt: skip
         fresh = False
@@ -1026,7 +1045,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             project(par, record_, dt, t, y, mode, data, sc)
         if istate[I_STRETCH] == 0 and not resting(mode, y, velocity_tol):
             # the next step's references and event functions: their solve is the record's
-            references(par, y, mode, data, sc, ref)
+            references(par, record_, dt, t, y, mode, data, sc, ref)
             count = event_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
                                     kinds)  # fmt: skip
             fresh = True

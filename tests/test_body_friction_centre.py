@@ -1,0 +1,177 @@
+"""A FACE's or EDGE's friction about its centre of pressure (#18).
+
+The 3-D kernel takes the friction of a flat base or a box's edge about the
+contact's centre of pressure, with the pressure uniform over the effective
+area concentric with it (Meyerhof 1953; ``body_kernel.effective_twist_radius``).
+Checked here: the twist radius of a FACE, an EDGE and a POINT agree where one
+patch becomes the other; moving the friction centre keeps the friction's
+wrench; a body at rest needs no twist torque wherever its centre of gravity
+lies (so it slides at ``mu_0 (g - a_v)`` in every direction); a body sliding
+flat gets no twist from its friction; a sliding patch's rows settle at its
+centre of pressure.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from freestand.core.body import Body, Box, Cylinder
+from freestand.core.contact import body_kernel as bk
+from freestand.core.dynamics.body_history import initial_state
+from freestand.core.model import Friction
+
+G = 9.81  # [m/s^2]
+BOX = Body("box", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.5, 0.5))
+
+
+def rho(body, kind, index, cx, cy):
+    par = bk.body_parameters(body, G)
+    return bk.effective_twist_radius(par, kind, index, cx, cy)
+
+
+def test_a_face_s_twist_radius_is_the_whole_base_s_at_its_centre():
+    assert rho(BOX, bk.FACE, 0, 0.0, 0.0) == pytest.approx(bk.rectangle_twist_radius(0.5, 0.3))
+    disc = Body("disc", Cylinder(0.8, 1.0), 100.0, Friction(0.5, 0.5))
+    assert rho(disc, bk.FACE, 0, 0.0, 0.0) == pytest.approx(2.0 / 3.0 * 0.8)
+    # a line's mean distance from its midpoint: a quarter of its length
+    assert bk.rectangle_twist_radius(0.5, 0.0) == 0.25
+    assert bk.rectangle_twist_radius(0.5, 1e-7) == pytest.approx(0.25, rel=1e-6)
+
+
+@pytest.mark.parametrize("along", [0.0, 0.1, -0.27, 0.45])
+def test_a_face_becomes_its_edge_and_an_edge_its_corner(along):
+    # edge 0 joins corners 0 (+b_x, +b_y) and 1 (-b_x, +b_y): along x at y = +b_y
+    edge = rho(BOX, bk.EDGE, 0, along, 0.3)
+    assert edge == pytest.approx(0.5 * (0.5 - abs(along)), rel=1e-12)
+    # a face whose centre of pressure approaches that side: the edge's (the effective
+    # rectangle thins to a segment; tolerance: its width 2e-9 m shifts the mean distance
+    # by less than 1e-8 m)
+    assert rho(BOX, bk.FACE, 0, along, 0.3 - 1e-9) == pytest.approx(edge, abs=1e-8)
+    # edge 1 (corners 1 and 2) runs along y at x = -b_x
+    assert rho(BOX, bk.EDGE, 1, -0.5, 0.6 * along) == pytest.approx(0.5 * (0.3 - 0.6 * abs(along)))
+
+
+def test_at_a_corner_or_on_the_rim_nothing_is_left_to_twist_on():
+    floor = bk.RHO_FLOOR * 0.5
+    assert rho(BOX, bk.EDGE, 0, 0.5, 0.3) == pytest.approx(floor)
+    assert rho(BOX, bk.FACE, 0, 0.5, 0.3) == pytest.approx(floor)
+    disc = Body("disc", Cylinder(0.8, 1.0), 100.0, Friction(0.5, 0.5))
+    assert rho(disc, bk.FACE, 0, 0.8 * math.cos(1.0), 0.8 * math.sin(1.0)) < 1e-8
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.tuples(*[st.floats(-1e3, 1e3) for _ in range(3)]),
+    st.tuples(st.floats(-0.45, 0.45), st.floats(-0.28, 0.28)),  # inside the 1.0 x 0.6 base
+    st.floats(-math.pi, math.pi),
+)
+def test_moving_the_friction_centre_keeps_the_friction_s_wrench(friction, to, yaw):
+    """T' = T - (delta x F)_z: the same force and moment about any point."""
+    par = bk.body_parameters(BOX, G)
+    y = initial_state(BOX)
+    y[3], y[6] = math.cos(0.5 * yaw), math.sin(0.5 * yaw)  # turned about the vertical
+    rot = np.empty((3, 3))
+    bk.rotation_matrix(y, rot)
+    centre = np.zeros(5)
+    bk.reset_friction_centre(par, bk.FACE, 0, centre)
+    # the normal multipliers (N, M_x, M_y) of a centre of pressure at `to` (body frame)
+    n = 3000.0
+    px = rot[0, 0] * to[0] + rot[0, 1] * to[1]
+    py = rot[1, 0] * to[0] + rot[1, 1] * to[1]
+    lam = np.array([n, n * py, -n * px, *friction])
+    before = lam.copy()
+    bk.centre_stick_friction(par, rot, bk.FACE, 0, 3, lam, centre)
+    assert centre[:2] == pytest.approx(to, abs=1e-12)
+    assert lam[3:5] == pytest.approx(before[3:5], abs=0.0)
+    # moment about the base centre of (F at the centre, T) and of (F at c, T')
+    torque_before = before[5] * bk.rectangle_twist_radius(0.5, 0.3)
+    torque_after = lam[5] * centre[2] + (px * lam[4] - py * lam[3])
+    assert torque_after == pytest.approx(torque_before, abs=1e-9 * (1.0 + abs(torque_before)))
+
+
+def _stick_at_rest(body, acceleration, direction):
+    """The FACE's sticking solution under a steady support acceleration; (holds, lam, centre)."""
+    par = bk.body_parameters(body, G)
+    record = np.zeros((3, 2))
+    record[0, :] = acceleration * math.cos(direction)
+    record[1, :] = acceleration * math.sin(direction)
+    sc = bk.new_scratch()
+    mode = np.array([bk.FACE, 0, 0], dtype=np.int64)
+    ok, n_normal, n_tangent = bk.solve_at(par, record, 1.0, 0.0, initial_state(body), mode,
+                                          np.zeros(4), sc)  # fmt: skip
+    assert ok
+    margin = bk.friction_margin(par, n_normal, n_tangent, sc[bk.SC_LAM])
+    return margin, sc[bk.SC_LAM].copy(), sc[bk.SC_CENTRE].copy()
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    st.floats(-0.1, 0.1), st.floats(-0.05, 0.05), st.floats(0.3, 0.6), st.floats(0.0, 2 * math.pi)
+)
+def test_at_rest_the_load_passes_through_the_centre_of_pressure(gx, gy, gz, direction):
+    """No twist torque at rest, wherever G lies: the slide starts at mu_0 g in every direction.
+
+    About the base centre a centre of gravity off it needs the twist
+    ``((G - o) x F)_z``; about the centre of pressure, which lies on the load's
+    line of action, none (the margin is then mu_0 N - |F| to round-off).
+    """
+    # the centre of pressure lies mu h_G <= 0.18 m from G's projection, inside the base for
+    # every G drawn (0.25 m from the long sides at least): the base slides before it lifts
+    mu = 0.3
+    body = Body("squat", Box((1.0, 0.6, 2.0)), 400.0, Friction(mu, mu), centre=(gx, gy, gz))
+    for factor, holds in ((0.999, True), (1.001, False)):
+        margin, lam, centre = _stick_at_rest(body, factor * mu * G, direction)
+        assert abs(lam[5] * centre[2]) < 1e-9 * 400.0 * G  # the twist torque about c [N m]
+        assert (margin >= 0.0) is holds
+        assert margin == pytest.approx(mu * lam[0] - math.hypot(lam[3], lam[4]), abs=1e-9)
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    st.floats(-0.15, 0.15), st.floats(-0.1, 0.1), st.floats(0.0, 2 * math.pi),
+    st.floats(0.0, 2 * math.pi), st.floats(0.0, 2.0),
+)  # fmt: skip
+def test_a_body_sliding_flat_gets_no_twist_from_its_friction(gx, gy, slide, push, size):
+    """The friction force passes through the centre of pressure: no yaw, however G lies.
+
+    A base sliding flat along ``slide`` under a support acceleration along
+    ``push`` (not parallel): the centre of pressure settles on the line of
+    the friction force through G, so the twist acceleration is zero and the
+    rows sit at the centre of pressure.
+    """
+    body = Body("squat", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.3, 0.3), centre=(gx, gy, 0.6))
+    par = bk.body_parameters(body, G)
+    record = np.zeros((3, 2))
+    record[0, :] = size * math.cos(push)
+    record[1, :] = size * math.sin(push)
+    y = initial_state(body)
+    y[7], y[8] = 0.2 * math.cos(slide), 0.2 * math.sin(slide)
+    sc = bk.new_scratch()
+    mode = np.array([bk.FACE, 0, 1], dtype=np.int64)
+    data = np.zeros(4)
+    data[1], data[2] = math.cos(slide), math.sin(slide)
+    ok, _, _ = bk.solve_at(par, record, 1.0, 0.0, y, mode, data, sc)
+    assert ok
+    acc, lam, centre = sc[bk.SC_ACC], sc[bk.SC_LAM], sc[bk.SC_CENTRE]
+    assert abs(acc[5]) < 1e-9  # no twist acceleration [rad/s^2]
+    assert np.abs(acc[3:5]).max() < 1e-9  # and it stays flat
+    cx, cy = bk.face_centre_of_pressure(sc[bk.SC_ROT], lam)
+    assert (centre[0], centre[1]) == pytest.approx((cx, cy), abs=1e-9)
+    # its friction is the kinetic one against the slide
+    assert math.hypot(lam[3], lam[4]) == pytest.approx(0.3 * lam[0], rel=1e-9)
+
+
+def test_a_patch_s_kind_is_the_one_its_rows_were_built_for():
+    par = bk.body_parameters(BOX, G)
+    sc = bk.new_scratch()
+    y = initial_state(BOX)
+    bk.prepare(par, np.zeros((3, 2)), 1.0, 0.0, y, bk.EDGE, 2, 0.0, sc)
+    centre = sc[bk.SC_CENTRE]
+    assert (centre[3], centre[4]) == (bk.EDGE, 2)
+    assert (centre[0], centre[1]) == (0.0, -0.3)  # edge 2's midpoint
+    assert centre[2] == pytest.approx(0.25)
