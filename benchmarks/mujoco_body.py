@@ -63,14 +63,17 @@ of the suite at its scale: the runs that stay near flat, that overturn, and
 the median peaks of the others, freestand at both steps against MuJoCo's
 first fine run (:func:`ensemble`).
 
-(e) Edges: a diagnosis of the cabinet with mu 0.5, whose slide and twist
-differ from MuJoCo's: MuJoCo's base edges loaded at their corners and
-uniformly, for friction coefficients around b_x / h (:func:`edges`).
+(e) Edges: the cabinet around mu = b_x / h = 0.5, with MuJoCo's base edges
+loaded at their corners and uniformly (:func:`edges`).
+
+(f) Example: the example cabinet of ``examples/bodies.toml`` under the
+synthetic record on x and y at two incidence angles (:func:`example`).
 
     python benchmarks/mujoco_body.py [accuracy] [speed] [profile]
     python benchmarks/mujoco_body.py single | campaign     # one half of (b)
     python benchmarks/mujoco_body.py ensemble              # (d), not in the default run
-    python benchmarks/mujoco_body.py edges                 # (e), a diagnosis of the cabinet
+    python benchmarks/mujoco_body.py edges                 # (e), the cabinet around mu 0.5
+    python benchmarks/mujoco_body.py example               # (f), the example cabinet
 
 Each check prints PASS or FAIL; the command exits 1 if any failed.
 
@@ -88,6 +91,7 @@ import sys
 import time
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
+from pathlib import Path
 
 import numba as nb
 import numpy as np
@@ -792,13 +796,14 @@ EDGE_FRICTIONS = (0.4, 0.49, 0.5, 0.51)
 
 
 def edges(records: list[SupportMotion3]) -> None:
-    """(e) The cabinet with mu 0.5: does the edge's pressure explain the difference?
+    """(e) The cabinet around mu = b_x / h = 0.5, with MuJoCo's edges loaded two ways.
 
     MuJoCo's fine runs with the base's edges loaded at their two corners
     (:func:`base_points`) and uniformly (:func:`boundary_points`), beside
     freestand, for friction coefficients around b_x / h = 0.5 (where sliding
-    and rocking about the long edges start together). Prints the peaks; no
-    verdict (a diagnosis, not a check).
+    and rocking about the long edges start together): how the peaks depend
+    on the edge's pressure and on the friction near the tie. Prints the
+    peaks; no verdict (a diagnosis, not a check).
     """
     case = CASES[0]
     print(f"\n(e) {case.body.name} under record {case.record} x {case.scale:g}: peaks tilt [rad],"
@@ -821,11 +826,53 @@ def edges(records: list[SupportMotion3]) -> None:
             print(f"    {name:42s} {peaks.tilt:8.4f} {1e3 * peaks.slide:7.2f} {peaks.twist:9.2e}")
 
 
+EXAMPLE_LEVEL = 4.0  # [m/s^2] PGA RotD50 of the example cabinet's record (fs.fragility's example)
+EXAMPLE_ANGLES = (0.0, 90.0)  # [deg] incidence angles: the same motion by the box's symmetry
+
+
+def example(_records: list[SupportMotion3]) -> None:
+    """(f) The example cabinet (``examples/bodies.toml``) under the synthetic record on x and y.
+
+    The record scaled to a PGA RotD50 of ``EXAMPLE_LEVEL`` (the level where the
+    fragility example of ``fs.fragility`` counts its twist), at two incidence
+    angles that the box's symmetry makes the same motion; freestand at its
+    default step against MuJoCo's first fine run, with the one friction
+    coefficient 0.5 (the example's kinetic one; MuJoCo has no static one).
+    Prints the peaks; no verdict.
+    """
+    import freestand as fs
+    from freestand.core.sweeps.fragility.intensity import IntensityMeasure, intensity
+
+    root = Path(__file__).resolve().parents[1] / "examples"
+    model = fs.load_model(root / "bodies.toml")
+    source = next(c for c in model.body_configurations if c.name == "cabinet").bodies[0]
+    body = Body(source.name, source.shape, source.mass, Friction(0.5, 0.5),
+                centre=source.centre, inertia=source.inertia)  # fmt: skip
+    path = root / "records" / "synthetic_H.AT2"
+    record = fs.load_record(path, horizontal_y=path)
+    record = record.scaled(EXAMPLE_LEVEL / intensity(record, IntensityMeasure("pga-rotd50"), None))
+    motion = SupportMotion3(record.dt, record.horizontal, record.horizontal_y, None)
+    step, timeconst = MUJOCO_FINE[0]
+    print(f"\n(f) the example cabinet, mu 0.5, PGA RotD50 {EXAMPLE_LEVEL:g} m/s^2, "
+          f"{SUITE_DURATION:g} s: peaks tilt [rad], slide [mm], twist [rad]")  # fmt: skip
+    for angle in EXAMPLE_ANGLES:
+        turned = motion.rotated(math.radians(angle))
+        runs = {
+            "freestand, default step": freestand_peaks(body, turned)[0],
+            f"MuJoCo {1e3 * step:g} ms, T {1e3 * timeconst:g} ms": MujocoBody(
+                body, step, timeconst, "points"
+            ).peaks(turned, SUITE_DURATION),
+        }
+        for name, peaks in runs.items():
+            print(f"  {angle:5.0f} deg  {name:30s} {peaks.tilt:8.4f} {1e3 * peaks.slide:7.2f}"
+                  f" {peaks.twist:9.2e}")  # fmt: skip
+
+
 def main(sections: list[str]) -> int:
     if mujoco is None:
         print("mujoco is not installed (pip install -e '.[bench]'): benchmark skipped")
         return 0
-    known = ("accuracy", "speed", "single", "campaign", "profile", "ensemble", "edges")
+    known = ("accuracy", "speed", "single", "campaign", "profile", "ensemble", "edges", "example")
     unknown = [name for name in sections if name not in known]
     if unknown:
         print(f"unknown section {', '.join(unknown)}: give any of {', '.join(known)}")
@@ -849,6 +896,8 @@ def main(sections: list[str]) -> int:
         status = 1
     if "edges" in sections:
         edges(records)
+    if "example" in sections:
+        example(records)
     return status
 
 
