@@ -783,12 +783,12 @@ def prepare(par, record, dt, t, y, kind, index, psi, sc):
 
     Returns (normal rows, tangential rows).
     """
-    rot = sc[SC_ROT]
+    rot, inv, f0 = sc[SC_ROT], sc[SC_INV], sc[SC_F0]
     rotation_matrix(y, rot)
-    world_inverse_inertia(par, rot, sc[SC_INV])
+    world_inverse_inertia(par, rot, inv)
     a_x, a_y, a_v = support_acceleration(record, dt, t)
-    applied_wrench(par, y, sc[SC_INV], rot, a_x, a_y, a_v, sc[SC_F0])
-    apply_inverse_mass(par, sc[SC_INV], sc[SC_F0], sc[SC_BASE])
+    applied_wrench(par, y, inv, rot, a_x, a_y, a_v, f0)
+    apply_inverse_mass(par, inv, f0, sc[SC_BASE])
     return scratch_rows(par, y, kind, index, psi, sc)
 
 
@@ -799,8 +799,9 @@ def scratch_rows(par, y, kind, index, psi, sc):
     The friction centre starts at the patch's geometric centre
     (:func:`reset_friction_centre`). Returns (normal rows, tangential rows).
     """
-    reset_friction_centre(par, kind, index, sc[SC_CENTRE])
-    return patch_rows(par, y, sc[SC_ROT], kind, index, psi, sc[SC_CENTRE], sc[SC_NORMAL],
+    centre = sc[SC_CENTRE]
+    reset_friction_centre(par, kind, index, centre)
+    return patch_rows(par, y, sc[SC_ROT], kind, index, psi, centre, sc[SC_NORMAL],
                       sc[SC_NBIAS], sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS])  # fmt: skip
 
 
@@ -823,28 +824,36 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     ``sc[SC_CENTRE]`` are left at the final centre. False when a system is
     singular.
     """
-    rot = sc[SC_ROT]
     centre = sc[SC_CENTRE]
     kind = int(centre[3])
     index = int(centre[4])
-    lam = sc[SC_LAM]
-    patch = kind == FACE or kind == EDGE
-    for _ in range(CENTRE_ITERATIONS):
+    if kind != FACE and kind != EDGE:
         if kinetic:
             direction = slip_direction(y, n_tangent, stored, sc)
-        ok = solve_mode(par, sc[SC_INV], sc[SC_BASE], use_bias, slip, direction, sc[SC_NORMAL],
-                        sc[SC_NBIAS], n_normal, sc[SC_TANGENT], sc[SC_TBIAS], n_tangent,
-                        sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS], sc[SC_ACC], lam)  # fmt: skip
-        if not ok or not patch:
-            return ok
+        return solve_mode(par, sc[SC_INV], sc[SC_BASE], use_bias, slip, direction, sc[SC_NORMAL],
+                          sc[SC_NBIAS], n_normal, sc[SC_TANGENT], sc[SC_TBIAS], n_tangent,
+                          sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS], sc[SC_ACC],
+                          sc[SC_LAM])  # fmt: skip
+    # the scratch's arrays taken once: each take of a tuple's array is a reference count
+    rot, inv, base, normal, nbias = sc[SC_ROT], sc[SC_INV], sc[SC_BASE], sc[SC_NORMAL], sc[SC_NBIAS]
+    tangent, tbias, work, matrix = sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_WORK], sc[SC_MATRIX]
+    rhs, acc, lam, arms = sc[SC_RHS], sc[SC_ACC], sc[SC_LAM], sc[SC_ARMS]
+    svel, own = sc[SC_SVEL], sc[SC_DIR]
+    for _ in range(CENTRE_ITERATIONS):
+        if kinetic:
+            direction = _slip_direction(y, n_tangent, stored, tangent, svel, own)
+        ok = solve_mode(par, inv, base, use_bias, slip, direction, normal, nbias, n_normal,
+                        tangent, tbias, n_tangent, work, matrix, rhs, acc, lam)  # fmt: skip
+        if not ok:
+            return False
         if slip == 0:
             centre_stick_friction(par, rot, kind, index, n_normal, lam, centre)
-            tangent_rows(par, y, rot, centre, sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS])
+            tangent_rows(par, y, rot, centre, tangent, tbias, arms)
             return True
         moved = move_friction_centre(par, rot, kind, index, lam, centre)
         if moved <= CENTRE_TOLERANCE * par[P_HALF_X]:
             return True
-        tangent_rows(par, y, rot, centre, sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS])
+        tangent_rows(par, y, rot, centre, tangent, tbias, arms)
     return True
 
 
@@ -860,9 +869,13 @@ def slip_direction(y, n_tangent, data, sc):
     the velocity inside an RK4 step and the stages cancel: the slip freezes
     at a small constant velocity.
     """
-    svel = sc[SC_SVEL]
-    direction = sc[SC_DIR]
-    tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
+    return _slip_direction(y, n_tangent, data, sc[SC_TANGENT], sc[SC_SVEL], sc[SC_DIR])
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _slip_direction(y, n_tangent, data, tangent, svel, direction):
+    """:func:`slip_direction` on the scratch's arrays (rows, slip velocity, direction)."""
+    tangential_velocity(y, tangent, n_tangent, svel)
     size = 0.0
     along = 0.0
     for k in range(n_tangent):
