@@ -644,7 +644,7 @@ def solve_mode(par, inv_inertia, base, use_bias, slip, direction, normal, nbias,
             entry = 0.0
             for i in range(6):
                 w_ri = normal[i, r] if r < n_normal else tangent[i, r - n_normal]
-                entry += w_ri * work[7 + j][i]
+                entry += w_ri * work[7 + j, i]
             matrix[r, j] = entry
     if held > 0 and not solve_in_place(matrix, rhs, held):
         return False
@@ -653,7 +653,7 @@ def solve_mode(par, inv_inertia, base, use_bias, slip, direction, normal, nbias,
     for j in range(held):
         lam[j] = rhs[j]
         for i in range(6):
-            acc[i] += rhs[j] * work[7 + j][i]
+            acc[i] += rhs[j] * work[7 + j, i]
     if slip == 1:
         total = normal_total_rows(n_normal, lam)
         for k in range(n_tangent):
