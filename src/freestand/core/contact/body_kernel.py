@@ -888,6 +888,16 @@ def _slip_direction(y, n_tangent, data, tangent, svel, direction):
     return direction
 
 
+@nb.njit(cache=True, inline="always", error_model="numpy")
+def _prepare_held(par, record, dt, t, y, mode, data, sc):
+    """:func:`prepare` for the held mode at (t, y), its pivot at the stored rim angle's point."""
+    kind = mode[M_KIND]
+    rot = sc[SC_ROT]
+    rotation_matrix(y, rot)
+    psi = pivot_angle(par, y, rot, kind, data[D_PSI])
+    return prepare(par, record, dt, t, y, kind, mode[M_INDEX], psi, sc)
+
+
 @nb.njit(cache=True, error_model="numpy")
 def solve_at(par, record, dt, t, y, mode, data, sc):
     """Solve the held mode at (t, y): fills sc[SC_ACC] and sc[SC_LAM]; False if singular.
@@ -896,11 +906,7 @@ def solve_at(par, record, dt, t, y, mode, data, sc):
     and its friction acts about its centre of pressure (:func:`solve_patch`).
     Returns (ok, normal rows, tangential rows).
     """
-    kind = mode[M_KIND]
-    rot = sc[SC_ROT]
-    rotation_matrix(y, rot)
-    psi = pivot_angle(par, y, rot, kind, data[D_PSI])
-    n_normal, n_tangent = prepare(par, record, dt, t, y, kind, mode[M_INDEX], psi, sc)
+    n_normal, n_tangent = _prepare_held(par, record, dt, t, y, mode, data, sc)
     ok = solve_patch(par, y, sc, True, mode[M_SLIP], sc[SC_DIR], mode[M_SLIP] == 1, data,
                      n_normal, n_tangent)  # fmt: skip
     return ok, n_normal, n_tangent
@@ -915,11 +921,7 @@ def solve_at_centre(par, record, dt, t, y, mode, data, sc):
     expresses their friction about the centre of pressure. Returns
     (ok, normal rows, tangential rows).
     """
-    kind = mode[M_KIND]
-    rot = sc[SC_ROT]
-    rotation_matrix(y, rot)
-    psi = pivot_angle(par, y, rot, kind, data[D_PSI])
-    n_normal, n_tangent = prepare(par, record, dt, t, y, kind, mode[M_INDEX], psi, sc)
+    n_normal, n_tangent = _prepare_held(par, record, dt, t, y, mode, data, sc)
     ok = solve_mode(par, sc[SC_INV], sc[SC_BASE], True, 0, sc[SC_DIR], sc[SC_NORMAL],
                     sc[SC_NBIAS], n_normal, sc[SC_TANGENT], sc[SC_TBIAS], n_tangent,
                     sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS], sc[SC_ACC], sc[SC_LAM])  # fmt: skip
