@@ -194,7 +194,8 @@ def _simulate_one(model, name, motion, duration, method, step, angle, plot, anim
         counts = result.diagnostics
         out.print(escape(
             f"Engine: 3-D, exact rigid contact ({counts['steps']} steps, {counts['impacts']} "
-            f"impacts, {counts['remedies']} states without an admissible contact mode)"
+            f"impacts, {counts['remedies']} stretches of time stepping where no contact mode"
+            " lasts)"
         ))  # fmt: skip
     else:
         out.print(escape(

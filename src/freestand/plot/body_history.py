@@ -48,7 +48,7 @@ MOTION_COLOURS = {
 }
 
 #: Events marked on the tilt panel beside lift-offs and impacts: marker, label.
-REMEDY_EVENTS = {"remedy": ("x", "no admissible contact mode\n(continued in free flight)")}
+REMEDY_EVENTS = {"remedy": ("x", "no lasting contact mode\n(continued by time stepping)")}
 
 #: Colours of the x, y and magnitude curves.
 X_COLOUR, Y_COLOUR, SIZE_COLOUR = "#1b9e77", "#d95f02", "k"

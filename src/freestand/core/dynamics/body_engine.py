@@ -42,8 +42,10 @@ from freestand.core.contact.body_kernel import (
     M_INDEX,
     M_KIND,
     M_SLIP,
+    P_CENTRE,
     P_GRAVITY,
     P_HALF_X,
+    P_HALF_Y,
     P_MASS,
     P_MU_KINETIC,
     P_RESTITUTION,
@@ -72,6 +74,7 @@ from freestand.core.contact.body_kernel import (
     new_scratch,
     normal_margin,
     normal_total_rows,
+    point_velocity,
     prepare,
     rate,
     reset_friction_centre,
@@ -103,6 +106,8 @@ SLIP_FRACTION = 0.5  # a step lasts at most this part of a slip's time scale |s|
 SLIP_MIN_STEP = 1e-4  # [s] the slip's time scale bounds no step below this
 STRETCH_STEP = 1e-4  # [s] step of the velocity-level time stepping (the remedy)
 STRETCH_CHECK = 16  # a stretch looks for a consistent mode at its steps 1, 2, 4, 8, 16, 32, 48, ...
+CHATTER_WINDOW = 1e-3  # [s] slip restarts or remedies closer than this in time are a chatter
+CHATTER_COUNT = 3  # this many in a row start a chatter stretch of the remedy
 MIN_STEP = 1e-9  # [s] the smallest step the closing prediction may ask for
 
 # event kinds
@@ -133,7 +138,8 @@ I_REMEDIES = 4
 I_IMPACTS = 5
 I_STRETCH = 6  # while a stretch of time stepping runs (the remedy): its steps so far + 1; else 0
 I_STRETCH_STEPS = 7
-I_SIZE = 8
+I_CHATTER = 8  # 1 while the stretch is a chatter's: it ends on a stick or a slip of speed
+I_SIZE = 9
 
 STATUS_RUNNING = 0
 STATUS_COMPLETED = 1
@@ -737,7 +743,7 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
 
 
 @nb.njit(cache=True, error_model="numpy")
-def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol):
+def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force):
     """The remedy's step: one Moreau-Jean step of length h (Jean 1999), in place on ``y``.
 
     The velocity at t + h is the free one (gravity, the support's inertial
@@ -746,27 +752,48 @@ def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol):
     (:func:`freestand.core.contact.body_impulse.velocity_impact`, the circular
     cone with the kinetic coefficient; never gaining kinetic energy); the
     position follows with that velocity (the rotation exactly, for an
-    angular velocity constant over the step).
+    angular velocity constant over the step). ``force`` receives the mean
+    contact force over the step, (normal, |tangential|) [N] (the impulses'
+    sum over h), and the reach [m]: points within it of the support took
+    part (a point that closed within the step is held where it stopped,
+    above the support by up to the reach).
     """
     prepare(par, record, dt, t + h, y, FREE, 0, 0.0, sc)
     rot = sc[SC_ROT]
     velocity = np.empty(6)
     for i in range(6):
         velocity[i] = y[7 + i] + h * sc[SC_BASE][i]
+    free = np.empty(3)
+    for i in range(3):
+        free[i] = velocity[i]
     arms = np.empty((MAX_POINTS, 3))
-    count = base_points(par, y, rot, data[D_PSI], gap_tol + h * _fall_speed(velocity, par), arms)
+    reach = gap_tol + h * _fall_speed(velocity, par)
+    count = base_points(par, y, rot, data[D_PSI], reach, arms)
     velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], velocity)
     for i in range(3):
         y[i] += h * velocity[i]
     _turn(y, velocity[3] * h, velocity[4] * h, velocity[5] * h)
     for i in range(6):
         y[7 + i] = velocity[i]
+    # the impulses' sum over the step, m (v - v_free), as a mean force
+    scale = par[P_MASS] / h
+    force[0] = scale * (velocity[2] - free[2])
+    force[1] = scale * math.hypot(velocity[0] - free[0], velocity[1] - free[1])
+    force[2] = reach
 
 
 @nb.njit(cache=True, error_model="numpy")
 def _fall_speed(velocity, par):
-    """A bound of the speed [m/s] at which a base point approaches the support."""
-    return abs(velocity[2]) + par[P_HALF_X] * 2.0 * math.sqrt(
+    """A bound of the speed [m/s] at which a base point approaches the support.
+
+    ``|v_z| + |omega| r``, r the largest distance from G to the base's
+    outline (bounded by its enclosing rectangle's corners): the points that
+    can close within a step of the remedy are within its length times this.
+    """
+    reach_x = par[P_HALF_X] + abs(par[P_CENTRE])
+    reach_y = par[P_HALF_Y] + abs(par[P_CENTRE + 1])
+    arm_ = math.sqrt(reach_x**2 + reach_y**2 + par[P_CENTRE + 2] ** 2)
+    return abs(velocity[2]) + arm_ * math.sqrt(
         velocity[3] ** 2 + velocity[4] ** 2 + velocity[5] ** 2)  # fmt: skip
 
 
@@ -804,6 +831,40 @@ def record(t, y, mode, sc, count, out_t, out_y, out_mode, out_force):
     for k in range(n_tangent):
         size += lam[n_normal + k] ** 2
     out_force[count, 1] = math.sqrt(size)
+
+
+@nb.njit(cache=True, error_model="numpy")
+def held_row(par, y, data, sc, reach, velocity_tol, force, row, out_mode, out_force):
+    """Row ``row`` of a stretch of the remedy: the patch it holds and its contact force.
+
+    The patch is the one the time stepping holds (:func:`touched_patch`, not
+    FREE, which the engine's mode is during a stretch); the force is
+    ``force`` = (N, |f_t|) [N], the step's impulses over its length.
+    """
+    patch = np.empty(3, dtype=np.int64)
+    touched_patch(par, y, sc[SC_ROT], data[D_PSI], reach, velocity_tol, patch)
+    for i in range(3):
+        out_mode[row, i] = patch[i]
+    out_force[row, 0] = force[0]
+    out_force[row, 1] = force[1]
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode, out_force):
+    """The row just recorded, where a stretch of the remedy begins: the patch touched.
+
+    Its force is the row's before (the contact force just before the event;
+    the stretch's first step gives the next).
+    """
+    row = istate[I_RECORDS]
+    if istate[I_STRETCH] != 1:
+        return
+    force = np.zeros(2)
+    if row > 0:
+        force[0] = out_force[row - 1, 0]
+        force[1] = out_force[row - 1, 1]
+    rotation_matrix(y, sc[SC_ROT])
+    held_row(par, y, data, sc, gap_tol, velocity_tol, force, row, out_mode, out_force)
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -902,33 +963,166 @@ def _next_end(t, breaks, h_max, t_end):
 
 
 @nb.njit(cache=True, error_model="numpy")
-def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, istate):
+def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, istate, force):
     """One step of the remedy; it ends where a consistent mode exists again. Returns t + h.
 
     The search for a consistent mode (:func:`select_mode`, whose slip onsets
     are costly where none exists) is made at the stretch's steps 1, 2, 4, 8
     and then every ``STRETCH_CHECK``: a short stretch stays short, and a long
     one lasts at most ``STRETCH_CHECK`` steps more than it must (a valid
-    time-stepping solution all along).
+    time-stepping solution all along). After each step the base points it
+    holds above the support are set on it (:func:`_settle`). A chatter's stretch
+    (:func:`_start_chatter`) looks every ``STRETCH_CHECK`` steps only, and
+    goes on where the mode found is a slip from rest (its speed within
+    ``velocity_tol``): that slip would chatter again.
     """
-    advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol)
+    advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force)
+    hovering = _settle(par, y, sc, data, force[2], gap_tol, velocity_tol)
     istate[I_STRETCH_STEPS] += 1
     steps = istate[I_STRETCH]
     istate[I_STRETCH] += 1
-    if steps & (steps - 1) != 0 and steps % STRETCH_CHECK != 0:
+    early = istate[I_CHATTER] == 0 and steps & (steps - 1) == 0
+    if not early and steps % STRETCH_CHECK != 0:
         mode[M_KIND] = FREE
         mode[M_INDEX] = 0
         mode[M_SLIP] = 0
         return t + h
     none = np.array([-1, 0, 0], dtype=np.int64)
-    if select_mode(par, record, dt, t + h, y, sc, gap_tol, velocity_tol, mode, data, none) >= 0:
+    found = select_mode(par, record, dt, t + h, y, sc, gap_tol, velocity_tol, mode, data, none)
+    if found >= 0 and hovering and mode[M_KIND] == FREE:
+        found = -1  # a point the stretch holds is still above the support: not a flight
+    if found >= 0 and istate[I_CHATTER] == 1 and mode[M_SLIP] == 1:
+        # a chatter's stretch goes on while its patch could only slip from rest
+        found = -1 if _slip_speed(par, record, dt, t + h, y, mode, data, sc) <= velocity_tol else 0
+    if found >= 0:
         istate[I_STRETCH] = 0
+        istate[I_CHATTER] = 0
         project(par, record, dt, t + h, y, mode, data, sc)
     else:
         mode[M_KIND] = FREE
         mode[M_INDEX] = 0
         mode[M_SLIP] = 0
     return t + h
+
+
+@nb.njit(cache=True, error_model="numpy")
+def touched_patch(par, y, rot, psi_stored, reach, velocity_tol, patch):
+    """The patch a time-stepped state touches, as (kind, index, slip) in ``patch``.
+
+    The touching points are within ``reach`` [m] of the support and do not
+    move away from it faster than ``velocity_tol`` [m/s]. A box: its
+    touching corners (four: FACE; two adjacent: EDGE; else POINT at one of
+    them); a cylinder: its lowest rim point (POINT), or its whole base
+    (FACE) when flat to ``reach``; FREE where none touches. It slips where a
+    touching point's horizontal speed exceeds ``velocity_tol``. The rows a
+    stretch of the remedy records say which contact the time stepping held,
+    not FREE. Returns the kind.
+    """
+    d = np.empty(3)
+    kind, index, slip = FREE, 0, 0
+    if par[P_SHAPE] == SHAPE_BOX:
+        count = 0
+        touching = np.zeros(4, dtype=np.bool_)
+        for k in range(4):
+            g, rate_ = corner_gap(par, y, rot, k, d)
+            if g <= reach and rate_ <= velocity_tol:
+                touching[k] = True
+                count += 1
+                index = k
+                if math.hypot(point_velocity(y, d, 1.0, 0.0, 0.0),
+                              point_velocity(y, d, 0.0, 1.0, 0.0)) > velocity_tol:  # fmt: skip
+                    slip = 1
+        if count > 0:
+            kind = FACE if count == 4 else POINT
+        if count == 2 or count == 3:
+            for k in range(4):
+                if touching[k] and touching[(k + 1) % 4]:
+                    kind, index = EDGE, k
+                    break
+    else:
+        radius = par[P_HALF_X]
+        psi = lowest_rim_angle(rot, psi_stored)
+        arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
+        if y[2] + d[2] <= reach and point_velocity(y, d, 0.0, 0.0, 1.0) <= velocity_tol:
+            flat = y[2] + d[2] + 2.0 * radius * sin_tilt(rot) <= reach
+            kind = FACE if flat else POINT
+            speed = math.hypot(point_velocity(y, d, 1.0, 0.0, 0.0),
+                               point_velocity(y, d, 0.0, 1.0, 0.0))  # fmt: skip
+            slip = 1 if speed > velocity_tol else 0
+    patch[0], patch[1], patch[2] = kind, index, slip
+    return kind
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _settle(par, y, sc, data, reach, gap_tol, velocity_tol):
+    """Lower the body onto the base points a stretch holds above the support; True if any stay.
+
+    A point that closed within a step of the remedy is held where it
+    stopped, up to ``reach`` [m] above the support, its normal velocity
+    zero (within ``velocity_tol`` [m/s]). The body is shifted down by the
+    smallest such gap, but never by more than the lowest base point's gap
+    (a point rising from the support stays on or above it). Returns True
+    when a held point stays more than ``gap_tol`` above the support.
+    """
+    rot = sc[SC_ROT]
+    rotation_matrix(y, rot)
+    d = np.empty(3)
+    held = math.inf
+    lowest = math.inf
+    if par[P_SHAPE] == SHAPE_BOX:
+        for k in range(4):
+            g, rate_ = corner_gap(par, y, rot, k, d)
+            lowest = min(lowest, g)
+            if g <= reach and abs(rate_) <= velocity_tol:
+                held = min(held, g)
+    else:
+        radius = par[P_HALF_X]
+        psi = lowest_rim_angle(rot, data[D_PSI])
+        arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
+        lowest = y[2] + d[2]
+        if lowest <= reach and abs(point_velocity(y, d, 0.0, 0.0, 1.0)) <= velocity_tol:
+            held = lowest
+    if held == math.inf:
+        return False
+    shift = min(held, lowest)
+    if shift > 0.0:
+        y[2] -= shift
+    return held - max(shift, 0.0) > gap_tol
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _start_chatter(mode, istate, event):
+    """Start a chatter's stretch of the remedy; returns the event's kind (a remedy).
+
+    An edge at its friction limit can have no consistent slip from rest
+    that lasts: its onset direction is unstable (the slip veers within
+    microseconds and the slip-stop function fires), or none exists (a
+    remedy). Where such restarts follow each other within
+    ``CHATTER_WINDOW``, the velocity-level time stepping takes over until
+    the patch sticks, slips at a speed above the velocity tolerance, or
+    another contact holds (:func:`_stretch`).
+    """
+    if istate[I_STRETCH] == 0:
+        istate[I_STRETCH] = 1
+        if event != EV_REMEDY:
+            istate[I_REMEDIES] += 1
+    istate[I_CHATTER] = 1
+    mode[M_KIND] = FREE
+    mode[M_INDEX] = 0
+    mode[M_SLIP] = 0
+    return EV_REMEDY
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _slip_speed(par, record, dt, t, y, mode, data, sc):
+    """Slip speed [m/s] of the held patch at (t, y), at its geometric centre."""
+    ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
+    svel = sc[SC_SVEL]
+    tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
+    size = 0.0
+    for k in range(n_tangent):
+        size += svel[k] ** 2
+    return math.sqrt(size)
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -973,6 +1167,10 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
     capacity = out_t.shape[0]
     rest = np.zeros((4, 6))
     rest_ready = False
+    force = np.zeros(3)  # a stretch's mean contact force (normal, |tangential|) [N], reach [m]
+    patch = np.zeros(3, dtype=np.int64)  # the patch a stretch's step held
+    last_restart = -math.inf  # time of the last slip restart or remedy [s]
+    restarts = 0  # slip restarts and remedies in a row, each within CHATTER_WINDOW
     fresh = False  # the step's references and event functions at (t, y) are computed
     count = 0
     if istate[I_RECORDS] == 0:
@@ -983,6 +1181,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             istate[I_REMEDIES] += 1
         solve_at(par, record_, dt, t, y, mode, data, sc)
         record(t, y, mode, sc, 0, out_t, out_y, out_mode, out_force)
+        _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode, out_force)
         istate[I_RECORDS] = 1
         istate[I_EVENTS] = _event(t, EV_START, -1, mode[M_KIND], istate[I_EVENTS], ev_time,
                                   ev_kind, ev_before, ev_after)  # fmt: skip
@@ -992,9 +1191,12 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             return t
         if istate[I_STRETCH] >= 1:
             t = _stretch(par, record_, dt, t, min(STRETCH_STEP, t_end - t), y, mode, data, sc,
-                         gap_tol, velocity_tol, istate)  # fmt: skip
+                         gap_tol, velocity_tol, istate, force)  # fmt: skip
             solve_at(par, record_, dt, t, y, mode, data, sc)
-            record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
+            row = istate[I_RECORDS]
+            record(t, y, mode, sc, row, out_t, out_y, out_mode, out_force)
+            if istate[I_STRETCH] >= 1:
+                held_row(par, y, data, sc, force[2], velocity_tol, force, row, out_mode, out_force)
             istate[I_RECORDS] += 1
             if sc[SC_ROT][2, 2] <= 0.0:
                 istate[I_EVENTS] = _event(t, EV_OVERTURN, FREE, FREE, istate[I_EVENTS], ev_time,
@@ -1011,6 +1213,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
                       data, sc, rest, istate, ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
             rest_ready = resting(mode, y, velocity_tol)
             record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
+            _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode, out_force)
             istate[I_RECORDS] += 1
             continue
         rest_ready = False
@@ -1033,8 +1236,18 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             before = mode[M_KIND]
             event = resolve(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol,
                             which, istate)  # fmt: skip
-            istate[I_EVENTS] = _event(t, event, before, mode[M_KIND], istate[I_EVENTS],
-                                      ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
+            if before == EDGE and (event == EV_REMEDY or (event == EV_STICK and mode[M_SLIP] == 1)):
+                restarts = restarts + 1 if t - last_restart < CHATTER_WINDOW else 1
+                last_restart = t
+                if restarts >= CHATTER_COUNT:
+                    event = _start_chatter(mode, istate, event)
+                    restarts = 0
+            after = mode[M_KIND]
+            if event == EV_REMEDY and after == FREE:
+                after = touched_patch(par, y, sc[SC_ROT], data[D_PSI], gap_tol, velocity_tol,
+                                      patch)  # fmt: skip
+            istate[I_EVENTS] = _event(t, event, before, after, istate[I_EVENTS], ev_time, ev_kind,
+                                      ev_before, ev_after)  # fmt: skip
             if event == EV_OVERTURN:
                 solve_at(par, record_, dt, t, y, mode, data, sc)
                 record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
@@ -1052,6 +1265,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         else:
             solve_at(par, record_, dt, t, y, mode, data, sc)
         record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
+        _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode, out_force)
         istate[I_RECORDS] += 1
         if t >= record_end and _post_record_fall(par, y, mode, sc):
             istate[I_EVENTS] = _event(t, EV_OVERTURN, mode[M_KIND], mode[M_KIND], istate[I_EVENTS],

@@ -560,8 +560,8 @@ def body_verdict(history: BodyTimeHistory, record_end: float, until_rest: bool):
     if history.status == "failed":
         remedies = history.diagnostics.get("remedies", 0)
         cause = (
-            f" (after {remedies} contact states without an admissible mode, continued in free "
-            "flight: a limitation of this version's 3-D engine)"
+            f" (after {remedies} contact states without a lasting admissible mode, continued"
+            " by velocity-level time stepping: a limitation of this version's 3-D engine)"
             if remedies
             else ""
         )

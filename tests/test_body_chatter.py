@@ -1,0 +1,114 @@
+"""An edge at its friction limit: the chatter of slip restarts and its remedy (#18).
+
+The benchmark's cabinet (1.0 x 0.6 x 2.0 m, 400 kg, mu 0.5) under record 1 of
+its suite x 2.4 (``benchmarks/mujoco_body.py``) rocks about its long edge and
+reaches the edge's friction limit at t = 1.8947 s. The state at t = 1.89 s
+is stored in ``tests/data/cabinet_chatter.npz`` (state, time, a 0.15 s slice
+of the record).
+
+There the edge cannot stick (it needs about a tenth more friction than
+``mu_0 N``, most of it against the twist about its centre of pressure) and
+its slip from rest has no lasting direction: the onset direction is unstable
+(the slip veers within microseconds and the slip-stop function fires) or
+none exists. Before the remedy took over such a chatter, the engine restarted
+the slip from rest every 30 to 100 microseconds: 150 restarts in the 0.1 s
+from the stored instant, 158 events. Now three restarts within a millisecond
+hand the edge to the velocity-level time stepping (``body_engine.CHATTER_WINDOW``, ``CHATTER_COUNT``) until the patch
+sticks, slips at a speed, or another contact holds.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from freestand.core.body import Body, Box
+from freestand.core.contact import body_kernel
+from freestand.core.dynamics import body_engine as engine
+from freestand.core.dynamics.body_history import rotation_matrices
+from freestand.core.model import Friction
+
+DATA = Path(__file__).parent / "data" / "cabinet_chatter.npz"
+CABINET = Body("cabinet", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.5, 0.5))
+GAP, VELOCITY = 1e-7, 1e-4  # the engine's default tolerances [m], [m/s]
+SPAN = 0.1  # [s] simulated from the stored instant
+ROWS = 20_000
+
+
+def run_from_instant(max_step: float):
+    """The engine from the stored state over ``SPAN``: istate, event kinds, times, states, modes
+    and contact forces (N, |f_t|)."""
+    data = np.load(DATA)
+    record = np.ascontiguousarray(data["record"])
+    dt, t = float(data["dt"]), float(data["t"])
+    breaks = np.arange(1, record.shape[1]) * dt
+    par = body_kernel.body_parameters(CABINET, 9.81, 1.0)
+    y = np.array(data["y"])
+    mode, istate = np.zeros(3, dtype=np.int64), np.zeros(engine.I_SIZE, dtype=np.int64)
+    out = (np.empty(ROWS), np.empty((ROWS, body_kernel.STATE_SIZE)),
+           np.empty((ROWS, 3), dtype=np.int64), np.empty((ROWS, 2)))  # fmt: skip
+    events = (np.empty(ROWS),) + tuple(np.empty(ROWS, dtype=np.int64) for _ in range(3))
+    engine.run(par, record, dt, breaks, max_step, t + SPAN, record.shape[1] * dt, GAP, VELOCITY,
+               t, y, mode, np.zeros(4), istate, *out, *events)  # fmt: skip
+    count = min(int(istate[engine.I_EVENTS]), ROWS)
+    rows = int(istate[engine.I_RECORDS])
+    return istate, events[1][:count], out[0][:rows], out[1][:rows], out[2][:rows], out[3][:rows]
+
+
+@pytest.fixture(scope="module")
+def default_run():
+    return run_from_instant(0.02)  # the cabinet's default step, 0.05 / omega_largest capped
+
+
+def test_the_stored_instant_rocks_on_the_long_edge():
+    y = np.load(DATA)["y"]
+    # G 1.8 mm above its resting height: the box tilted about its long side, turning
+    assert y[2] - 1.0 == pytest.approx(1.78e-3, abs=1e-5)
+    assert abs(y[10]) > 0.1 > abs(y[11])  # omega_x: rocking about the x-parallel edge
+
+
+def test_the_chatter_is_handed_to_the_remedy(default_run):
+    istate, kinds = default_run[:2]
+    assert istate[engine.I_STATUS] == engine.STATUS_COMPLETED
+    # before: 150 slip restarts ('stick' events) in 0.1 s, 158 events; now 4, 10 events
+    restarts = int(np.count_nonzero(kinds == engine.EV_STICK))
+    assert restarts < 30
+    assert istate[engine.I_REMEDIES] >= 1 and istate[engine.I_STRETCH_STEPS] > 0
+    assert len(kinds) < 100
+
+
+def test_the_remedy_keeps_the_base_on_the_support(default_run):
+    state = default_run[3]
+    rot = rotation_matrices(state[:, 3:7])
+    corners = np.array([[sx, sy, -1.0] for sx, sy in ((0.5, 0.3), (-0.5, 0.3), (-0.5, -0.3),
+                                                      (0.5, -0.3))])  # fmt: skip
+    heights = state[:, 2][:, None] + np.einsum("kj,cj->kc", rot[:, 2, :], corners)
+    assert heights.min() > -1e-6  # [m] the velocity-level steps' penetration stays small
+    speed = np.linalg.norm(state[:, 7:10], axis=1)
+    assert np.all(np.isfinite(speed)) and speed.max() < 1.0  # [m/s] no blow-up
+
+
+def test_the_remedy_records_the_edge_it_holds_and_its_force(default_run):
+    istate, _, _, state, modes, forces = default_run
+    # the stretch's rows: a long edge (corners 2 and 3, then 0 and 1 as it rocks back),
+    # never free flight (its mode is FREE while it steps), carrying the weight on average
+    # (m g = 3.9 kN; the vertical record and the rocking move it: 2.7-5.0 kN)
+    assert istate[engine.I_STRETCH_STEPS] > 50
+    assert not np.any(modes[:, 0] == body_kernel.FREE)
+    assert np.count_nonzero(modes[:, 0] != body_kernel.EDGE) <= 3  # a corner as it lands
+    held = modes[:, 0] == body_kernel.EDGE
+    assert set(modes[held, 1].tolist()) == {0, 2}
+    assert 2000.0 < np.median(forces[held, 0]) < 6000.0
+
+
+def test_the_tilt_after_the_chatter_does_not_depend_on_the_step():
+    # the remedy's time stepping has its own step; the event-driven parts follow max_step
+    tilts = []
+    for step in (0.02, 0.002):
+        state = run_from_instant(step)[3]
+        q = state[-1, 3:7]
+        tilts.append(math.acos(1.0 - 2.0 * (q[1] ** 2 + q[2] ** 2)))
+    assert tilts[1] == pytest.approx(tilts[0], rel=0.02)  # 0.0139 rad both; 0.25 % apart
