@@ -857,8 +857,6 @@ def _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode
     the stretch's first step gives the next).
     """
     row = istate[I_RECORDS]
-    if istate[I_STRETCH] != 1:
-        return
     force = np.zeros(2)
     if row > 0:
         force[0] = out_force[row - 1, 0]
@@ -1181,7 +1179,9 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             istate[I_REMEDIES] += 1
         solve_at(par, record_, dt, t, y, mode, data, sc)
         record(t, y, mode, sc, 0, out_t, out_y, out_mode, out_force)
-        _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode, out_force)
+        if istate[I_STRETCH] == 1:
+            _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode,
+                               out_force)  # fmt: skip
         istate[I_RECORDS] = 1
         istate[I_EVENTS] = _event(t, EV_START, -1, mode[M_KIND], istate[I_EVENTS], ev_time,
                                   ev_kind, ev_before, ev_after)  # fmt: skip
@@ -1213,7 +1213,9 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
                       data, sc, rest, istate, ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
             rest_ready = resting(mode, y, velocity_tol)
             record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
-            _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode, out_force)
+            if istate[I_STRETCH] == 1:
+                _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode,
+                                   out_force)  # fmt: skip
             istate[I_RECORDS] += 1
             continue
         rest_ready = False
@@ -1265,7 +1267,9 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         else:
             solve_at(par, record_, dt, t, y, mode, data, sc)
         record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
-        _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode, out_force)
+        if istate[I_STRETCH] == 1:
+            _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode,
+                               out_force)  # fmt: skip
         istate[I_RECORDS] += 1
         if t >= record_end and _post_record_fall(par, y, mode, sc):
             istate[I_EVENTS] = _event(t, EV_OVERTURN, mode[M_KIND], mode[M_KIND], istate[I_EVENTS],
