@@ -13,7 +13,9 @@ The loop has the shape of the planar engine (:mod:`freestand.core.dynamics.engin
   regula falsi on RK4 states from the step's start, to ``EVENT_TIME`` [s];
 - :func:`resolve`: at an event, the impact law where a gap closed, then the
   contact mode of the new state (:func:`freestand.core.contact.body_modes.select_mode`),
-  and the drift of the held rows projected out;
+  and the drift of the held rows projected out; where no mode exists, or an
+  edge's slip keeps restarting from rest (:func:`watch_chatter`), a stretch
+  of velocity-level time stepping (:func:`_stretch`);
 - :func:`record`: the state and contact force written to the output buffers.
 
 Event functions (each must stay >= 0 in the held mode): the normal margin of
@@ -106,6 +108,7 @@ SLIP_FRACTION = 0.5  # a step lasts at most this part of a slip's time scale |s|
 SLIP_MIN_STEP = 1e-4  # [s] the slip's time scale bounds no step below this
 STRETCH_STEP = 1e-4  # [s] step of the velocity-level time stepping (the remedy)
 STRETCH_CHECK = 16  # a stretch looks for a consistent mode at its steps 1, 2, 4, 8, 16, 32, 48, ...
+STRETCH_IMPACT = 10.0  # a stretch's point approaching faster than this times g h lands [-]
 CHATTER_WINDOW = 1e-3  # [s] slip restarts or remedies closer than this in time are a chatter
 CHATTER_COUNT = 3  # this many in a row start a chatter stretch of the remedy
 MIN_STEP = 1e-9  # [s] the smallest step the closing prediction may ask for
@@ -754,9 +757,11 @@ def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force):
     position follows with that velocity (the rotation exactly, for an
     angular velocity constant over the step). ``force`` receives the mean
     contact force over the step, (normal, |tangential|) [N] (the impulses'
-    sum over h), and the reach [m]: points within it of the support took
-    part (a point that closed within the step is held where it stopped,
-    above the support by up to the reach).
+    sum over h; kept from the step before where a base point approached
+    faster than ``STRETCH_IMPACT g h``: an impact, as the events keep their
+    impulses out of the recorded force), and the reach [m]: points within it
+    of the support took part (a point that closed within the step is held
+    where it stopped, above the support by up to the reach).
     """
     prepare(par, record, dt, t + h, y, FREE, 0, 0.0, sc)
     rot = sc[SC_ROT]
@@ -769,16 +774,22 @@ def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force):
     arms = np.empty((MAX_POINTS, 3))
     reach = gap_tol + h * _fall_speed(velocity, par)
     count = base_points(par, y, rot, data[D_PSI], reach, arms)
+    approach = 0.0  # the fastest approach of a base point [m/s]
+    for p in range(count):
+        _, _, uz = cross(velocity[3], velocity[4], velocity[5], arms[p, 0], arms[p, 1], arms[p, 2])
+        approach = max(approach, -(velocity[2] + uz))
     velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], velocity)
     for i in range(3):
         y[i] += h * velocity[i]
     _turn(y, velocity[3] * h, velocity[4] * h, velocity[5] * h)
     for i in range(6):
         y[7 + i] = velocity[i]
-    # the impulses' sum over the step, m (v - v_free), as a mean force
-    scale = par[P_MASS] / h
-    force[0] = scale * (velocity[2] - free[2])
-    force[1] = scale * math.hypot(velocity[0] - free[0], velocity[1] - free[1])
+    # the impulses' sum over the step, m (v - v_free), as a mean force; a step in which a
+    # point lands is an impact, whose impulse the force keeps out (as an event does)
+    if approach <= STRETCH_IMPACT * par[P_GRAVITY] * h:
+        scale = par[P_MASS] / h
+        force[0] = scale * (velocity[2] - free[2])
+        force[1] = scale * math.hypot(velocity[0] - free[0], velocity[1] - free[1])
     force[2] = reach
 
 
@@ -834,14 +845,14 @@ def record(t, y, mode, sc, count, out_t, out_y, out_mode, out_force):
 
 
 @nb.njit(cache=True, error_model="numpy")
-def held_row(par, y, data, sc, reach, velocity_tol, force, row, out_mode, out_force):
+def held_row(par, y, data, sc, reach, velocity_tol, force, patch, row, out_mode, out_force):
     """Row ``row`` of a stretch of the remedy: the patch it holds and its contact force.
 
     The patch is the one the time stepping holds (:func:`touched_patch`, not
     FREE, which the engine's mode is during a stretch); the force is
-    ``force`` = (N, |f_t|) [N], the step's impulses over its length.
+    ``force`` = (N, |f_t|) [N], the step's impulses over its length;
+    ``patch`` (3, int) is work space.
     """
-    patch = np.empty(3, dtype=np.int64)
     touched_patch(par, y, sc[SC_ROT], data[D_PSI], reach, velocity_tol, patch)
     for i in range(3):
         out_mode[row, i] = patch[i]
@@ -850,19 +861,18 @@ def held_row(par, y, data, sc, reach, velocity_tol, force, row, out_mode, out_fo
 
 
 @nb.njit(cache=True, error_model="numpy")
-def _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode, out_force):
+def _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, force, patch,
+                       out_mode, out_force):  # fmt: skip
     """The row just recorded, where a stretch of the remedy begins: the patch touched.
 
-    Its force is the row's before (the contact force just before the event;
-    the stretch's first step gives the next).
+    Its force is the row's before (the contact force just before the event),
+    in ``force`` too: the stretch's steps start from it.
     """
     row = istate[I_RECORDS]
-    force = np.zeros(2)
-    if row > 0:
-        force[0] = out_force[row - 1, 0]
-        force[1] = out_force[row - 1, 1]
+    force[0] = out_force[row - 1, 0] if row > 0 else 0.0
+    force[1] = out_force[row - 1, 1] if row > 0 else 0.0
     rotation_matrix(y, sc[SC_ROT])
-    held_row(par, y, data, sc, gap_tol, velocity_tol, force, row, out_mode, out_force)
+    held_row(par, y, data, sc, gap_tol, velocity_tol, force, patch, row, out_mode, out_force)
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -1089,6 +1099,26 @@ def _settle(par, y, sc, data, reach, gap_tol, velocity_tol):
 
 
 @nb.njit(cache=True, error_model="numpy")
+def watch_chatter(t, before, event, mode, istate, chatter):
+    """Count an EDGE's slip restarts and remedies; start a chatter's stretch at the third.
+
+    A restart is a slip-stop after which the edge slips again from rest
+    (the event ``EV_STICK`` with a sliding mode). ``chatter`` holds the last
+    one's time [s] and how many followed each other within
+    ``CHATTER_WINDOW``; at ``CHATTER_COUNT`` the remedy's time stepping takes
+    over (:func:`_start_chatter`). Returns the event's kind.
+    """
+    if before != EDGE or not (event == EV_REMEDY or (event == EV_STICK and mode[M_SLIP] == 1)):
+        return event
+    chatter[1] = chatter[1] + 1.0 if t - chatter[0] < CHATTER_WINDOW else 1.0
+    chatter[0] = t
+    if chatter[1] < CHATTER_COUNT:
+        return event
+    chatter[1] = 0.0
+    return _start_chatter(mode, istate, event)
+
+
+@nb.njit(cache=True, error_model="numpy")
 def _start_chatter(mode, istate, event):
     """Start a chatter's stretch of the remedy; returns the event's kind (a remedy).
 
@@ -1113,7 +1143,7 @@ def _start_chatter(mode, istate, event):
 
 @nb.njit(cache=True, error_model="numpy")
 def _slip_speed(par, record, dt, t, y, mode, data, sc):
-    """Slip speed [m/s] of the held patch at (t, y), at its geometric centre."""
+    """Slip speed [m/s] of the held patch at (t, y), at its centre of pressure."""
     ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
     svel = sc[SC_SVEL]
     tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
@@ -1167,8 +1197,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
     rest_ready = False
     force = np.zeros(3)  # a stretch's mean contact force (normal, |tangential|) [N], reach [m]
     patch = np.zeros(3, dtype=np.int64)  # the patch a stretch's step held
-    last_restart = -math.inf  # time of the last slip restart or remedy [s]
-    restarts = 0  # slip restarts and remedies in a row, each within CHATTER_WINDOW
+    chatter = np.array([-math.inf, 0.0])  # the last slip restart's time [s], restarts in a row
     fresh = False  # the step's references and event functions at (t, y) are computed
     count = 0
     if istate[I_RECORDS] == 0:
@@ -1180,8 +1209,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         solve_at(par, record_, dt, t, y, mode, data, sc)
         record(t, y, mode, sc, 0, out_t, out_y, out_mode, out_force)
         if istate[I_STRETCH] == 1:
-            _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode,
-                               out_force)  # fmt: skip
+            _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, force,
+                               patch, out_mode, out_force)  # fmt: skip
         istate[I_RECORDS] = 1
         istate[I_EVENTS] = _event(t, EV_START, -1, mode[M_KIND], istate[I_EVENTS], ev_time,
                                   ev_kind, ev_before, ev_after)  # fmt: skip
@@ -1196,7 +1225,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             row = istate[I_RECORDS]
             record(t, y, mode, sc, row, out_t, out_y, out_mode, out_force)
             if istate[I_STRETCH] >= 1:
-                held_row(par, y, data, sc, force[2], velocity_tol, force, row, out_mode, out_force)
+                held_row(par, y, data, sc, force[2], velocity_tol, force, patch, row, out_mode,
+                         out_force)  # fmt: skip
             istate[I_RECORDS] += 1
             if sc[SC_ROT][2, 2] <= 0.0:
                 istate[I_EVENTS] = _event(t, EV_OVERTURN, FREE, FREE, istate[I_EVENTS], ev_time,
@@ -1214,8 +1244,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             rest_ready = resting(mode, y, velocity_tol)
             record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
             if istate[I_STRETCH] == 1:
-                _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode,
-                                   out_force)  # fmt: skip
+                _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, force,
+                                   patch, out_mode, out_force)  # fmt: skip
             istate[I_RECORDS] += 1
             continue
         rest_ready = False
@@ -1238,12 +1268,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             before = mode[M_KIND]
             event = resolve(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol,
                             which, istate)  # fmt: skip
-            if before == EDGE and (event == EV_REMEDY or (event == EV_STICK and mode[M_SLIP] == 1)):
-                restarts = restarts + 1 if t - last_restart < CHATTER_WINDOW else 1
-                last_restart = t
-                if restarts >= CHATTER_COUNT:
-                    event = _start_chatter(mode, istate, event)
-                    restarts = 0
+            event = watch_chatter(t, before, event, mode, istate, chatter)
             after = mode[M_KIND]
             if event == EV_REMEDY and after == FREE:
                 after = touched_patch(par, y, sc[SC_ROT], data[D_PSI], gap_tol, velocity_tol,
@@ -1268,8 +1293,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             solve_at(par, record_, dt, t, y, mode, data, sc)
         record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
         if istate[I_STRETCH] == 1:
-            _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, out_mode,
-                               out_force)  # fmt: skip
+            _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, force,
+                               patch, out_mode, out_force)  # fmt: skip
         istate[I_RECORDS] += 1
         if t >= record_end and _post_record_fall(par, y, mode, sc):
             istate[I_EVENTS] = _event(t, EV_OVERTURN, mode[M_KIND], mode[M_KIND], istate[I_EVENTS],
