@@ -737,12 +737,18 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
         # no consistent mode (Painleve): a stretch of velocity-level time stepping
         istate[I_REMEDIES] += 1
         istate[I_STRETCH] = 1
-        mode[M_KIND] = FREE
-        mode[M_INDEX] = 0
-        mode[M_SLIP] = 0
+        _set_free(mode)
         return EV_REMEDY
     project(par, record, dt, t, y, mode, data, sc, velocity_tol)
     return event
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _set_free(mode):
+    """The mode FREE (a stretch of the remedy runs with it: no contact held)."""
+    mode[M_KIND] = FREE
+    mode[M_INDEX] = 0
+    mode[M_SLIP] = 0
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -991,9 +997,7 @@ def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, is
     istate[I_STRETCH] += 1
     early = istate[I_CHATTER] == 0 and steps & (steps - 1) == 0
     if not early and steps % STRETCH_CHECK != 0:
-        mode[M_KIND] = FREE
-        mode[M_INDEX] = 0
-        mode[M_SLIP] = 0
+        _set_free(mode)
         return t + h
     none = np.array([-1, 0, 0], dtype=np.int64)
     found = select_mode(par, record, dt, t + h, y, sc, gap_tol, velocity_tol, mode, data, none)
@@ -1007,9 +1011,7 @@ def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, is
         istate[I_CHATTER] = 0
         project(par, record, dt, t + h, y, mode, data, sc)
     else:
-        mode[M_KIND] = FREE
-        mode[M_INDEX] = 0
-        mode[M_SLIP] = 0
+        _set_free(mode)
     return t + h
 
 
@@ -1135,9 +1137,7 @@ def _start_chatter(mode, istate, event):
         if event != EV_REMEDY:
             istate[I_REMEDIES] += 1
     istate[I_CHATTER] = 1
-    mode[M_KIND] = FREE
-    mode[M_INDEX] = 0
-    mode[M_SLIP] = 0
+    _set_free(mode)
     return EV_REMEDY
 
 
