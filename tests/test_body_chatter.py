@@ -13,8 +13,9 @@ its slip from rest has no lasting direction: the onset direction is unstable
 none exists. Before the remedy took over such a chatter, the engine restarted
 the slip from rest every 30 to 100 microseconds: 150 restarts in the 0.1 s
 from the stored instant, 158 events. Now three restarts within a millisecond
-hand the edge to the velocity-level time stepping (``body_engine.CHATTER_WINDOW``, ``CHATTER_COUNT``) until the patch
-sticks, slips at a speed, or another contact holds.
+(``body_engine.CHATTER_WINDOW``, ``CHATTER_COUNT``) hand the edge to the
+velocity-level time stepping until the patch sticks, slips at a speed, or
+another contact holds.
 """
 
 from __future__ import annotations
