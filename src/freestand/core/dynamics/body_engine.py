@@ -220,14 +220,8 @@ def references(par, record, dt, t, y, mode, data, sc, ref):
     for i in range(5):
         ref[i] = 0.0
     if mode[M_SLIP] == 1:
-        # rows of the held patch at (t, y), at its centre of pressure
-        ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
+        size, n_tangent = slip_velocity(par, record, dt, t, y, mode, data, sc)
         svel = sc[SC_SVEL]
-        tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
-        size = 0.0
-        for i in range(n_tangent):
-            size += svel[i] ** 2
-        size = math.sqrt(size)
         for i in range(n_tangent):
             ref[i] = svel[i] / size if size > SLIP_FLOOR else data[D_SLIP + i]
             data[D_SLIP + i] = ref[i]
@@ -1005,7 +999,8 @@ def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, is
         found = -1  # a point the stretch holds is still above the support: not a flight
     if found >= 0 and istate[I_CHATTER] == 1 and mode[M_SLIP] == 1:
         # a chatter's stretch goes on while its patch could only slip from rest
-        found = -1 if _slip_speed(par, record, dt, t + h, y, mode, data, sc) <= velocity_tol else 0
+        speed, _ = slip_velocity(par, record, dt, t + h, y, mode, data, sc)
+        found = -1 if speed <= velocity_tol else 0
     if found >= 0:
         istate[I_STRETCH] = 0
         istate[I_CHATTER] = 0
@@ -1142,15 +1137,19 @@ def _start_chatter(mode, istate, event):
 
 
 @nb.njit(cache=True, error_model="numpy")
-def _slip_speed(par, record, dt, t, y, mode, data, sc):
-    """Slip speed [m/s] of the held patch at (t, y), at its centre of pressure."""
+def slip_velocity(par, record, dt, t, y, mode, data, sc):
+    """The held patch's slip velocity at (t, y), at its centre of pressure, in ``sc[SC_SVEL]``.
+
+    The mode is solved there (:func:`solve_at`, its rows left in the
+    scratch). Returns (its speed [m/s], its number of tangential rows).
+    """
     ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
     svel = sc[SC_SVEL]
     tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
     size = 0.0
     for k in range(n_tangent):
         size += svel[k] ** 2
-    return math.sqrt(size)
+    return math.sqrt(size), n_tangent
 
 
 @nb.njit(cache=True, error_model="numpy")
