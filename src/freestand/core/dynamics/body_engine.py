@@ -91,7 +91,15 @@ from freestand.core.contact.body_kernel import (
     support_acceleration,
     tangential_velocity,
 )
-from freestand.core.contact.body_modes import NONE_ADMISSIBLE, impact, select_mode
+from freestand.core.contact.body_modes import (
+    ACCELERATION,
+    MAX_CANDIDATES,
+    NONE_ADMISSIBLE,
+    candidates,
+    impact,
+    select_mode,
+    touching_points,
+)
 
 EVENT_TIME = 1e-11  # [s] width of the bracket of a located event
 GAP_SLACK = 1e-12  # [m] a released point may sit this far below the support
@@ -845,7 +853,7 @@ def record(t, y, mode, sc, count, out_t, out_y, out_mode, out_force):
 
 
 @nb.njit(cache=True, error_model="numpy")
-def held_row(par, y, data, sc, reach, velocity_tol, force, patch, row, out_mode, out_force):
+def held_row(par, y, sc, reach, velocity_tol, force, patch, row, out_mode, out_force):
     """Row ``row`` of a stretch of the remedy: the patch it holds and its contact force.
 
     The patch is the one the time stepping holds (:func:`touched_patch`, not
@@ -853,7 +861,7 @@ def held_row(par, y, data, sc, reach, velocity_tol, force, patch, row, out_mode,
     ``force`` = (N, |f_t|) [N], the step's impulses over its length;
     ``patch`` (3, int) is work space.
     """
-    touched_patch(par, y, sc[SC_ROT], data[D_PSI], reach, velocity_tol, patch)
+    touched_patch(par, y, sc[SC_ROT], reach, velocity_tol, patch)
     for i in range(3):
         out_mode[row, i] = patch[i]
     out_force[row, 0] = force[0]
@@ -861,7 +869,7 @@ def held_row(par, y, data, sc, reach, velocity_tol, force, patch, row, out_mode,
 
 
 @nb.njit(cache=True, error_model="numpy")
-def _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, force, patch,
+def _stretch_start_row(par, y, sc, gap_tol, velocity_tol, istate, force, patch,
                        out_mode, out_force):  # fmt: skip
     """The row just recorded, where a stretch of the remedy begins: the patch touched.
 
@@ -872,7 +880,7 @@ def _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, force, p
     force[0] = out_force[row - 1, 0] if row > 0 else 0.0
     force[1] = out_force[row - 1, 1] if row > 0 else 0.0
     rotation_matrix(y, sc[SC_ROT])
-    held_row(par, y, data, sc, gap_tol, velocity_tol, force, patch, row, out_mode, out_force)
+    held_row(par, y, sc, gap_tol, velocity_tol, force, patch, row, out_mode, out_force)
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -1011,51 +1019,44 @@ def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, is
 
 
 @nb.njit(cache=True, error_model="numpy")
-def touched_patch(par, y, rot, psi_stored, reach, velocity_tol, patch):
+def _horizontal_speed(y, d):
+    """Horizontal speed [m/s] of the material point at arm d."""
+    return math.hypot(point_velocity(y, d, 1.0, 0.0, 0.0), point_velocity(y, d, 0.0, 1.0, 0.0))
+
+
+@nb.njit(cache=True, error_model="numpy")
+def touched_patch(par, y, rot, reach, velocity_tol, patch):
     """The patch a time-stepped state touches, as (kind, index, slip) in ``patch``.
 
-    The touching points are within ``reach`` [m] of the support and do not
-    move away from it faster than ``velocity_tol`` [m/s]. A box: its
-    touching corners (four: FACE; two adjacent: EDGE; else POINT at one of
-    them); a cylinder: its lowest rim point (POINT), or its whole base
-    (FACE) when flat to ``reach``; FREE where none touches. It slips where a
-    touching point's horizontal speed exceeds ``velocity_tol``. The rows a
-    stretch of the remedy records say which contact the time stepping held,
-    not FREE. Returns the kind.
+    The most closed candidate (:func:`freestand.core.contact.body_modes.candidates`)
+    of the base points that touch within ``reach`` [m] of the support, not
+    moving away faster than ``velocity_tol`` [m/s]
+    (:func:`~freestand.core.contact.body_modes.touching_points`); FREE where
+    none does. It slips where a touching point's horizontal speed exceeds
+    ``velocity_tol``. The rows a stretch of the remedy records say which
+    contact the time stepping held, not FREE. Returns the kind.
     """
+    touching = np.zeros(5, dtype=np.bool_)
+    psi = touching_points(par, y, rot, reach, velocity_tol, ACCELERATION, touching)
+    kinds = np.zeros(MAX_CANDIDATES + 1, dtype=np.int64)
+    indices = np.zeros(MAX_CANDIDATES + 1, dtype=np.int64)
+    angles = np.zeros(MAX_CANDIDATES + 1)
+    patch[0], patch[1], patch[2] = FREE, 0, 0
+    if candidates(par, touching, psi, kinds, indices, angles) == 0:
+        return FREE
+    patch[0], patch[1] = kinds[0], indices[0]
     d = np.empty(3)
-    kind, index, slip = FREE, 0, 0
+    speed = 0.0  # the fastest horizontal speed of a touching point [m/s]
     if par[P_SHAPE] == SHAPE_BOX:
-        count = 0
-        touching = np.zeros(4, dtype=np.bool_)
         for k in range(4):
-            g, rate_ = corner_gap(par, y, rot, k, d)
-            if g <= reach and rate_ <= velocity_tol:
-                touching[k] = True
-                count += 1
-                index = k
-                if math.hypot(point_velocity(y, d, 1.0, 0.0, 0.0),
-                              point_velocity(y, d, 0.0, 1.0, 0.0)) > velocity_tol:  # fmt: skip
-                    slip = 1
-        if count > 0:
-            kind = FACE if count == 4 else POINT
-        if count == 2 or count == 3:
-            for k in range(4):
-                if touching[k] and touching[(k + 1) % 4]:
-                    kind, index = EDGE, k
-                    break
+            if touching[k]:
+                corner_gap(par, y, rot, k, d)
+                speed = max(speed, _horizontal_speed(y, d))
     else:
-        radius = par[P_HALF_X]
-        psi = lowest_rim_angle(rot, psi_stored)
-        arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
-        if y[2] + d[2] <= reach and point_velocity(y, d, 0.0, 0.0, 1.0) <= velocity_tol:
-            flat = y[2] + d[2] + 2.0 * radius * sin_tilt(rot) <= reach
-            kind = FACE if flat else POINT
-            speed = math.hypot(point_velocity(y, d, 1.0, 0.0, 0.0),
-                               point_velocity(y, d, 0.0, 1.0, 0.0))  # fmt: skip
-            slip = 1 if speed > velocity_tol else 0
-    patch[0], patch[1], patch[2] = kind, index, slip
-    return kind
+        arm(par, rot, par[P_HALF_X] * math.cos(psi), par[P_HALF_X] * math.sin(psi), 0.0, d)
+        speed = _horizontal_speed(y, d)
+    patch[2] = 1 if speed > velocity_tol else 0
+    return patch[0]
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -1208,7 +1209,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         solve_at(par, record_, dt, t, y, mode, data, sc)
         record(t, y, mode, sc, 0, out_t, out_y, out_mode, out_force)
         if istate[I_STRETCH] == 1:
-            _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, force,
+            _stretch_start_row(par, y, sc, gap_tol, velocity_tol, istate, force,
                                patch, out_mode, out_force)  # fmt: skip
         istate[I_RECORDS] = 1
         istate[I_EVENTS] = _event(t, EV_START, -1, mode[M_KIND], istate[I_EVENTS], ev_time,
@@ -1224,7 +1225,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             row = istate[I_RECORDS]
             record(t, y, mode, sc, row, out_t, out_y, out_mode, out_force)
             if istate[I_STRETCH] >= 1:
-                held_row(par, y, data, sc, force[2], velocity_tol, force, patch, row, out_mode,
+                held_row(par, y, sc, force[2], velocity_tol, force, patch, row, out_mode,
                          out_force)  # fmt: skip
             istate[I_RECORDS] += 1
             if sc[SC_ROT][2, 2] <= 0.0:
@@ -1243,7 +1244,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             rest_ready = resting(mode, y, velocity_tol)
             record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
             if istate[I_STRETCH] == 1:
-                _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, force,
+                _stretch_start_row(par, y, sc, gap_tol, velocity_tol, istate, force,
                                    patch, out_mode, out_force)  # fmt: skip
             istate[I_RECORDS] += 1
             continue
@@ -1270,8 +1271,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             event = watch_chatter(t, before, event, mode, istate, chatter)
             after = mode[M_KIND]
             if event == EV_REMEDY and after == FREE:
-                after = touched_patch(par, y, sc[SC_ROT], data[D_PSI], gap_tol, velocity_tol,
-                                      patch)  # fmt: skip
+                after = touched_patch(par, y, sc[SC_ROT], gap_tol, velocity_tol, patch)
             istate[I_EVENTS] = _event(t, event, before, after, istate[I_EVENTS], ev_time, ev_kind,
                                       ev_before, ev_after)  # fmt: skip
             if event == EV_OVERTURN:
@@ -1292,7 +1292,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             solve_at(par, record_, dt, t, y, mode, data, sc)
         record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
         if istate[I_STRETCH] == 1:
-            _stretch_start_row(par, y, data, sc, gap_tol, velocity_tol, istate, force,
+            _stretch_start_row(par, y, sc, gap_tol, velocity_tol, istate, force,
                                patch, out_mode, out_force)  # fmt: skip
         istate[I_RECORDS] += 1
         if t >= record_end and _post_record_fall(par, y, mode, sc):
