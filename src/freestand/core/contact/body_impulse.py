@@ -49,7 +49,7 @@ SWEEPS = 400  # projected Gauss-Seidel sweeps at most
 SWEEP_TOLERANCE = 1e-12  # relative change of the velocity that ends the sweeps
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def base_points(par, y, rot, psi_stored, gap_limit, arms):
     """The base points within ``gap_limit`` [m] of the support: their arms from G in ``arms``.
 
@@ -79,7 +79,7 @@ def base_points(par, y, rot, psi_stored, gap_limit, arms):
     return count
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _apply(par, inv_inertia, d, px, py, pz, velocity):
     """velocity += M^-1 J^T P for the impulse P at arm d."""
     m = par[P_MASS]
@@ -91,14 +91,14 @@ def _apply(par, inv_inertia, d, px, py, pz, velocity):
         velocity[3 + i] += inv_inertia[i, 0] * tx + inv_inertia[i, 1] * ty + inv_inertia[i, 2] * tz
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _point_speed(velocity, d):
     """(u_x, u_y, u_n) of the point at arm d."""
     cx, cy, cz = cross(velocity[3], velocity[4], velocity[5], d[0], d[1], d[2])
     return velocity[0] + cx, velocity[1] + cy, velocity[2] + cz
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def _delassus(par, inv_inertia, d, out):
     """The point's 3 x 3 Delassus matrix W = J M^-1 J^T (columns: unit impulses x, y, n)."""
     probe = np.zeros(6)
@@ -113,7 +113,7 @@ def _delassus(par, inv_inertia, d, out):
         out[2, k] = un
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def kinetic_energy(par, inv_inertia, velocity):
     """(1/2) m |v|^2 + (1/2) omega . I_w omega [J] (I_w from its inverse)."""
     m = par[P_MASS]
@@ -125,7 +125,7 @@ def kinetic_energy(par, inv_inertia, velocity):
     return 0.5 * m * (velocity[0] ** 2 + velocity[1] ** 2 + velocity[2] ** 2) + 0.5 * rotational
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def point_impulses(par, inv_inertia, arms, count, mu, velocity):
     """Plastic impulses at the points with friction on the circular cone; ``velocity`` (6) updated.
 
@@ -172,7 +172,7 @@ def point_impulses(par, inv_inertia, arms, count, mu, velocity):
     return impulses
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def velocity_impact(par, inv_inertia, arms, count, mu, velocity):
     """The velocity after a plastic impact at the points; it never gains energy.
 

@@ -64,6 +64,13 @@ tangential rows ``e . (omega x R s*')`` with ``s*' = R psi' t``,
 
 Everything here is compiled (numba) and works on fixed-size arrays; the
 Python side builds the parameter vector with :func:`body_parameters`.
+Functions that allocate nothing are compiled without numba's reference
+counting (``_nrt=False``), as the planar engine's: the arrays they touch (the
+scratch, ``new_scratch``) are owned by their caller for the whole call, and
+counting the references of the scratch's arrays at every call (two atomic
+operations each) took 40 % of a sliding cask's time. They never allocate nor
+return an array of their own. The allocating ones say ``_nrt=True``, so that
+they do not inherit the setting of a caller that has it off.
 """
 
 from __future__ import annotations
@@ -122,7 +129,7 @@ CENTRE_ITERATIONS = 12  # most solves of a sliding FACE or EDGE to settle its fr
 CENTRE_TOLERANCE = 1e-12  # its settling: a move below this times the half-width [-]
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def rectangle_twist_radius(half_x: float, half_y: float) -> float:
     """Mean distance [m] from the centre of the rectangle |x| <= p, |y| <= q.
 
@@ -180,13 +187,13 @@ def body_parameters(body: Body, gravity: float, restitution: float = 1.0) -> np.
 # --- small vector algebra ------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy")
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
 def cross(a0, a1, a2, b0, b1, b2):
     """a x b as a tuple."""
     return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def rotation_matrix(y, out):
     """The rotation matrix R (3, 3) of the unit quaternion ``y[3:7]`` (w, x, y, z)."""
     w, x, yy, z = y[3], y[4], y[5], y[6]
@@ -201,7 +208,7 @@ def rotation_matrix(y, out):
     out[2, 2] = 1.0 - 2.0 * (x * x + yy * yy)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def world_inverse_inertia(par, rot, out):
     """I_w^-1 = R I^-1 R^T (3, 3) [1/(kg m^2)]."""
     for i in range(3):
@@ -213,7 +220,7 @@ def world_inverse_inertia(par, rot, out):
             out[i, j] = total
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def arm(par, rot, sx, sy, sz, out):
     """d = R (s - c) [m]: from G to the body-frame point s, in the support frame."""
     px = sx - par[P_CENTRE]
@@ -223,13 +230,13 @@ def arm(par, rot, sx, sy, sz, out):
         out[i] = rot[i, 0] * px + rot[i, 1] * py + rot[i, 2] * pz
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def sin_tilt(rot):
     """sin of the tilt (angle of the body's z axis from the vertical) [-]."""
     return math.sqrt(rot[2, 0] ** 2 + rot[2, 1] ** 2)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def box_corner(par, k):
     """Base corner k (0..3, counter-clockwise from (+b_x, +b_y)) in the body frame."""
     sx = par[P_HALF_X] if k == 0 or k == 3 else -par[P_HALF_X]
@@ -237,7 +244,7 @@ def box_corner(par, k):
     return sx, sy
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def rim_angle(par, rot, psi_stored):
     """Body-frame angle psi [rad] of the rim point a cylinder rolls on.
 
@@ -262,7 +269,7 @@ def rim_angle(par, rot, psi_stored):
     return lowest
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def lowest_rim_angle(rot, psi_stored):
     """Body-frame angle [rad] of the cylinder's lowest rim point (the stored one when flat)."""
     if sin_tilt(rot) <= PIVOT_LEAN:
@@ -273,7 +280,7 @@ def lowest_rim_angle(rot, psi_stored):
 # --- support motion -----------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def support_acceleration(record, dt, t):
     """(a_x, a_y, a_v) [m/s^2] at ``t`` [s]: linear between samples, zero outside.
 
@@ -291,7 +298,7 @@ def support_acceleration(record, dt, t):
     return a_x, a_y, a_v
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def applied_wrench(par, y, inv_inertia, rot, a_x, a_y, a_v, out):
     """f_0 = (m g_e, -omega x I_w omega) (6,) [N, N m]."""
     m = par[P_MASS]
@@ -315,7 +322,7 @@ def applied_wrench(par, y, inv_inertia, rot, a_x, a_y, a_v, out):
     out[5] = -gz
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def apply_inverse_mass(par, inv_inertia, w, out):
     """M^-1 w (6,)."""
     inv_m = 1.0 / par[P_MASS]
@@ -329,14 +336,14 @@ def apply_inverse_mass(par, inv_inertia, w, out):
 # --- rows of a patch ----------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def point_velocity(y, d, e0, e1, e2):
     """e . (v + omega x d) [m/s]: the velocity of the material point at arm d along e."""
     cx, cy, cz = cross(y[10], y[11], y[12], d[0], d[1], d[2])
     return e0 * (y[7] + cx) + e1 * (y[8] + cy) + e2 * (y[9] + cz)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _point_row(y, d, e0, e1, e2, column, rows, bias, k):
     """Row k: the point at arm d along the unit e.
 
@@ -355,7 +362,7 @@ def _point_row(y, d, e0, e1, e2, column, rows, bias, k):
     bias[k] = e0 * cx + e1 * cy + e2 * cz + column
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _angular_row(e0, e1, e2, rows, bias, k):
     """Row k: the angular velocity about the unit e, ``w = (0, e)``, no bias."""
     for i in range(3):
@@ -366,7 +373,7 @@ def _angular_row(e0, e1, e2, rows, bias, k):
     bias[k] = 0.0
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def rim_terms(par, y, rot, psi):
     """The moving rim point's extra acceleration terms (z, x, y) [m/s^2].
 
@@ -392,7 +399,7 @@ def rim_terms(par, y, rot, psi):
     return ez, ex, ey
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def patch_rows(par, y, rot, kind, index, psi, centre, normal, nbias, tangent, tbias, arms):
     """Fill the rows of a patch; returns (normal rows, tangential rows).
 
@@ -440,7 +447,7 @@ def patch_rows(par, y, rot, kind, index, psi, centre, normal, nbias, tangent, tb
     return n_normal, 3
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def tangent_rows(par, y, rot, centre, tangent, tbias, arms):
     """A FACE's or EDGE's tangential rows at its friction centre (arm in ``arms[3]``).
 
@@ -457,7 +464,7 @@ def tangent_rows(par, y, rot, centre, tangent, tbias, arms):
 # --- the friction centre of a FACE or EDGE ---------------------------------------------------
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def effective_twist_radius(par, kind, index, cx, cy):
     """Twist radius rho [m] of a FACE or EDGE whose centre of pressure is (cx, cy).
 
@@ -494,7 +501,7 @@ def effective_twist_radius(par, kind, index, cx, cy):
     return 0.0
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def reset_friction_centre(par, kind, index, centre):
     """The friction centre at the patch's geometric centre (the base centre, an edge's midpoint).
 
@@ -513,7 +520,7 @@ def reset_friction_centre(par, kind, index, centre):
     centre[2] = effective_twist_radius(par, kind, index, centre[0], centre[1])
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def move_friction_centre(par, rot, kind, index, lam, centre):
     """Move the friction centre to the patch's centre of pressure; returns how far [m].
 
@@ -552,7 +559,7 @@ def move_friction_centre(par, rot, kind, index, lam, centre):
     return moved
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def centre_stick_friction(par, rot, kind, index, n_normal, lam, centre):
     """A sticking FACE's or EDGE's friction, solved on rows at ``centre``, about its CoP.
 
@@ -572,7 +579,7 @@ def centre_stick_friction(par, rot, kind, index, n_normal, lam, centre):
     lam[n_normal + 2] = torque / centre[2]
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def normal_total(kind, lam):
     """The patch's total normal force N [N] from its normal multipliers."""
     if kind == POINT:
@@ -584,7 +591,7 @@ def normal_total(kind, lam):
     return 0.0
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def tangential_velocity(y, tangent, n_tangent, out):
     """The tangential rows' velocities s (scaled slip velocity) [m/s]."""
     for k in range(n_tangent):
@@ -598,7 +605,7 @@ def tangential_velocity(y, tangent, n_tangent, out):
 # --- the solve of one mode ----------------------------------------------------------------------
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def solve_mode(par, inv_inertia, base, use_bias, slip, direction, normal, nbias, n_normal,
                tangent, tbias, n_tangent, work, matrix, rhs, acc, lam):  # fmt: skip
     """Solve the contact problem of one mode; False when its system is singular.
@@ -661,7 +668,7 @@ def solve_mode(par, inv_inertia, base, use_bias, slip, direction, normal, nbias,
     return True
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy")
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
 def normal_total_rows(n_normal, lam):
     """Total normal force of a patch from its row count (3 rows: FACE, lam[0])."""
     if n_normal == 2:
@@ -671,7 +678,7 @@ def normal_total_rows(n_normal, lam):
     return 0.0
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def row_acceleration(rows, bias, k, acc):
     """w_k . x'' + b_k [m/s^2]."""
     total = bias[k]
@@ -683,7 +690,7 @@ def row_acceleration(rows, bias, k, acc):
 # --- admissibility -------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def face_centre_of_pressure(rot, lam):
     """Centre of pressure (body frame x, y) [m] of a FACE from (N, M_x, M_y)."""
     n = lam[0]
@@ -695,7 +702,7 @@ def face_centre_of_pressure(rot, lam):
     return rot[0, 0] * px + rot[1, 0] * py, rot[0, 1] * px + rot[1, 1] * py
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def normal_margin(par, rot, kind, lam):
     """The smallest normal admissibility margin of a patch [N] (>= 0 admissible).
 
@@ -718,7 +725,7 @@ def normal_margin(par, rot, kind, lam):
     return 0.0
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def friction_margin(par, n_normal, n_tangent, lam):
     """mu_0 N - |f_t| [N] of a sticking patch (>= 0 holds)."""
     total = normal_total_rows(n_normal, lam)
@@ -748,6 +755,7 @@ SC_SVEL = 14
 SC_SACC = 15
 SC_DIR = 16
 SC_CENTRE = 17  # the friction centre of the rows: base x, y [m] (body frame), rho [m]; kind, index
+SC_PROBE = 18  # (3, 6) work outside a solve: arms of probed points, a projection's velocities
 
 #: [m/s] below which a slip velocity has no direction of its own: a slip this slow keeps the
 #: direction it started with (or had at its step's start). Above the residue (some 1e-11
@@ -758,18 +766,18 @@ SC_CENTRE = 17  # the friction centre of the rows: base x, y [m] (body frame), r
 SLIP_FLOOR = 1e-6
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def new_scratch():
     """The work arrays of the kernel, as one tuple (see the SC_* indices)."""
     return (
         np.zeros((3, 3)), np.zeros((3, 3)), np.zeros(6), np.zeros(6),
         np.zeros((6, 3)), np.zeros(3), np.zeros((6, 3)), np.zeros(3), np.zeros((4, 3)),
         np.zeros((13, 6)), np.zeros((6, 6)), np.zeros(6), np.zeros(6), np.zeros(6),
-        np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(5),
+        np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(5), np.zeros((3, 6)),
     )  # fmt: skip
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def pivot_angle(par, y, rot, kind, psi_stored):
     """The rim angle of a cylinder's POINT patch (stored when flat), else the stored value."""
     if kind == POINT and par[P_SHAPE] == SHAPE_CYLINDER:
@@ -777,7 +785,7 @@ def pivot_angle(par, y, rot, kind, psi_stored):
     return psi_stored
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def prepare(par, record, dt, t, y, kind, index, psi, sc):
     """Rotation, inverse inertia, applied wrench, M^-1 f_0 and the patch's rows at ``t``.
 
@@ -792,7 +800,7 @@ def prepare(par, record, dt, t, y, kind, index, psi, sc):
     return scratch_rows(par, y, kind, index, psi, sc)
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy")
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
 def scratch_rows(par, y, kind, index, psi, sc):
     """The patch's rows (:func:`patch_rows`) in the scratch, at the rotation it holds.
 
@@ -805,7 +813,7 @@ def scratch_rows(par, y, kind, index, psi, sc):
                       sc[SC_NBIAS], sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS])  # fmt: skip
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal, n_tangent):
     """Solve a mode on the rows in the scratch, its friction about the centre of pressure.
 
@@ -829,7 +837,8 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     index = int(centre[4])
     if kind != FACE and kind != EDGE:
         if kinetic:
-            direction = slip_direction(y, n_tangent, stored, sc)
+            direction = _slip_direction(y, n_tangent, stored, sc[SC_TANGENT], sc[SC_SVEL],
+                                        sc[SC_DIR])  # fmt: skip
         return solve_mode(par, sc[SC_INV], sc[SC_BASE], use_bias, slip, direction, sc[SC_NORMAL],
                           sc[SC_NBIAS], n_normal, sc[SC_TANGENT], sc[SC_TBIAS], n_tangent,
                           sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS], sc[SC_ACC],
@@ -857,7 +866,7 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     return True
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def slip_direction(y, n_tangent, data, sc):
     """The sliding direction u: the slip velocity's while it points on the stored one's side.
 
@@ -872,7 +881,7 @@ def slip_direction(y, n_tangent, data, sc):
     return _slip_direction(y, n_tangent, data, sc[SC_TANGENT], sc[SC_SVEL], sc[SC_DIR])
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _slip_direction(y, n_tangent, data, tangent, svel, direction):
     """:func:`slip_direction` on the scratch's arrays (rows, slip velocity, direction)."""
     tangential_velocity(y, tangent, n_tangent, svel)
@@ -888,7 +897,7 @@ def _slip_direction(y, n_tangent, data, tangent, svel, direction):
     return direction
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy")
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
 def _prepare_held(par, record, dt, t, y, mode, data, sc):
     """:func:`prepare` for the held mode at (t, y), its pivot at the stored rim angle's point."""
     kind = mode[M_KIND]
@@ -898,7 +907,7 @@ def _prepare_held(par, record, dt, t, y, mode, data, sc):
     return prepare(par, record, dt, t, y, kind, mode[M_INDEX], psi, sc)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def solve_at(par, record, dt, t, y, mode, data, sc):
     """Solve the held mode at (t, y): fills sc[SC_ACC] and sc[SC_LAM]; False if singular.
 
@@ -912,7 +921,7 @@ def solve_at(par, record, dt, t, y, mode, data, sc):
     return ok, n_normal, n_tangent
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def solve_at_centre(par, record, dt, t, y, mode, data, sc):
     """A sticking mode solved with its rows at the patch's geometric centre.
 
@@ -928,7 +937,7 @@ def solve_at_centre(par, record, dt, t, y, mode, data, sc):
     return ok, n_normal, n_tangent
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def rate(par, record, dt, t, y, mode, data, sc, ydot):
     """y' of the held mode at (t, y); False when the mode's system is singular.
 
@@ -940,7 +949,7 @@ def rate(par, record, dt, t, y, mode, data, sc, ydot):
     return ok
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def state_rate(y, acc, ydot):
     """y' from the state and the accelerations ``acc`` = (v', omega') of a solve (:func:`rate`)."""
     for i in range(3):
@@ -959,7 +968,7 @@ def state_rate(y, acc, ydot):
 # --- gaps of the base ---------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def corner_gap(par, y, rot, k, d):
     """(gap [m], gap velocity [m/s]) of the box's base corner k; its arm in ``d``."""
     sx, sy = box_corner(par, k)
@@ -967,7 +976,7 @@ def corner_gap(par, y, rot, k, d):
     return y[2] + d[2], point_velocity(y, d, 0.0, 0.0, 1.0)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def slowest_rim_angle(y, rot):
     """Body-frame angle [rad] of the rim point of a flat base with the smallest normal velocity.
 
@@ -983,7 +992,7 @@ def slowest_rim_angle(y, rot):
     return phi - math.atan2(rot[1, 0], rot[0, 0])
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def rim_gap(par, y, rot, d):
     """(gap [m], gap velocity [m/s], psi) of the cylinder's lowest rim point; arm in ``d``.
 
@@ -1000,7 +1009,7 @@ def rim_gap(par, y, rot, d):
     return y[2] + d[2], point_velocity(y, d, 0.0, 0.0, 1.0), psi
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def rim_contact(par, y, rot, gap_tol, d):
     """(gap [m], gap velocity [m/s], psi) of the rim point that touches; arm in ``d``.
 
@@ -1020,7 +1029,7 @@ def rim_contact(par, y, rot, gap_tol, d):
     return g, gv, psi
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def flat_gap(par, y, rot):
     """Largest gap [m] of the base's outline.
 
@@ -1038,7 +1047,7 @@ def flat_gap(par, y, rot):
     return g + 2.0 * par[P_HALF_X] * sin_tilt(rot)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def energy(par, y):
     """Kinetic plus potential energy m g z_G [J] in the support's frame (no excitation)."""
     rot = np.empty((3, 3))

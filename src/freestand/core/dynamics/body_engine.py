@@ -25,6 +25,11 @@ velocity along its direction at the step's start (a sliding patch), the gap of
 each base corner not held (box), the landing of a cylinder on its base (its
 axis's tilt vector along the pivot's direction: ``sin(tilt)`` in a plane),
 and the tilt below pi/2.
+
+As in the kernel (:mod:`freestand.core.contact.body_kernel`), the phases that
+allocate nothing are compiled without reference counting (``_nrt=False``);
+their work arrays (the scratch, the event functions' bracket) are
+:func:`run`'s.
 """
 
 from __future__ import annotations
@@ -57,12 +62,19 @@ from freestand.core.contact.body_kernel import (
     SC_ACC,
     SC_BASE,
     SC_CENTRE,
+    SC_DIR,
     SC_INV,
     SC_LAM,
+    SC_MATRIX,
+    SC_NBIAS,
+    SC_NORMAL,
+    SC_PROBE,
+    SC_RHS,
     SC_ROT,
     SC_SVEL,
     SC_TANGENT,
     SC_TBIAS,
+    SC_WORK,
     SHAPE_BOX,
     SLIP_FLOOR,
     STATE_SIZE,
@@ -158,14 +170,14 @@ STATUS_OVERTURNED = 2
 STATUS_BUFFER_FULL = 3
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _normalise(y):
     size = math.sqrt(y[3] ** 2 + y[4] ** 2 + y[5] ** 2 + y[6] ** 2)
     for i in range(3, 7):
         y[i] /= size
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _rk4(par, record, dt, t, h, y, mode, data, sc, k, out):
     """One RK4 step of the held mode over h from (t, y) into ``out``; False if singular.
 
@@ -189,7 +201,7 @@ def _rk4(par, record, dt, t, h, y, mode, data, sc, k, out):
     return ok
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def resting(mode, y, velocity_tol):
     """True while the body sits flat, sticks and does not move (not integrated)."""
     if mode[M_KIND] != FACE or mode[M_SLIP] != 0:
@@ -200,7 +212,7 @@ def resting(mode, y, velocity_tol):
     return True
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
     """Phase 1: the state at t + h in ``out`` (RK4, or unchanged at rest); False if singular.
 
@@ -215,7 +227,7 @@ def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
     return _rk4(par, record, dt, t, h, y, mode, data, sc, k, out)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def references(par, record, dt, t, y, mode, data, sc, ref):
     """The step's references: the slip direction (3) and the pivot's horizontal direction (2).
 
@@ -237,11 +249,11 @@ def references(par, record, dt, t, y, mode, data, sc, ref):
         # the step's pivot: the lowest rim point (kept on its side within the step)
         psi = lowest_rim_angle(rot, data[D_PSI])
         data[D_PSI] = psi
-        d = np.empty(3)
+        probe = sc[SC_PROBE]
+        d, c = probe[0], probe[1]
         radius = par[P_HALF_X]
         # horizontal direction of the pivot from the base centre
         arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
-        c = np.empty(3)
         arm(par, rot, 0.0, 0.0, 0.0, c)
         px = d[0] - c[0]
         py = d[1] - c[1]
@@ -250,7 +262,7 @@ def references(par, record, dt, t, y, mode, data, sc, ref):
         ref[4] = py / size
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
     """The event functions at (t, y) in the held mode (>= 0 while it holds); their count."""
     ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
@@ -275,7 +287,7 @@ def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
             values[count] = along
             kinds[count] = FN_SLIP_STOP
             count += 1
-    d = np.empty(3)
+    d = sc[SC_PROBE][0]
     if par[P_SHAPE] == SHAPE_BOX:
         for c in range(4):
             if kind == FACE or (kind == POINT and mode[M_INDEX] == c):
@@ -293,7 +305,7 @@ def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
     elif kind == FREE:
         radius = par[P_HALF_X]
         s = sin_tilt(rot)
-        c0 = np.empty(3)
+        c0 = sc[SC_PROBE][1]
         arm(par, rot, 0.0, 0.0, 0.0, c0)
         values[count] = y[2] + c0[2] - radius * s
         kinds[count] = FN_GAP
@@ -304,7 +316,7 @@ def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
     return count
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _closing_time(value, rate_, acceleration):
     """Earliest t > 0 with value + rate t + acceleration t^2 / 2 = 0 [s]; inf if none."""
     if acceleration == 0.0:
@@ -320,7 +332,7 @@ def _closing_time(value, rate_, acceleration):
     return best
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def closing_step(par, y, mode, sc, ref):
     """Largest step [s] that cannot step over the closing of a gap and its reopening.
 
@@ -348,7 +360,7 @@ def closing_step(par, y, mode, sc, ref):
     earliest = math.inf
     if mode[M_SLIP] == 1 and kind != FACE:
         earliest = _slip_turn_time(mode, sc)
-    d = np.empty(3)
+    d = sc[SC_PROBE][0]
     if par[P_SHAPE] == SHAPE_BOX:
         if kind == FACE:
             return max(earliest, MIN_STEP)
@@ -395,7 +407,7 @@ def closing_step(par, y, mode, sc, ref):
     return max(CLOSING_OVERSHOOT * earliest, MIN_STEP)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _slip_turn_time(mode, sc):
     """Time [s] in which a slip's velocity could stop or turn: |s| / |s'| times SLIP_FRACTION.
 
@@ -422,7 +434,7 @@ def _slip_turn_time(mode, sc):
     return max(limit, SLIP_MIN_STEP) / CLOSING_OVERSHOOT
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _whirl_step(lean, areal, landing_time, landing_speed, distance):
     """Largest step [s] of a rolling cylinder whose lean whirls; inf when it lands as in a plane.
 
@@ -456,7 +468,7 @@ def _whirl_step(lean, areal, landing_time, landing_speed, distance):
     return limit
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _levels(par, n, start_values, kinds, levels):
     """Level below which each event function fires; NaN for a function that cannot fire.
 
@@ -485,7 +497,7 @@ def _levels(par, n, start_values, kinds, levels):
     return n
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _fired(n, values, levels, prefer):
     """Index of an event function below its level (``prefer`` if it is one), or -1."""
     if prefer >= 0 and values[prefer] < levels[prefer]:
@@ -496,7 +508,7 @@ def _fired(n, values, levels, prefer):
     return -1
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _trial_time(low, high, g_low, g_high):
     """Next trial [s] of the Illinois search: the secant root, kept half a tolerance inside."""
     if g_low > 0.0 and g_high < 0.0:
@@ -506,9 +518,9 @@ def _trial_time(low, high, g_low, g_high):
     return min(max(x, low + 0.5 * EVENT_TIME), high - 0.5 * EVENT_TIME)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count, trial,
-           values, kinds, out):  # fmt: skip
+           values, kinds, bracket, out):  # fmt: skip
     """Phase 2: the earliest crossing of an event function within the step.
 
     ``out`` holds the state at t + h; ``start_values`` the functions at t.
@@ -522,16 +534,16 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
     half a tolerance inside the bracket so that it closes to ``EVENT_TIME``
     once the root is found; a trial at which another function has fired
     becomes the bracket's end and that function the one followed. About eight
-    trials instead of the bisection's thirty.
+    trials instead of the bisection's thirty. ``bracket`` (3,
+    ``MAX_EVENT_FUNCTIONS``) is work space: the functions' levels and their
+    values at the bracket's ends.
     """
     n = event_functions(par, record, dt, t + h, out, mode, data, sc, ref, values, kinds)
-    levels = np.empty(MAX_EVENT_FUNCTIONS)
+    levels, low_values, high_values = bracket[0], bracket[1], bracket[2]
     _levels(par, n, start_values, kinds, levels)
     target = _fired(n, values, levels, -1)
     if target < 0:
         return h, -1
-    low_values = np.empty(MAX_EVENT_FUNCTIONS)
-    high_values = np.empty(MAX_EVENT_FUNCTIONS)
     for i in range(n):
         low_values[i] = start_values[i]
         high_values[i] = values[i]
@@ -575,7 +587,7 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
     return high, kinds[target]
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _lean_comes_flat(par, y, mode, sc):
     """True when a rolling cylinder's lean whirls within ``PIVOT_LEAN`` of flat, closing.
 
@@ -602,21 +614,23 @@ def _lean_comes_flat(par, y, mode, sc):
     return abs(ex * uy - ey * ux) > PLANAR_PASS * PIVOT_LEAN * math.hypot(ux, uy)
 
 
-@nb.njit(cache=True, error_model="numpy")
-def _flatten(par, y, rot):
-    """The base flat on the support: the tilt removed (a pure yaw), the base centre at z = 0."""
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _flatten(par, y, rot, d):
+    """The base flat on the support: the tilt removed (a pure yaw), the base centre at z = 0.
+
+    ``d`` (3) is work space.
+    """
     size = math.hypot(y[3], y[6])
     y[3] /= size
     y[4] = 0.0
     y[5] = 0.0
     y[6] /= size
     rotation_matrix(y, rot)
-    d = np.empty(3)
     arm(par, rot, 0.0, 0.0, 0.0, d)
     y[2] -= y[2] + d[2]
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     """Remove the drift of the held rows: positions on the support, their velocities zero.
 
@@ -635,9 +649,10 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
         return
     rot = sc[SC_ROT]
     rotation_matrix(y, rot)
-    d = np.empty(3)
+    probe = sc[SC_PROBE]
+    d = probe[0]
     if kind == FACE:
-        _flatten(par, y, rot)
+        _flatten(par, y, rot, d)
     elif kind == EDGE:
         g0, _ = corner_gap(par, y, rot, mode[M_INDEX], d)
         g1, _ = corner_gap(par, y, rot, (mode[M_INDEX] + 1) % 4, d)
@@ -651,7 +666,7 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
         arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
         y[2] -= y[2] + d[2]
     ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
-    base = np.empty(6)
+    base, after, lam = probe[0], probe[1], probe[2]  # the velocity before, after; impulses
     for i in range(6):
         base[i] = y[7 + i]
     held_tangent = n_tangent if mode[M_SLIP] == 0 else 0
@@ -663,17 +678,14 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
             speed += svel[k] ** 2
         if math.sqrt(speed) <= settle_below:
             held_tangent = n_tangent
-    after = np.empty(6)
-    lam = np.empty(6)
-    from_scratch = sc
-    if solve_mode(par, from_scratch[SC_INV], base, False, 0, from_scratch[16], from_scratch[4],
-                  from_scratch[5], n_normal, from_scratch[6], from_scratch[7], held_tangent,
-                  from_scratch[9], from_scratch[10], from_scratch[11], after, lam):  # fmt: skip
+    if solve_mode(par, sc[SC_INV], base, False, 0, sc[SC_DIR], sc[SC_NORMAL], sc[SC_NBIAS],
+                  n_normal, sc[SC_TANGENT], sc[SC_TBIAS], held_tangent, sc[SC_WORK],
+                  sc[SC_MATRIX], sc[SC_RHS], after, lam):  # fmt: skip
         for i in range(6):
             y[7 + i] = after[i]
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _post_record_fall(par, y, mode, sc):
     """True when, without excitation, a pivoting body is past its top: tilting and falling."""
     if mode[M_KIND] != POINT and mode[M_KIND] != EDGE:
@@ -685,7 +697,7 @@ def _post_record_fall(par, y, mode, sc):
     return rate_cos < 0.0 and y[9] < 0.0
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which, istate):
     """Phase 3: the impact (a gap closed) and the next contact mode; the event kind."""
     event = EV_LIFT_OFF
@@ -706,7 +718,7 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
             event = EV_LANDING_MISS
             which = -1
         elif gap > gap_tol:
-            _flatten(par, y, rot)
+            _flatten(par, y, rot, sc[SC_PROBE][0])
     if which == FN_GAP or which == FN_LANDING:
         prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
         after = np.empty(6)
@@ -745,7 +757,7 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
     return event
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _set_free(mode):
     """The mode FREE (a stretch of the remedy runs with it: no contact held)."""
     mode[M_KIND] = FREE
@@ -753,7 +765,7 @@ def _set_free(mode):
     mode[M_SLIP] = 0
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force):
     """The remedy's step: one Moreau-Jean step of length h (Jean 1999), in place on ``y``.
 
@@ -801,7 +813,7 @@ def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force):
     force[2] = reach
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _fall_speed(velocity, par):
     """A bound of the speed [m/s] at which a base point approaches the support.
 
@@ -816,7 +828,7 @@ def _fall_speed(velocity, par):
         velocity[3] ** 2 + velocity[4] ** 2 + velocity[5] ** 2)  # fmt: skip
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _turn(y, ax, ay, az):
     """Turn the orientation quaternion y[3:7] by the rotation vector (ax, ay, az) [rad] (world)."""
     angle = math.sqrt(ax * ax + ay * ay + az * az)
@@ -833,7 +845,7 @@ def _turn(y, ax, ay, az):
     _normalise(y)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def record(t, y, mode, sc, count, out_t, out_y, out_mode, out_force):
     """Phase 4: write the state, the mode and the contact force (N, |f_t|) at row ``count``."""
     out_t[count] = t
@@ -852,7 +864,7 @@ def record(t, y, mode, sc, count, out_t, out_y, out_mode, out_force):
     out_force[count, 1] = math.sqrt(size)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def held_row(par, y, sc, reach, velocity_tol, force, patch, row, out_mode, out_force):
     """Row ``row`` of a stretch of the remedy: the patch it holds and its contact force.
 
@@ -868,7 +880,7 @@ def held_row(par, y, sc, reach, velocity_tol, force, patch, row, out_mode, out_f
     out_force[row, 1] = force[1]
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _stretch_start_row(par, y, sc, gap_tol, velocity_tol, istate, force, patch,
                        out_mode, out_force):  # fmt: skip
     """The row just recorded, where a stretch of the remedy begins: the patch touched.
@@ -883,7 +895,7 @@ def _stretch_start_row(par, y, sc, gap_tol, velocity_tol, istate, force, patch,
     held_row(par, y, sc, gap_tol, velocity_tol, force, patch, row, out_mode, out_force)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _event(t, kind, before, after, count, ev_time, ev_kind, ev_before, ev_after):
     if count < ev_time.shape[0]:
         ev_time[count] = t
@@ -893,7 +905,7 @@ def _event(t, kind, before, after, count, ev_time, ev_kind, ev_before, ev_after)
     return count + 1
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def rest_prepare(par, y, mode, data, sc, rest):
     """Unit solutions of the resting mode: its multipliers are affine in (a_x, a_y, a_v).
 
@@ -918,7 +930,7 @@ def rest_prepare(par, y, mode, data, sc, rest):
             rest[j, i] -= rest[0, i]
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def rest_margins(par, record, dt, t, rest, rot, lam, centre):
     """The resting mode's multipliers at t in ``lam``; (normal margin, friction margin).
 
@@ -935,7 +947,7 @@ def rest_margins(par, record, dt, t, rest, rot, lam, centre):
     return normal_margin(par, rot, FACE, lam), friction_margin(par, 3, 3, lam)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def rest_step(par, record, dt, t, h, rest, rot, lam, centre):
     """A step of the resting mode over h (within one segment of the record).
 
@@ -961,7 +973,7 @@ def rest_step(par, record, dt, t, h, rest, rot, lam, centre):
     return high, FN_NORMAL if normal < -slack else FN_FRICTION
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _next_end(t, breaks, h_max, t_end):
     """End of the next step: at most h_max, never across a break of the record."""
     end = min(t + h_max, t_end)
@@ -978,7 +990,7 @@ def _next_end(t, breaks, h_max, t_end):
     return end
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, istate, force):
     """One step of the remedy; it ends where a consistent mode exists again. Returns t + h.
 
@@ -1018,13 +1030,13 @@ def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, is
     return t + h
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _horizontal_speed(y, d):
     """Horizontal speed [m/s] of the material point at arm d."""
     return math.hypot(point_velocity(y, d, 1.0, 0.0, 0.0), point_velocity(y, d, 0.0, 1.0, 0.0))
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def touched_patch(par, y, rot, reach, velocity_tol, patch):
     """The patch a time-stepped state touches, as (kind, index, slip) in ``patch``.
 
@@ -1059,7 +1071,7 @@ def touched_patch(par, y, rot, reach, velocity_tol, patch):
     return patch[0]
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def _settle(par, y, sc, data, reach, gap_tol, velocity_tol):
     """Lower the body onto the base points a stretch holds above the support; True if any stay.
 
@@ -1096,7 +1108,7 @@ def _settle(par, y, sc, data, reach, gap_tol, velocity_tol):
     return held - max(shift, 0.0) > gap_tol
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def watch_chatter(t, before, event, mode, istate, chatter):
     """Count an EDGE's slip restarts and remedies; start a chatter's stretch at the third.
 
@@ -1116,7 +1128,7 @@ def watch_chatter(t, before, event, mode, istate, chatter):
     return _start_chatter(mode, istate, event)
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _start_chatter(mode, istate, event):
     """Start a chatter's stretch of the remedy; returns the event's kind (a remedy).
 
@@ -1137,7 +1149,7 @@ def _start_chatter(mode, istate, event):
     return EV_REMEDY
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def slip_velocity(par, record, dt, t, y, mode, data, sc):
     """The held patch's slip velocity at (t, y), at its centre of pressure, in ``sc[SC_SVEL]``.
 
@@ -1153,7 +1165,7 @@ def slip_velocity(par, record, dt, t, y, mode, data, sc):
     return math.sqrt(size), n_tangent
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mode, data, sc,
           rest, istate, ev_time, ev_kind, ev_before, ev_after):  # fmt: skip
     """One step of the resting body (:func:`rest_step`) and, where a margin fired, its event.
@@ -1174,7 +1186,7 @@ def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mo
     return t
 
 
-@nb.njit(cache=True, error_model="numpy")
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
 def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol, t, y, mode,
         data, istate, out_t, out_y, out_mode, out_force, ev_time, ev_kind, ev_before,
         ev_after):  # fmt: skip
@@ -1192,6 +1204,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
     start_values = np.zeros(MAX_EVENT_FUNCTIONS)
     values = np.zeros(MAX_EVENT_FUNCTIONS)
     kinds = np.zeros(MAX_EVENT_FUNCTIONS, dtype=np.int64)
+    bracket = np.zeros((3, MAX_EVENT_FUNCTIONS))
     capacity = out_t.shape[0]
     rest = np.zeros((4, 6))
     rest_ready = False
@@ -1257,7 +1270,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         h = min(_next_end(t, breaks, h_max, t_end) - t, closing_step(par, y, mode, sc, ref))
         advance(par, record_, dt, t, h, y, mode, data, sc, k, out, velocity_tol)
         h, which = locate(par, record_, dt, t, h, y, mode, data, sc, k, ref, start_values, count,
-                          trial, values, kinds, out)  # fmt: skip
+                          trial, values, kinds, bracket, out)  # fmt: skip
         t += h
         for i in range(STATE_SIZE):
             y[i] = out[i]
