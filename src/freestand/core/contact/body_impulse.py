@@ -126,21 +126,25 @@ def kinetic_energy(par, inv_inertia, velocity):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=True)
-def point_impulses(par, inv_inertia, arms, count, mu, velocity):
+def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses):
     """Plastic impulses at the points with friction on the circular cone; ``velocity`` (6) updated.
 
     Projected Gauss-Seidel (Jean 1999): per point, the normal impulse that
     brings its normal velocity to zero, kept >= 0; then the tangential impulse
     that stops its sliding, scaled back onto the disc ``|P_t| <= mu P_n``.
-    Returns the impulses (count, 3) [N s] (x, y, n).
+    ``impulses`` (at least count, 3) [N s] (x, y, n): on entry the sweeps'
+    start, applied to the velocity first (zeros, or an admissible guess,
+    ``P_n >= 0`` and ``|P_t| <= mu P_n``, such as the impulses of the step
+    before: the sweeps then start near their end); on exit the impulses.
     """
-    impulses = np.zeros((count, 3))
     delassus = np.empty((count, 3, 3))
-    for p in range(count):
-        _delassus(par, inv_inertia, arms[p], delassus[p])
     scale = 1e-300
     for i in range(6):
         scale = max(scale, abs(velocity[i]))
+    for p in range(count):
+        _delassus(par, inv_inertia, arms[p], delassus[p])
+        _apply(par, inv_inertia, arms[p], impulses[p, 0], impulses[p, 1], impulses[p, 2],
+               velocity)  # fmt: skip
     for _ in range(SWEEPS):
         change = 0.0
         for p in range(count):
@@ -169,23 +173,27 @@ def point_impulses(par, inv_inertia, arms, count, mu, velocity):
             change = max(change, math.hypot(dx, dy) / (par[P_MASS] * scale))
         if change <= SWEEP_TOLERANCE:
             break
-    return impulses
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=True)
-def velocity_impact(par, inv_inertia, arms, count, mu, velocity):
+def velocity_impact(par, inv_inertia, arms, count, mu, velocity, impulses):
     """The velocity after a plastic impact at the points; it never gains energy.
 
-    ``velocity`` (6) is replaced. Returns True when the frictional solution
-    was kept, False when it would have raised the kinetic energy and the
-    frictionless one was taken instead.
+    ``velocity`` (6) is replaced; ``impulses`` (at least count, 3) [N s] holds
+    the sweeps' start on entry and the impulses on exit
+    (:func:`point_impulses`). Returns True when the frictional solution was
+    kept, False when it would have raised the kinetic energy and the
+    frictionless one (from zero) was taken instead.
     """
     before = velocity.copy()
     energy_before = kinetic_energy(par, inv_inertia, before)
-    point_impulses(par, inv_inertia, arms, count, mu, velocity)
+    point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses)
     if kinetic_energy(par, inv_inertia, velocity) <= energy_before * (1.0 + 1e-12):
         return True
     for i in range(6):
         velocity[i] = before[i]
-    point_impulses(par, inv_inertia, arms, count, 0.0, velocity)
+    for p in range(count):
+        for i in range(3):
+            impulses[p, i] = 0.0
+    point_impulses(par, inv_inertia, arms, count, 0.0, velocity, impulses)
     return False

@@ -729,7 +729,8 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
             count = base_points(par, y, rot, data[D_PSI], gap_tol, arms)
             for i in range(6):
                 after[i] = y[7 + i]
-            velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], after)
+            velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], after,
+                            np.zeros((MAX_POINTS, 3)))  # fmt: skip
             istate[I_REMEDIES] += 1
             event = EV_REMEDY
         else:
@@ -766,7 +767,7 @@ def _set_free(mode):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=True)
-def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force):
+def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force, impulses):
     """The remedy's step: one Moreau-Jean step of length h (Jean 1999), in place on ``y``.
 
     The velocity at t + h is the free one (gravity, the support's inertial
@@ -781,7 +782,10 @@ def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force):
     faster than ``STRETCH_IMPACT g h``: an impact, as the events keep their
     impulses out of the recorded force), and the reach [m]: points within it
     of the support took part (a point that closed within the step is held
-    where it stopped, above the support by up to the reach).
+    where it stopped, above the support by up to the reach). ``impulses``
+    (``MAX_POINTS``, 3) [N s]: the step before's impulses at its points, the
+    start of this step's sweeps (zeros at a stretch's first step); replaced
+    by this step's.
     """
     prepare(par, record, dt, t + h, y, FREE, 0, 0.0, sc)
     rot = sc[SC_ROT]
@@ -798,7 +802,7 @@ def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force):
     for p in range(count):
         _, _, uz = cross(velocity[3], velocity[4], velocity[5], arms[p, 0], arms[p, 1], arms[p, 2])
         approach = max(approach, -(velocity[2] + uz))
-    velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], velocity)
+    velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], velocity, impulses)
     for i in range(3):
         y[i] += h * velocity[i]
     _turn(y, velocity[3] * h, velocity[4] * h, velocity[5] * h)
@@ -991,7 +995,8 @@ def _next_end(t, breaks, h_max, t_end):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=True)
-def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, istate, force):
+def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, istate, force,
+             impulses):  # fmt: skip
     """One step of the remedy; it ends where a consistent mode exists again. Returns t + h.
 
     The search for a consistent mode (:func:`select_mode`, whose slip onsets
@@ -1004,7 +1009,9 @@ def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, is
     goes on where the mode found is a slip from rest (its speed within
     ``velocity_tol``): that slip would chatter again.
     """
-    advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force)
+    if istate[I_STRETCH] == 1:
+        impulses[:, :] = 0.0  # a stretch starts its sweeps from zero
+    advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force, impulses)
     hovering = _settle(par, y, sc, data, force[2], gap_tol, velocity_tol)
     istate[I_STRETCH_STEPS] += 1
     steps = istate[I_STRETCH]
@@ -1210,6 +1217,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
     rest_ready = False
     force = np.zeros(3)  # a stretch's mean contact force (normal, |tangential|) [N], reach [m]
     patch = np.zeros(3, dtype=np.int64)  # the patch a stretch's step held
+    impulses = np.zeros((MAX_POINTS, 3))  # a stretch's step's impulses: the next one's start
     chatter = np.array([-math.inf, 0.0])  # the last slip restart's time [s], restarts in a row
     fresh = False  # the step's references and event functions at (t, y) are computed
     count = 0
@@ -1233,7 +1241,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             return t
         if istate[I_STRETCH] >= 1:
             t = _stretch(par, record_, dt, t, min(STRETCH_STEP, t_end - t), y, mode, data, sc,
-                         gap_tol, velocity_tol, istate, force)  # fmt: skip
+                         gap_tol, velocity_tol, istate, force, impulses)  # fmt: skip
             solve_at(par, record_, dt, t, y, mode, data, sc)
             row = istate[I_RECORDS]
             record(t, y, mode, sc, row, out_t, out_y, out_mode, out_force)

@@ -1,0 +1,156 @@
+"""The remedy's velocity-level impact at a body's base points (issue #18).
+
+:func:`freestand.core.contact.body_impulse.velocity_impact` solves the plastic
+impact at the points by over-relaxed projected Gauss-Seidel (Jean 1999;
+Mangasarian 1977). Whatever the body, its tilt and its velocity, the velocity
+after must satisfy the contact laws it solves (Moreau 1988): no point
+approaches the support, a normal impulse only where the point's normal
+velocity vanishes (complementarity), tangential impulses in the circular cone,
+a sticking point at rest and a sliding point's impulse against its slip; and
+the kinetic energy never grows.
+
+Where many points touch together (a cylinder's eight rim points on a flat or
+barely tilted base) and the velocity twists the base, the sweeps can cycle
+instead of converging: a known limit of the remedy, pinned by the last test.
+"""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from freestand.core.body import Body, Box, Cylinder
+from freestand.core.contact.body_impulse import (
+    MAX_POINTS,
+    base_points,
+    kinetic_energy,
+    point_impulses,
+    velocity_impact,
+)
+from freestand.core.contact.body_kernel import (
+    P_MU_KINETIC,
+    body_parameters,
+    rotation_matrix,
+    world_inverse_inertia,
+)
+from freestand.core.model import Friction
+
+# the sweeps stop where an update changes the velocity by less than 1e-12 of its largest
+# component; the laws below hold to the round-off that leaves, some 1e-9 of the speed
+LAW_TOLERANCE = 1e-7
+
+
+def _body(shape, mu):
+    if shape == "box":
+        return Body("box", Box((1.0, 0.6, 2.0)), 400.0, Friction(mu, mu))
+    return Body("cylinder", Cylinder(0.8, 2.5), 3000.0, Friction(mu, mu))
+
+
+def _state(body, tilt, azimuth, velocity):
+    """The body tilted about a horizontal axis, its lowest base point on the support."""
+    y = np.zeros(13)
+    axis = (math.cos(azimuth), math.sin(azimuth))
+    y[3] = math.cos(0.5 * tilt)
+    y[4] = math.sin(0.5 * tilt) * axis[0]
+    y[5] = math.sin(0.5 * tilt) * axis[1]
+    rot = np.empty((3, 3))
+    rotation_matrix(y, rot)
+    y[7:13] = velocity
+    par = body_parameters(body, 9.81)
+    arms = np.zeros((MAX_POINTS, 3))
+    # every base point, then G raised so that the lowest touches the support
+    count = base_points(par, y, rot, 0.0, 1e9, arms)
+    y[2] = -np.min(arms[:count, 2])
+    return par, y, rot
+
+
+def _point_velocities(velocity, arms):
+    return velocity[None, :3] + np.cross(velocity[3:], arms)
+
+
+def _delassus(par, inv, arm):
+    """W (3 x 3): the point's velocity change per unit impulse (x, y, n) at the arm."""
+    columns = []
+    for unit in np.eye(3):
+        change = np.concatenate([unit / par[0], inv @ np.cross(arm, unit)])
+        columns.append(_point_velocities(change, arm[None, :])[0])
+    return np.array(columns).T
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    shape=st.sampled_from(["box", "cylinder"]),
+    mu=st.floats(0.1, 1.0),
+    # a box flat (its four corners) or tilted; a cylinder tilted so that one rim point, or a
+    # few, are within the remedy's reach (the many-point flat base: the last test)
+    tilt=st.floats(0.0, 0.2),
+    azimuth=st.floats(0.0, 2.0 * math.pi),
+    velocity=st.lists(st.floats(-1.0, 1.0), min_size=6, max_size=6),
+)
+def test_the_velocity_after_satisfies_the_contact_laws(shape, mu, tilt, azimuth, velocity):
+    if shape == "cylinder":
+        tilt = max(tilt, 0.01)
+    body = _body(shape, mu)
+    par, y, rot = _state(body, tilt, azimuth, np.array(velocity))
+    inv = np.empty((3, 3))
+    world_inverse_inertia(par, rot, inv)
+    arms = np.zeros((MAX_POINTS, 3))
+    # the points within 2 mm of the support take part, as in a step of the remedy
+    count = base_points(par, y, rot, 0.0, 2e-3, arms)
+    arms = arms[:count]
+    before = np.array(velocity)
+    after = before.copy()
+    impulses = np.zeros((count, 3))
+    point_impulses(par, inv, arms, count, par[P_MU_KINETIC], after, impulses)
+    scale = max(np.max(np.abs(before)), 1e-3) * (1.0 + np.max(np.linalg.norm(arms, axis=1)))
+    tolerance = LAW_TOLERANCE * scale
+    u = _point_velocities(after, arms)
+    normal = impulses[:, 2]
+    tangential = np.linalg.norm(impulses[:, :2], axis=1)
+    impulse_scale = par[0] * scale
+    # no point approaches the support; impulses push, and only where the point stops
+    assert np.all(u[:, 2] >= -tolerance)
+    assert np.all(normal >= 0.0)
+    assert np.all(normal * u[:, 2] <= tolerance * impulse_scale)
+    # the circular cone: |P_t| <= mu P_n
+    assert np.all(tangential <= mu * normal + LAW_TOLERANCE * impulse_scale)
+    for p in range(count):
+        slip = u[p, :2]
+        if tangential[p] < mu * normal[p] - 1e-6 * impulse_scale:
+            # inside the cone: the point sticks
+            assert np.linalg.norm(slip) <= 1e-5 * scale
+        elif np.linalg.norm(slip) > 1e-5 * scale and tangential[p] > 1e-9 * impulse_scale:
+            # on the cone's edge the friction works against the slip, and the impulse is the
+            # one that would stop it (P_t - W_tt^-1 u_t, W the point's Delassus matrix)
+            # scaled back radially onto the disc (Jean 1999)
+            assert impulses[p, :2] @ slip < 0.0
+            w = _delassus(par, inv, arms[p])[:2, :2]
+            stopping = impulses[p, :2] - np.linalg.solve(w, slip)
+            along = stopping @ impulses[p, :2] / tangential[p] ** 2
+            across = abs(stopping[0] * impulses[p, 1] - stopping[1] * impulses[p, 0])
+            across /= tangential[p] ** 2
+            assert along >= 1.0 - 1e-6
+            assert across <= 1e-6 * along
+    # the frictional solution or, where it would gain energy, the frictionless one
+    kept = before.copy()
+    velocity_impact(par, inv, arms, count, par[P_MU_KINETIC], kept, np.zeros((count, 3)))
+    energy_before = kinetic_energy(par, inv, before)
+    assert kinetic_energy(par, inv, kept) <= energy_before * (1.0 + 1e-12) + 1e-300
+
+
+@pytest.mark.xfail(strict=True, reason="the sweeps cycle on a flat cylinder's eight rim points")
+def test_a_flat_cylinders_rim_points_with_twist():
+    """Found by the test above over every tilt: the sweeps settle into a cycle (their change
+    stays at 1e-2 of the speed for thousands of sweeps), and points still approach at 4 cm/s."""
+    body = _body("cylinder", 0.5)
+    velocity = np.array([0.0, 0.5, -1.0, 0.0, 0.0, 0.5])
+    par, y, rot = _state(body, 0.0, 0.0, velocity)
+    inv = np.empty((3, 3))
+    world_inverse_inertia(par, rot, inv)
+    arms = np.zeros((MAX_POINTS, 3))
+    count = base_points(par, y, rot, 0.0, 2e-3, arms)
+    after = velocity.copy()
+    point_impulses(par, inv, arms, count, 0.5, after, np.zeros((count, 3)))
+    assert np.min(_point_velocities(after, arms[:count])[:, 2]) >= -1e-7
