@@ -8,16 +8,11 @@ approaches the support, a normal impulse only where the point's normal
 velocity vanishes (complementarity), tangential impulses in the circular cone,
 a sticking point at rest and a sliding point's impulse against its slip; and
 the kinetic energy never grows.
-
-Where many points touch together (a cylinder's eight rim points on a flat or
-barely tilted base) and the velocity twists the base, the sweeps can cycle
-instead of converging: a known limit of the remedy, pinned by the last test.
 """
 
 import math
 
 import numpy as np
-import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -79,32 +74,47 @@ def _delassus(par, inv, arm):
     return np.array(columns).T
 
 
-@settings(max_examples=200, deadline=None)
-@given(
-    shape=st.sampled_from(["box", "cylinder"]),
-    mu=st.floats(0.1, 1.0),
-    # a box flat (its four corners) or tilted; a cylinder tilted so that one rim point, or a
-    # few, are within the remedy's reach (the many-point flat base: the last test)
-    tilt=st.floats(0.0, 0.2),
-    azimuth=st.floats(0.0, 2.0 * math.pi),
-    velocity=st.lists(st.floats(-1.0, 1.0), min_size=6, max_size=6),
-)
-def test_the_velocity_after_satisfies_the_contact_laws(shape, mu, tilt, azimuth, velocity):
-    if shape == "cylinder":
-        tilt = max(tilt, 0.01)
+def _impact(shape, mu, tilt, azimuth, velocity):
+    """The sweeps at the points within 2 mm of the support, as in a step of the remedy."""
     body = _body(shape, mu)
     par, y, rot = _state(body, tilt, azimuth, np.array(velocity))
     inv = np.empty((3, 3))
     world_inverse_inertia(par, rot, inv)
     arms = np.zeros((MAX_POINTS, 3))
-    # the points within 2 mm of the support take part, as in a step of the remedy
     count = base_points(par, y, rot, 0.0, 2e-3, arms)
     arms = arms[:count]
-    before = np.array(velocity)
-    after = before.copy()
+    after = np.array(velocity)
     impulses = np.zeros((count, 3))
     point_impulses(par, inv, arms, count, par[P_MU_KINETIC], after, impulses)
-    scale = max(np.max(np.abs(before)), 1e-3) * (1.0 + np.max(np.linalg.norm(arms, axis=1)))
+    scale = max(np.max(np.abs(velocity)), 1e-3) * (1.0 + np.max(np.linalg.norm(arms, axis=1)))
+    return par, inv, arms, after, impulses, scale
+
+
+def _energy_not_gained(par, inv, arms, before):
+    # the frictional solution or, where it would gain energy, the frictionless one
+    kept = before.copy()
+    velocity_impact(par, inv, arms, len(arms), par[P_MU_KINETIC], kept, np.zeros((len(arms), 3)))
+    energy_before = kinetic_energy(par, inv, before)
+    return kinetic_energy(par, inv, kept) <= energy_before * (1.0 + 1e-12) + 1e-300
+
+
+VELOCITY = st.lists(st.floats(-1.0, 1.0), min_size=6, max_size=6)
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    shape=st.sampled_from(["box", "cylinder"]),
+    mu=st.floats(0.1, 1.0),
+    # a box flat (its four corners), or barely tilted with them all within reach; a body
+    # tilted onto one point or an edge (a flat cylinder's eight points: the next test)
+    tilt=st.sampled_from([0.0, 1e-4, 1e-3]) | st.floats(0.0, 0.2),
+    azimuth=st.floats(0.0, 2.0 * math.pi),
+    velocity=VELOCITY,
+)
+def test_the_velocity_after_satisfies_the_contact_laws(shape, mu, tilt, azimuth, velocity):
+    if shape == "cylinder":
+        tilt = max(tilt, 0.01)
+    par, inv, arms, after, impulses, scale = _impact(shape, mu, tilt, azimuth, velocity)
     tolerance = LAW_TOLERANCE * scale
     u = _point_velocities(after, arms)
     normal = impulses[:, 2]
@@ -116,7 +126,7 @@ def test_the_velocity_after_satisfies_the_contact_laws(shape, mu, tilt, azimuth,
     assert np.all(normal * u[:, 2] <= tolerance * impulse_scale)
     # the circular cone: |P_t| <= mu P_n
     assert np.all(tangential <= mu * normal + LAW_TOLERANCE * impulse_scale)
-    for p in range(count):
+    for p in range(len(arms)):
         slip = u[p, :2]
         if tangential[p] < mu * normal[p] - 1e-6 * impulse_scale:
             # inside the cone: the point sticks
@@ -133,17 +143,35 @@ def test_the_velocity_after_satisfies_the_contact_laws(shape, mu, tilt, azimuth,
             across /= tangential[p] ** 2
             assert along >= 1.0 - 1e-6
             assert across <= 1e-6 * along
-    # the frictional solution or, where it would gain energy, the frictionless one
-    kept = before.copy()
-    velocity_impact(par, inv, arms, count, par[P_MU_KINETIC], kept, np.zeros((count, 3)))
-    energy_before = kinetic_energy(par, inv, before)
-    assert kinetic_energy(par, inv, kept) <= energy_before * (1.0 + 1e-12) + 1e-300
+    assert _energy_not_gained(par, inv, arms, np.array(velocity))
 
 
-@pytest.mark.xfail(strict=True, reason="the sweeps cycle on a flat cylinder's eight rim points")
+@settings(max_examples=100, deadline=None)
+@given(
+    mu=st.floats(0.1, 1.0),
+    tilt=st.sampled_from([0.0, 1e-4, 1e-3]),
+    azimuth=st.floats(0.0, 2.0 * math.pi),
+    velocity=VELOCITY,
+)
+def test_a_flat_cylinders_eight_rim_points(mu, tilt, azimuth, velocity):
+    """Eight points, all touching: the sweeps converge, slowly where the base twists and
+    tilts with friction near 1 (1000 sweeps leave points approaching at up to 1e-4 of the
+    speed; 20,000 at 5e-12). Sweeping always in one order, they could cycle instead, with
+    points approaching at 0.3 of the speed."""
+    par, inv, arms, after, impulses, scale = _impact("cylinder", mu, tilt, azimuth, velocity)
+    assert len(arms) == MAX_POINTS
+    u = _point_velocities(after, arms)
+    assert np.all(u[:, 2] >= -1e-3 * scale)
+    assert np.all(impulses[:, 2] >= 0.0)
+    tangential = np.linalg.norm(impulses[:, :2], axis=1)
+    assert np.all(tangential <= mu * impulses[:, 2] * (1.0 + 1e-12) + 1e-12 * par[0] * scale)
+    assert _energy_not_gained(par, inv, arms, np.array(velocity))
+
+
 def test_a_flat_cylinders_rim_points_with_twist():
-    """Found by the test above over every tilt: the sweeps settle into a cycle (their change
-    stays at 1e-2 of the speed for thousands of sweeps), and points still approach at 4 cm/s."""
+    """Found by the first test over every tilt: sweeping the points always in the same order, the sweeps
+    settled into a cycle (their change stayed at 1e-2 of the speed for thousands of sweeps)
+    and points still approached the support at 4 cm/s."""
     body = _body("cylinder", 0.5)
     velocity = np.array([0.0, 0.5, -1.0, 0.0, 0.0, 0.5])
     par, y, rot = _state(body, 0.0, 0.0, velocity)
