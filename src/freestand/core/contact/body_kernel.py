@@ -837,7 +837,7 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     index = int(centre[4])
     if kind != FACE and kind != EDGE:
         if kinetic:
-            direction = _slip_direction(y, n_tangent, stored, sc[SC_TANGENT], sc[SC_SVEL],
+            direction = slip_direction(y, n_tangent, stored, sc[SC_TANGENT], sc[SC_SVEL],
                                         sc[SC_DIR])  # fmt: skip
         return solve_mode(par, sc[SC_INV], sc[SC_BASE], use_bias, slip, direction, sc[SC_NORMAL],
                           sc[SC_NBIAS], n_normal, sc[SC_TANGENT], sc[SC_TBIAS], n_tangent,
@@ -850,7 +850,7 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     svel, own = sc[SC_SVEL], sc[SC_DIR]
     for _ in range(CENTRE_ITERATIONS):
         if kinetic:
-            direction = _slip_direction(y, n_tangent, stored, tangent, svel, own)
+            direction = slip_direction(y, n_tangent, stored, tangent, svel, own)
         ok = solve_mode(par, inv, base, use_bias, slip, direction, normal, nbias, n_normal,
                         tangent, tbias, n_tangent, work, matrix, rhs, acc, lam)  # fmt: skip
         if not ok:
@@ -866,8 +866,8 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     return True
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
-def slip_direction(y, n_tangent, data, sc):
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def slip_direction(y, n_tangent, data, tangent, svel, direction):
     """The sliding direction u: the slip velocity's while it points on the stored one's side.
 
     The stored direction (``data[D_SLIP:]``, the slip's direction at the
@@ -877,13 +877,10 @@ def slip_direction(y, n_tangent, data, sc):
     until the slip-stop event is located. Without it the friction flips with
     the velocity inside an RK4 step and the stages cancel: the slip freezes
     at a small constant velocity.
+
+    On the tangential rows ``tangent`` (their velocities written to ``svel``);
+    ``data`` the mode data; u is written to ``direction``, which is returned.
     """
-    return _slip_direction(y, n_tangent, data, sc[SC_TANGENT], sc[SC_SVEL], sc[SC_DIR])
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _slip_direction(y, n_tangent, data, tangent, svel, direction):
-    """:func:`slip_direction` on the scratch's arrays (rows, slip velocity, direction)."""
     tangential_velocity(y, tangent, n_tangent, svel)
     size = 0.0
     along = 0.0
