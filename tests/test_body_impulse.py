@@ -1,8 +1,8 @@
 """The remedy's velocity-level impact at a body's base points (issue #18).
 
 :func:`freestand.core.contact.body_impulse.velocity_impact` solves the plastic
-impact at the points by over-relaxed projected Gauss-Seidel (Jean 1999;
-Mangasarian 1977). Whatever the body, its tilt and its velocity, the velocity
+impact at the points by projected Gauss-Seidel, sweeping forwards and backwards
+in turn (Jean 1999). Whatever the body, its tilt and its velocity, the velocity
 after must satisfy the contact laws it solves (Moreau 1988): no point
 approaches the support, a normal impulse only where the point's normal
 velocity vanishes (complementarity), tangential impulses in the circular cone,
