@@ -69,16 +69,22 @@ loaded at their corners and uniformly (:func:`edges`).
 (f) Example: the example cabinet of ``examples/bodies.toml`` under the
 synthetic record on x and y at two incidence angles (:func:`example`).
 
+(g) Robustness: ``ROBUST_RUNS`` random bodies (boxes and cylinders of random
+size, friction and restitution) under random records of the suite, scaled
+0.5-3: no simulation may end ``failed`` (:func:`robustness`; MuJoCo is not
+needed).
+
     python benchmarks/mujoco_body.py [accuracy] [speed] [profile]
     python benchmarks/mujoco_body.py single | campaign     # one half of (b)
     python benchmarks/mujoco_body.py ensemble              # (d), not in the default run
     python benchmarks/mujoco_body.py edges                 # (e), the cabinet around mu 0.5
     python benchmarks/mujoco_body.py example               # (f), the example cabinet
+    python benchmarks/mujoco_body.py robust                # (g), random bodies, 0 failed
 
 Each check prints PASS or FAIL; the command exits 1 if any failed.
 
-Needs the optional dependency ``mujoco`` (``pip install -e ".[bench]"``);
-without it the script says so and exits.
+Needs the optional dependency ``mujoco`` (``pip install -e ".[bench]"``),
+except for (g); without it the script says so and exits.
 """
 
 from __future__ import annotations
@@ -646,6 +652,65 @@ def _campaign_chunk(tasks: list[tuple[int, tuple[int, int, float]]]) -> list[tup
     return rows
 
 
+# ------------------------------------------------------------------------------ (g)
+ROBUST_RUNS = 600
+ROBUST_DURATION = 12.0  # [s] of each record
+
+
+def robust_case(seed: int) -> tuple[Body, int, float, float]:
+    """Random (body, record index, scale, restitution) of the seed.
+
+    70 % boxes of 0.3-1.5 x 0.3-1.5 x 0.8-3 m, the others cylinders of R 0.2-1 m
+    and H 0.5-4 m; 1 t; static friction 0.2-0.9, kinetic 0.7-1 times it; the
+    record's scale 0.5-3; restitution 1, 0.8 or 0.5.
+    """
+    rng = np.random.default_rng(seed)
+    if rng.random() < 0.7:
+        lx, ly = rng.uniform(0.3, 1.5, 2)
+        shape = Box((float(lx), float(ly), float(rng.uniform(0.8, 3.0))))
+    else:
+        shape = Cylinder(float(rng.uniform(0.2, 1.0)), float(rng.uniform(0.5, 4.0)))
+    mu = float(rng.uniform(0.2, 0.9))
+    body = Body(f"random {seed}", shape, 1000.0, Friction(mu, mu * float(rng.uniform(0.7, 1.0))))
+    record = int(rng.integers(SUITE_COUNT))
+    return body, record, float(rng.uniform(0.5, 3.0)), float(rng.choice([1.0, 0.8, 0.5]))
+
+
+def _robust_chunk(seeds: list[int]) -> list[tuple]:
+    """Run the random cases of the seeds: (seed, status, message, remedies) each."""
+    rows = []
+    for seed in seeds:
+        body, record, scale, restitution = robust_case(seed)
+        motion = scaled(_CAMPAIGN["records"][record], scale)
+        result = simulate_body(body, motion, ROBUST_DURATION, restitution=restitution)
+        rows.append((seed, result.status, result.message, result.diagnostics["remedies"]))
+    return rows
+
+
+def robustness(records: list[SupportMotion3]) -> bool:
+    """(g): ``ROBUST_RUNS`` random bodies on the worker pool; whether none failed."""
+    arrays = [(m.time_step, m.x, m.y, m.vertical) for m in records]
+    chunks = [list(range(i, min(i + 25, ROBUST_RUNS))) for i in range(0, ROBUST_RUNS, 25)]
+    start = time.perf_counter()
+    with ProcessPoolExecutor(WORKERS, initializer=_campaign_init, initargs=(arrays,)) as pool:
+        rows = [row for chunk in pool.map(_robust_chunk, chunks) for row in chunk]
+    statuses = [row[1] for row in rows]
+    failed = [row for row in rows if row[1] == "failed"]
+    print(
+        f"\n(g) robustness: {len(rows)} random bodies (70 % boxes, 30 % cylinders), "
+        f"{ROBUST_DURATION:g} s of a suite record x 0.5-3, restitution 1 / 0.8 / 0.5, "
+        f"{time.perf_counter() - start:.1f} s on {WORKERS} workers"
+    )
+    print(
+        f"  {'PASS' if not failed else 'FAIL'}: {statuses.count('completed')} completed,"
+        f" {statuses.count('overturned')} overturned, {len(failed)} failed;"
+        f" {sum(row[3] > 0 for row in rows)} needed a remedy"
+    )
+    for seed, _, message, _ in failed:
+        print(f"  failed: seed {seed} ({robust_case(seed)[0].shape}): {message}")
+    return not failed
+
+
 SPEED_RATIO_GOAL = 10.0  # freestand against MuJoCo's primitives at 2 ms, one 10 s record (#18)
 CAMPAIGN_GOAL = 60.0  # [s] the 1,000 simulations on this 2-core machine (#18)
 
@@ -869,16 +934,18 @@ def example(_records: list[SupportMotion3]) -> None:
 
 
 def main(sections: list[str]) -> int:
-    if mujoco is None:
-        print("mujoco is not installed (pip install -e '.[bench]'): benchmark skipped")
-        return 0
-    known = ("accuracy", "speed", "single", "campaign", "profile", "ensemble", "edges", "example")
+    known = ("accuracy", "speed", "single", "campaign", "profile", "ensemble", "edges", "example",
+             "robust")  # fmt: skip
     unknown = [name for name in sections if name not in known]
     if unknown:
         print(f"unknown section {', '.join(unknown)}: give any of {', '.join(known)}")
         return 2
     sections = sections or ["accuracy", "speed", "profile"]
-    print(f"mujoco {mujoco.__version__}, numpy {np.__version__}, {os.cpu_count()} cores")
+    if mujoco is None and sections != ["robust"]:
+        print("mujoco is not installed (pip install -e '.[bench]'): benchmark skipped")
+        return 0
+    version = mujoco.__version__ if mujoco is not None else "not installed"
+    print(f"mujoco {version}, numpy {np.__version__}, {os.cpu_count()} cores")
     records, seconds = suite_records()
     print(
         f"suite: {len(records)} three-component records of {SUITE_DURATION:g} s (RG 1.60,"
@@ -898,6 +965,8 @@ def main(sections: list[str]) -> int:
         edges(records)
     if "example" in sections:
         example(records)
+    if "robust" in sections and not robustness(records):
+        status = 1
     return status
 
 
