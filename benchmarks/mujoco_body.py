@@ -628,11 +628,17 @@ def ensemble(records: list[SupportMotion3]) -> bool:
 
 
 # ------------------------------------------------------------------------------ (b)
-_CAMPAIGN: dict = {}
+_WORKER: dict = {}  # the suite's records in a worker process of the pool
 
 
-def _campaign_init(records: list[tuple]) -> None:
-    _CAMPAIGN["records"] = [SupportMotion3(*r) for r in records]
+def _worker_init(records: list[tuple]) -> None:
+    _WORKER["records"] = [SupportMotion3(*r) for r in records]
+
+
+def _worker_pool(records: list[SupportMotion3]) -> ProcessPoolExecutor:
+    """``WORKERS`` processes, each holding the suite's records (``_WORKER``)."""
+    arrays = [(m.time_step, m.x, m.y, m.vertical) for m in records]
+    return ProcessPoolExecutor(WORKERS, initializer=_worker_init, initargs=(arrays,))
 
 
 def _campaign_chunk(tasks: list[tuple[int, tuple[int, int, float]]]) -> list[tuple]:
@@ -644,7 +650,7 @@ def _campaign_chunk(tasks: list[tuple[int, tuple[int, int, float]]]) -> list[tup
     rows = []
     for task, (b, r, level) in tasks:
         start, cpu = time.perf_counter(), time.process_time()
-        motion = scaled(_CAMPAIGN["records"][r], level)
+        motion = scaled(_WORKER["records"][r], level)
         result = simulate_body(CASES[b].body, motion, SUITE_DURATION)
         rows.append((task, result.status, result.max_rotation, result.max_slide,
                      result.max_twist, time.perf_counter() - start,
@@ -681,7 +687,7 @@ def _robust_chunk(seeds: list[int]) -> list[tuple]:
     rows = []
     for seed in seeds:
         body, record, scale, restitution = robust_case(seed)
-        motion = scaled(_CAMPAIGN["records"][record], scale)
+        motion = scaled(_WORKER["records"][record], scale)
         result = simulate_body(body, motion, ROBUST_DURATION, restitution=restitution)
         rows.append((seed, result.status, result.message, result.diagnostics["remedies"]))
     return rows
@@ -689,10 +695,9 @@ def _robust_chunk(seeds: list[int]) -> list[tuple]:
 
 def robustness(records: list[SupportMotion3]) -> bool:
     """(g): ``ROBUST_RUNS`` random bodies on the worker pool; whether none failed."""
-    arrays = [(m.time_step, m.x, m.y, m.vertical) for m in records]
     chunks = [list(range(i, min(i + 25, ROBUST_RUNS))) for i in range(0, ROBUST_RUNS, 25)]
     start = time.perf_counter()
-    with ProcessPoolExecutor(WORKERS, initializer=_campaign_init, initargs=(arrays,)) as pool:
+    with _worker_pool(records) as pool:
         rows = [row for chunk in pool.map(_robust_chunk, chunks) for row in chunk]
     statuses = [row[1] for row in rows]
     failed = [row for row in rows if row[1] == "failed"]
@@ -761,9 +766,8 @@ def campaign(records: list[SupportMotion3], mujoco_10s: dict[str, float] | None 
              for level in CAMPAIGN_LEVELS]  # fmt: skip
     numbered = list(enumerate(tasks))
     chunks = [numbered[i : i + 25] for i in range(0, len(numbered), 25)]
-    arrays = [(m.time_step, m.x, m.y, m.vertical) for m in records]
     start = time.perf_counter()
-    with ProcessPoolExecutor(WORKERS, initializer=_campaign_init, initargs=(arrays,)) as pool:
+    with _worker_pool(records) as pool:
         list(pool.map(_campaign_chunk, [[]] * WORKERS))  # workers up, numba's cache loaded
         ready = time.perf_counter()
         rows = [row for chunk in pool.map(_campaign_chunk, chunks) for row in chunk]
