@@ -6,19 +6,22 @@ in turn (Jean 1999). Whatever the body, its tilt and its velocity, the velocity
 after must satisfy the contact laws it solves (Moreau 1988): no point
 approaches the support, a normal impulse only where the point's normal
 velocity vanishes (complementarity), tangential impulses in the circular cone,
-a sticking point at rest and a sliding point's impulse against its slip; and
-the kinetic energy never grows.
+a sticking point at rest and a sliding point's friction opposite its slip
+(Coulomb's law, not merely against it); and the kinetic energy never grows.
 """
 
 import math
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact.body_impulse import (
+    ENDED_POLISHED,
     MAX_POINTS,
+    POLISH_TOLERANCE,
     base_points,
     kinetic_energy,
     point_impulses,
@@ -74,8 +77,10 @@ def _delassus(par, inv, arm):
     return np.array(columns).T
 
 
-def _impact(shape, mu, tilt, azimuth, velocity):
-    """The sweeps at the points within 2 mm of the support, as in a step of the remedy."""
+def _impact(shape, mu, tilt, azimuth, velocity, ending=None):
+    """The sweeps at the points within 2 mm of the support, as in a step of the remedy.
+
+    ``ending``, where given, is a list that receives how the sweeps ended."""
     body = _body(shape, mu)
     par, y, rot = _state(body, tilt, azimuth, np.array(velocity))
     inv = np.empty((3, 3))
@@ -85,7 +90,9 @@ def _impact(shape, mu, tilt, azimuth, velocity):
     arms = arms[:count]
     after = np.array(velocity)
     impulses = np.zeros((count, 3))
-    point_impulses(par, inv, arms, count, par[P_MU_KINETIC], after, impulses)
+    sweeps, how = point_impulses(par, inv, arms, count, par[P_MU_KINETIC], after, impulses)
+    if ending is not None:
+        ending.append(how)
     scale = max(np.max(np.abs(velocity)), 1e-3) * (1.0 + np.max(np.linalg.norm(arms, axis=1)))
     return par, inv, arms, after, impulses, scale
 
@@ -101,19 +108,7 @@ def _energy_not_gained(par, inv, arms, before):
 VELOCITY = st.lists(st.floats(-1.0, 1.0), min_size=6, max_size=6)
 
 
-@settings(max_examples=200, deadline=None)
-@given(
-    shape=st.sampled_from(["box", "cylinder"]),
-    mu=st.floats(0.1, 1.0),
-    # a box flat (its four corners), or barely tilted with them all within reach; a body
-    # tilted onto one point or an edge (a flat cylinder's eight points: the next test)
-    tilt=st.sampled_from([0.0, 1e-4, 1e-3]) | st.floats(0.0, 0.2),
-    azimuth=st.floats(0.0, 2.0 * math.pi),
-    velocity=VELOCITY,
-)
-def test_the_velocity_after_satisfies_the_contact_laws(shape, mu, tilt, azimuth, velocity):
-    if shape == "cylinder":
-        tilt = max(tilt, 0.01)
+def _assert_contact_laws(shape, mu, tilt, azimuth, velocity):
     par, inv, arms, after, impulses, scale = _impact(shape, mu, tilt, azimuth, velocity)
     tolerance = LAW_TOLERANCE * scale
     u = _point_velocities(after, arms)
@@ -131,19 +126,29 @@ def test_the_velocity_after_satisfies_the_contact_laws(shape, mu, tilt, azimuth,
         if tangential[p] < mu * normal[p] - 1e-6 * impulse_scale:
             # inside the cone: the point sticks
             assert np.linalg.norm(slip) <= 1e-5 * scale
-        elif np.linalg.norm(slip) > 1e-5 * scale and tangential[p] > 1e-9 * impulse_scale:
-            # on the cone's edge the friction works against the slip, and the impulse is the
-            # one that would stop it (P_t - W_tt^-1 u_t, W the point's Delassus matrix)
-            # scaled back radially onto the disc (Jean 1999)
-            assert impulses[p, :2] @ slip < 0.0
-            w = _delassus(par, inv, arms[p])[:2, :2]
-            stopping = impulses[p, :2] - np.linalg.solve(w, slip)
-            along = stopping @ impulses[p, :2] / tangential[p] ** 2
-            across = abs(stopping[0] * impulses[p, 1] - stopping[1] * impulses[p, 0])
-            across /= tangential[p] ** 2
-            assert along >= 1.0 - 1e-6
-            assert across <= 1e-6 * along
+        elif np.linalg.norm(slip) > 1e-5 * scale:
+            # on the cone's edge the friction is opposite the slip: Coulomb's law,
+            # P_t = -mu P_n u_t / |u_t| (maximum dissipation), not merely against it
+            opposite = -mu * normal[p] * slip / np.linalg.norm(slip)
+            assert np.linalg.norm(impulses[p, :2] - opposite) <= 1e-6 * impulse_scale
     assert _energy_not_gained(par, inv, arms, np.array(velocity))
+    return arms
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    shape=st.sampled_from(["box", "cylinder"]),
+    mu=st.floats(0.1, 1.0),
+    # a box flat (its four corners), or barely tilted with them all within reach; a body
+    # tilted onto one point or an edge (a flat cylinder's eight points: the next test)
+    tilt=st.sampled_from([0.0, 1e-4, 1e-3]) | st.floats(0.0, 0.2),
+    azimuth=st.floats(0.0, 2.0 * math.pi),
+    velocity=VELOCITY,
+)
+def test_the_velocity_after_satisfies_the_contact_laws(shape, mu, tilt, azimuth, velocity):
+    if shape == "cylinder":
+        tilt = max(tilt, 0.01)
+    _assert_contact_laws(shape, mu, tilt, azimuth, velocity)
 
 
 @settings(max_examples=100, deadline=None)
@@ -154,10 +159,11 @@ def test_the_velocity_after_satisfies_the_contact_laws(shape, mu, tilt, azimuth,
     velocity=VELOCITY,
 )
 def test_a_flat_cylinders_eight_rim_points(mu, tilt, azimuth, velocity):
-    """Eight points, all touching: the sweeps converge, slowly where the base twists and
-    tilts with friction near 1 (1000 sweeps leave points approaching at up to 1e-4 of the
-    speed; 20,000 at 5e-12). Sweeping always in one order, they could cycle instead, with
-    points approaching at 0.3 of the speed."""
+    """Eight points, all touching: the sweeps alone converge slowly where the base twists and
+    tilts with friction near 1 (1000 sweeps left points approaching at up to 1e-4 of the
+    speed). The polish meets the laws to 1e-10 in nearly every case (12,000 random impacts:
+    all but one), but where the load rests on three of the eight points, sliding, it can
+    stall, and the sweeps' own approach (at most 1e-4 of the speed) remains."""
     par, inv, arms, after, impulses, scale = _impact("cylinder", mu, tilt, azimuth, velocity)
     assert len(arms) == MAX_POINTS
     u = _point_velocities(after, arms)
@@ -182,3 +188,41 @@ def test_a_flat_cylinders_rim_points_with_twist():
     after = velocity.copy()
     point_impulses(par, inv, arms, count, 0.5, after, np.zeros((count, 3)))
     assert np.min(_point_velocities(after, arms[:count])[:, 2]) >= -1e-7
+
+
+def test_an_edges_two_corners_with_one_sliding():
+    """Found by the first test: a box on an edge, one corner sticking and the other sliding.
+    The x impulses can move between the two corners without moving the body (W is singular
+    along their difference), and the sweeps alone approach the solution by 1 % per sweep:
+    after 1000 a corner still approached the support at 2.4e-6 m/s. The polish (a
+    semi-smooth Newton method from the sweeps' impulses) meets the laws exactly."""
+    velocity = [0.0, 0.71875, -0.59375, 0.875, 0.046875, 0.5]
+    ending = []
+    par, inv, arms, after, impulses, scale = _impact(
+        "box", 0.828125, 0.015625, 0.0, velocity, ending
+    )
+    assert len(arms) == 2
+    assert ending == [ENDED_POLISHED]
+    u = _point_velocities(after, arms)
+    # to the polish's tolerance, 1e-10 of the speed (the sweeps alone leave 1e-6)
+    assert np.all(np.abs(u[:, 2]) <= POLISH_TOLERANCE * scale)
+    assert np.linalg.norm(u[0]) <= POLISH_TOLERANCE * scale  # the first corner sticks
+    slip = u[1, :2]
+    assert np.linalg.norm(slip) > 1e-4  # the second slides, with friction opposite its slip
+    opposite = -0.828125 * impulses[1, 2] * slip / np.linalg.norm(slip)
+    assert np.allclose(impulses[1, :2], opposite, rtol=0.0, atol=1e-9 * par[0] * scale)
+
+
+@pytest.mark.parametrize(
+    "tilt, azimuth, velocity",
+    [
+        (0.001, 0.0, [-0.625, 0.875, -0.75, 0.875, -0.125, 0.125]),
+        (0.0, 0.5 * math.pi, [0.25, -1.0, -0.125, -0.5, 0.625, 0.625]),
+    ],
+)
+def test_an_edge_whose_sticking_corner_the_sweeps_keep_on_the_cone(tilt, azimuth, velocity):
+    """Found by a search over a million random impacts: a box with friction 1 touching on an
+    edge, one corner sticking just inside the cone (0.6 % from its edge) and one sliding.
+    For 1000 sweeps the sticking corner stays on the cone's edge, sliding, and the Newton
+    polish started there finds no solution; it finds it after some 1300 sweeps."""
+    _assert_contact_laws("box", 1.0, tilt, azimuth, velocity)
