@@ -76,8 +76,11 @@ def _released(shape, mu, ratio, tilt, duration=3.0):
 # rim point's swing, and its base went 2e-6 m into the support), a slender cylinder
 # whose lean, predicted to pass 8e-8 from the vertical, passed at 1e-6 (a step over the
 # swing: 20 times its energy and a false overturn), one whose lean whirled within
-# PIVOT_LEAN about a rim point no longer the lowest (0.3 J gained), and one that rocked
-# back within a step of landing (a landing function starting at round-off below zero).
+# PIVOT_LEAN about a rim point no longer the lowest (0.3 J gained), one that rocked
+# back within a step of landing (a landing function starting at round-off below zero),
+# and a box sliding and twisting flat on its face whose slip, at a slip-stop 0.1 mm/s
+# from rest, went on under way but was settled to rest on the face's centre of pressure:
+# its kinetic friction then pushed the body at rest and fed it 1.06 J.
 RELEASED_CASES = [
     (Box((0.5279, 0.9853, 1.2121)), 0.41, 0.85, (-0.0659, -0.0044)),
     (Box((1.4753, 0.6036, 1.8869)), 0.205, 0.779, (-0.0236, -0.1182)),
@@ -98,6 +101,7 @@ RELEASED_CASES = [
         0.9046937856068995,
         (0.02329066743305719, -0.02329066743305719),
     ),  # fmt: skip
+    (Box((1.484375, 1.0, 2.5)), 0.25, 1.0, (0.0625, 0.125)),
 ]
 
 

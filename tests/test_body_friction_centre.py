@@ -103,7 +103,7 @@ def _stick_at_rest(body, acceleration, direction):
     sc = bk.new_scratch()
     mode = np.array([bk.FACE, 0, 0], dtype=np.int64)
     ok, n_normal, n_tangent = bk.solve_at(par, record, 1.0, 0.0, initial_state(body), mode,
-                                          np.zeros(4), sc)  # fmt: skip
+                                          np.zeros(bk.DATA_SIZE), sc)  # fmt: skip
     assert ok
     margin = bk.friction_margin(par, n_normal, n_tangent, sc[bk.SC_LAM])
     return margin, sc[bk.SC_LAM].copy(), sc[bk.SC_CENTRE].copy()
@@ -153,7 +153,7 @@ def test_a_body_sliding_flat_gets_no_twist_from_its_friction(gx, gy, slide, push
     y[7], y[8] = 0.2 * math.cos(slide), 0.2 * math.sin(slide)
     sc = bk.new_scratch()
     mode = np.array([bk.FACE, 0, 1], dtype=np.int64)
-    data = np.zeros(4)
+    data = np.zeros(bk.DATA_SIZE)
     data[1], data[2] = math.cos(slide), math.sin(slide)
     ok, _, _ = bk.solve_at(par, record, 1.0, 0.0, y, mode, data, sc)
     assert ok

@@ -43,7 +43,7 @@ def select(excluded_kind: int, scratch) -> np.ndarray:
     excluded = np.array([excluded_kind, 0, 2], dtype=np.int64)
     chosen = body_modes.select_mode(
         par, np.ascontiguousarray(data["record"]), float(data["dt"]), float(data["t"]),
-        np.array(data["y"]), scratch, GAP, VELOCITY, mode, np.zeros(4), excluded,
+        np.array(data["y"]), scratch, GAP, VELOCITY, mode, np.zeros(body_kernel.DATA_SIZE), excluded,
     )  # fmt: skip
     assert chosen != body_modes.NONE_ADMISSIBLE
     return mode

@@ -115,9 +115,12 @@ PATCH_NAMES = ("free", "point", "edge", "face")
 M_KIND = 0
 M_INDEX = 1
 M_SLIP = 2  # 0 stick, 1 slip
-# mode data (float64, 4): rim angle psi of a cylinder's pivot [rad], slip direction (3)
+# mode data (float64, DATA_SIZE): rim angle psi of a cylinder's pivot [rad], slip direction
+# (3), and 1.0 where the slip starts from rest (its onset direction; 0.0 for a slip under way)
 D_PSI = 0
 D_SLIP = 1
+D_ONSET = 4
+DATA_SIZE = 5
 
 STATE_SIZE = 13  # r (3), q (4), v (3), omega (3)
 

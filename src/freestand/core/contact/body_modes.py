@@ -38,8 +38,10 @@ import numba as nb
 import numpy as np
 
 from freestand.core.contact.body_kernel import (
+    D_ONSET,
     D_PSI,
     D_SLIP,
+    DATA_SIZE,
     EDGE,
     FACE,
     FREE,
@@ -405,6 +407,10 @@ def _restart(start, direction):
 def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, scales, data):
     """Solve a candidate mode and test it; True when admissible (its u and psi in ``data``).
 
+    ``data[D_ONSET]`` is 1.0 where the mode slips from rest (its speed within
+    ``velocity_tol``: the onset direction of :func:`_slip_onset`) and 0.0
+    otherwise, a slip under way following its own velocity.
+
     ``scales`` = (force, rate) tolerances of the admissibility tests [N or N s,
     m/s^2 or m/s]. The candidate's rows are built here; ``sc`` must hold the
     rotation, inverse inertia and base of the instant.
@@ -419,6 +425,7 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
     speed = math.sqrt(speed)
     direction = sc[SC_DIR]
     force_tol, rate_tol = scales[0], scales[1]
+    onset = not (level == ACCELERATION and speed > velocity_tol)  # a slip from rest
     if kind != FREE and slip == 0:
         if level == ACCELERATION and speed > velocity_tol:
             return False
@@ -429,7 +436,7 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
     elif kind != FREE:
         if level == ACCELERATION and speed > velocity_tol:
             # kinetic: along the slip velocity at the centre of pressure
-            stored = np.zeros(4)
+            stored = np.zeros(DATA_SIZE)
             for k in range(n_tangent):
                 stored[D_SLIP + k] = svel[k] / speed
             if not solve_patch(par, y, sc, True, 1, direction, True, stored, n_normal, n_tangent):
@@ -465,6 +472,7 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
     data[D_PSI] = psi
     for k in range(3):
         data[D_SLIP + k] = direction[k] if (slip == 1 and k < n_tangent) else 0.0
+    data[D_ONSET] = 1.0 if (kind != FREE and slip == 1 and onset) else 0.0
     return True
 
 

@@ -52,6 +52,7 @@ import numpy as np
 
 from freestand.core.body import Body, Box, base_ray_distance
 from freestand.core.contact.body_kernel import (
+    DATA_SIZE,
     EDGE,
     M_KIND,
     M_SLIP,
@@ -218,7 +219,7 @@ def sliding_pivot(body: Body, horizontal: float, direction: float, vertical: flo
     record[2, :] = vertical
     y = initial_state(body)  # flat on the support, at rest
     mode = np.zeros(3, dtype=np.int64)
-    data = np.zeros(4)
+    data = np.zeros(DATA_SIZE)
     scratch = new_scratch()
     none = np.array([-1, 0, 0], dtype=np.int64)
     chosen = select_mode(par, record, 1.0, 0.0, y, scratch, tolerances.gap, tolerances.velocity,

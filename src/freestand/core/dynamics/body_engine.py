@@ -41,6 +41,7 @@ import numpy as np
 
 from freestand.core.contact.body_impulse import MAX_POINTS, base_points, velocity_impact
 from freestand.core.contact.body_kernel import (
+    D_ONSET,
     D_PSI,
     D_SLIP,
     EDGE,
@@ -634,10 +635,14 @@ def _flatten(par, y, rot, d):
 def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     """Remove the drift of the held rows: positions on the support, their velocities zero.
 
-    A slip starting from rest (its speed within ``settle_below`` [m/s], the
-    event's velocity tolerance) has its residual slip velocity removed too:
-    the residual's direction is round-off, and the kinetic friction would
-    follow it rather than the onset's direction until the slip has grown.
+    A slip starting from rest (``data[D_ONSET]``, the mode's choice; its
+    speed within ``settle_below`` [m/s], the event's velocity tolerance) has
+    its residual slip velocity removed too: the residual's direction is
+    round-off, and the kinetic friction would follow it rather than the
+    onset's direction until the slip has grown. A slip under way is never
+    settled, however slow on the held rows: at rest in its own, kinetic
+    direction, where static friction would hold, its friction would push
+    the body and feed it energy.
 
     FACE: the tilt is removed (a pure yaw) and the base set on the support;
     EDGE and POINT: the centre of gravity shifted vertically by the held
@@ -670,7 +675,7 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     for i in range(6):
         base[i] = y[7 + i]
     held_tangent = n_tangent if mode[M_SLIP] == 0 else 0
-    if held_tangent == 0 and settle_below > 0.0:
+    if held_tangent == 0 and settle_below > 0.0 and data[D_ONSET] == 1.0:
         svel = sc[SC_SVEL]
         tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
         speed = 0.0

@@ -15,6 +15,7 @@ import numpy as np
 
 from freestand.core.body import Body, Box
 from freestand.core.contact.body_kernel import (
+    DATA_SIZE,
     FACE,
     FREE,
     PIVOT_LEAN,
@@ -304,7 +305,7 @@ def simulate_body(
     breaks = _breaks(motion)
     y = initial_state(body) if initial is None else np.array(initial, dtype=float)
     mode = np.zeros(3, dtype=np.int64)
-    data = np.zeros(4)
+    data = np.zeros(DATA_SIZE)
     istate = np.zeros(engine.I_SIZE, dtype=np.int64)
     # a step ends at max_step, at every break of the record and at every event
     capacity = int(end / step * 1.1) + 2 * int(np.count_nonzero(breaks < end)) + 64

@@ -63,6 +63,7 @@ import numpy as np
 
 from freestand.core.body import Body, Box, base_ray_distance
 from freestand.core.contact.body_kernel import (
+    DATA_SIZE,
     P_MASS,
     STATE_SIZE,
     body_parameters,
@@ -405,7 +406,7 @@ def _pulse_outcome(context, amplitude):
     breaks = np.arange(1, unit.shape[0]) * dt
     y = rest.copy()
     mode = np.zeros(3, dtype=np.int64)
-    data = np.zeros(4)
+    data = np.zeros(DATA_SIZE)
     istate = np.zeros(engine.I_SIZE, dtype=np.int64)
     buffers = (np.zeros(_BUFFER), np.zeros((_BUFFER, STATE_SIZE)),
                np.zeros((_BUFFER, 3), dtype=np.int64), np.zeros((_BUFFER, 2)))  # fmt: skip
