@@ -43,6 +43,19 @@ REGULARISATION = 1e-13  # of the Newton step's normal equations, relative to the
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
+def largest_tangential_eigenvalue(w):
+    """The larger eigenvalue of a point's symmetric 2 x 2 tangential block W_tt [1/kg].
+
+    ``w``: the point's Delassus block (its first two rows and columns are
+    the tangential ones). One over it is the scalar step ``rho_t`` of the
+    sweeps and of Alart and Curnier's function.
+    """
+    half_trace = 0.5 * (w[0, 0] + w[1, 1])
+    half_difference = 0.5 * (w[0, 0] - w[1, 1])
+    return half_trace + math.hypot(half_difference, 0.5 * (w[0, 1] + w[1, 0]))
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _point_function(p, mu, rho_n, rho_t, delassus, impulses, speeds, residual, jacobian):
     """The point's three rows of F and of its generalised Jacobian dF/dP."""
     n3 = impulses.shape[0]
@@ -184,10 +197,7 @@ def solve_alart_curnier(count, mu, delassus, free, impulses, velocity_tolerance,
     for p in range(count):
         r = 3 * p
         rho_n[p] = 1.0 / delassus[r + 2, r + 2]
-        half_trace = 0.5 * (delassus[r, r] + delassus[r + 1, r + 1])
-        half_difference = 0.5 * (delassus[r, r] - delassus[r + 1, r + 1])
-        coupling = 0.5 * (delassus[r, r + 1] + delassus[r + 1, r])
-        rho_t[p] = 1.0 / (half_trace + math.hypot(half_difference, coupling))
+        rho_t[p] = 1.0 / largest_tangential_eigenvalue(delassus[r : r + 2, r : r + 2])
     residual = np.empty(n3)
     jacobian = np.empty((n3, n3))
     trial = np.empty(n3)

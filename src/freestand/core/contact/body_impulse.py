@@ -47,7 +47,7 @@ import math
 import numba as nb
 import numpy as np
 
-from freestand.core.contact.alart_curnier import solve_alart_curnier
+from freestand.core.contact.alart_curnier import largest_tangential_eigenvalue, solve_alart_curnier
 from freestand.core.contact.body_kernel import (
     P_HALF_X,
     P_MASS,
@@ -146,14 +146,6 @@ def kinetic_energy(par, inv_inertia, velocity):
         for j in range(3):
             rotational += velocity[3 + i] * inertia[i, j] * velocity[3 + j]
     return 0.5 * m * (velocity[0] ** 2 + velocity[1] ** 2 + velocity[2] ** 2) + 0.5 * rotational
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _largest_tangential_eigenvalue(w):
-    """The larger eigenvalue of the point's symmetric 2 x 2 tangential block W_tt [1/kg]."""
-    half_trace = 0.5 * (w[0, 0] + w[1, 1])
-    half_difference = 0.5 * (w[0, 0] - w[1, 1])
-    return half_trace + math.hypot(half_difference, 0.5 * (w[0, 1] + w[1, 0]))
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -273,7 +265,7 @@ def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses):
         scale = max(scale, abs(velocity[i]))
     for p in range(count):
         _delassus(par, inv_inertia, arms[p], delassus[p])
-        stiffness[p] = _largest_tangential_eigenvalue(delassus[p])
+        stiffness[p] = largest_tangential_eigenvalue(delassus[p])
         _apply(par, inv_inertia, arms[p], impulses[p, 0], impulses[p, 1], impulses[p, 2],
                velocity)  # fmt: skip
     for sweep in range(SWEEPS):
