@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from freestand.core.contact.modes import Tangential, solve_contact
@@ -21,7 +21,7 @@ from freestand.core.dynamics.timehistory import (
     stack_kinematics,
 )
 from freestand.core.model import Block, Friction, Sliding, Stack
-from tests.strategies import stacks
+from tests.strategies import friction_clear_of_the_tolerance, stacks
 
 G = 9.81
 _CODES = {Sliding.FREE: 0, Sliding.NONE: 1, Sliding.NO_RIGHT: 2, Sliding.NO_LEFT: 3}
@@ -87,6 +87,7 @@ def compiled_solve(stack: Stack, q, qd, inertial: float, vertical: float):
 def test_compiled_contact_solve_agrees_with_the_numpy_oracle(stack, seed, inertial, vertical):
     # random states near rest (contacts touching, small velocities) so that every kind of
     # mode (closed, open, kinetic, starting slides) appears
+    assume(friction_clear_of_the_tolerance(stack))  # an exact tie: see the helper
     rng = np.random.default_rng(seed)
     n = 3 * len(stack.blocks)
     q = rng.normal(size=n) * np.tile([1e-9, 1e-9, 1e-9], n // 3)
