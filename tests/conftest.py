@@ -1,4 +1,4 @@
-"""Shared fixtures: the crane example and the console script."""
+"""Shared fixtures: the crane example and the console script; hypothesis's settings."""
 
 from __future__ import annotations
 
@@ -9,6 +9,13 @@ import sys
 from pathlib import Path
 
 import pytest
+from hypothesis import settings
+
+# Tests never assert wall-clock times, and hypothesis's per-example deadline (200 ms by
+# default) is one: on the 2-core machine running two test workers a fast property test
+# (tests/test_sampling.py, under load) exceeded it. No deadline, for every property test.
+settings.register_profile("freestand", deadline=None)
+settings.load_profile("freestand")
 
 ROOT = Path(__file__).resolve().parents[1]
 CRANE = ROOT / "examples" / "crane.toml"
