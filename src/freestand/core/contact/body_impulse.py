@@ -189,7 +189,7 @@ def _sweep(par, inv_inertia, arms, count, mu, delassus, stiffness, velocity, imp
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=True)
-def polish(par, inv_inertia, arms, count, mu, start, impulses, velocity):
+def polish(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale):
     """The exact impulses from the sweeps', taken where they obey the laws.
 
     The points' Delassus matrix W (3n x 3n) and velocities before (from
@@ -197,14 +197,11 @@ def polish(par, inv_inertia, arms, count, mu, start, impulses, velocity):
     solved exactly from the sweeps' impulses by a semi-smooth Newton method
     (:func:`freestand.core.contact.alart_curnier.solve_alart_curnier`). Where the
     solution obeys every law to ``POLISH_TOLERANCE`` of the speed (and of
-    m times it for impulses), it replaces ``impulses`` and ``velocity`` and
-    True is returned; otherwise both are left as they are and False is
-    returned.
+    m times it for impulses; ``scale`` [m/s] the largest component of
+    ``start``), it replaces ``impulses`` and ``velocity`` and True is
+    returned; otherwise both are left as they are and False is returned.
     """
     n3 = 3 * count
-    scale = 1e-300
-    for i in range(6):
-        scale = max(scale, abs(start[i]))
     # the body's velocity change per unit impulse (rows), the points' velocities per impulse
     columns = np.zeros((n3, 6))
     delassus = np.empty((n3, n3))
@@ -274,7 +271,7 @@ def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses):
         if change <= SWEEP_TOLERANCE:
             return sweep + 1, ENDED_CONVERGED
         if sweep >= POLISH_FROM and (sweep & (sweep + 1)) == 0:
-            if polish(par, inv_inertia, arms, count, mu, start, impulses, velocity):
+            if polish(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale):
                 return sweep + 1, ENDED_POLISHED
     return SWEEPS, ENDED_EXHAUSTED
 

@@ -425,16 +425,16 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
     speed = math.sqrt(speed)
     direction = sc[SC_DIR]
     force_tol, rate_tol = scales[0], scales[1]
-    onset = not (level == ACCELERATION and speed > velocity_tol)  # a slip from rest
+    onset = not (level == ACCELERATION and speed > velocity_tol)  # at rest: a slip from rest
     if kind != FREE and slip == 0:
-        if level == ACCELERATION and speed > velocity_tol:
+        if not onset:
             return False
         if not _solve(par, y, sc, level, 0, direction, n_normal, n_tangent):
             return False
         if friction_margin(par, n_normal, n_tangent, sc[SC_LAM]) < -force_tol:
             return False
     elif kind != FREE:
-        if level == ACCELERATION and speed > velocity_tol:
+        if not onset:
             # kinetic: along the slip velocity at the centre of pressure
             stored = np.zeros(DATA_SIZE)
             for k in range(n_tangent):
