@@ -132,7 +132,9 @@ STRETCH_CHECK = 16  # a stretch looks for a consistent mode at its steps 1, 2, 4
 STRETCH_IMPACT = 10.0  # a stretch's point approaching faster than this times g h lands [-]
 CHATTER_WINDOW = 1e-3  # [s] slip restarts or remedies closer than this in time are a chatter
 CHATTER_COUNT = 3  # this many in a row start a chatter stretch of the remedy
+FACE_CHATTER_WINDOW = 1e-6  # [s] a FACE's slip restarts closer than this in time are a chatter
 MIN_STEP = 1e-9  # [s] the smallest step the closing prediction may ask for
+FLAT_ROUND_OFF = 1e-13  # [m, m/s, rad/s, -] a sliding flat base's drift left to round-off
 
 # event kinds
 EV_START = 0
@@ -234,18 +236,16 @@ def references(par, record, dt, t, y, mode, data, sc, ref):
 
     The slip direction is the slip velocity's at the held patch's centre of
     pressure at (t, y), or the stored one while the slip is slower than
-    ``SLIP_FLOOR``.
+    ``SLIP_FLOOR``. Returns the normal and tangential rows of the slip's
+    solve where the scratch holds the held mode solved at (t, y) as with
+    the references stored (the slip's own direction kept its side of the
+    stored one, which the solve then did not read: :func:`slip_direction`),
+    else (0, -1).
     """
     rot = sc[SC_ROT]
     rotation_matrix(y, rot)
     for i in range(5):
         ref[i] = 0.0
-    if mode[M_SLIP] == 1:
-        size, n_tangent = slip_velocity(par, record, dt, t, y, mode, data, sc)
-        svel = sc[SC_SVEL]
-        for i in range(n_tangent):
-            ref[i] = svel[i] / size if size > SLIP_FLOOR else data[D_SLIP + i]
-            data[D_SLIP + i] = ref[i]
     if mode[M_KIND] == POINT and par[P_SHAPE] != SHAPE_BOX:
         # the step's pivot: the lowest rim point (kept on its side within the step)
         psi = lowest_rim_angle(rot, data[D_PSI])
@@ -261,12 +261,40 @@ def references(par, record, dt, t, y, mode, data, sc, ref):
         size = math.hypot(px, py)
         ref[3] = px / size
         ref[4] = py / size
+    if mode[M_SLIP] == 0:
+        return 0, -1
+    size, n_normal, n_tangent = slip_velocity(par, record, dt, t, y, mode, data, sc)
+    svel = sc[SC_SVEL]
+    along = 0.0
+    for i in range(n_tangent):
+        along += svel[i] * data[D_SLIP + i]
+        ref[i] = svel[i] / size if size > SLIP_FLOOR else data[D_SLIP + i]
+        data[D_SLIP + i] = ref[i]
+    return n_normal, n_tangent if size <= SLIP_FLOOR or along > 0.0 else -1
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
 def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
     """The event functions at (t, y) in the held mode (>= 0 while it holds); their count."""
     ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
+    return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def start_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
+    """A step's references (:func:`references`) and event functions at its start (t, y).
+
+    One solve where the slip's references made it; returns the functions' count.
+    """
+    n_normal, n_tangent = references(par, record, dt, t, y, mode, data, sc, ref)
+    if n_tangent < 0:
+        return event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds)
+    return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds):
+    """The event functions of the held mode solved in the scratch at (t, y); their count."""
     rot = sc[SC_ROT]
     lam = sc[SC_LAM]
     kind = mode[M_KIND]
@@ -691,6 +719,27 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
+def drifted(par, y, mode, sc):
+    """False where a sliding FACE's held rows have drifted by round-off only (no projection).
+
+    A flat base's held rows are its height, its tilt and their rates, whose
+    accelerations the mode holds at zero: RK4 keeps them at zero to
+    round-off, and :func:`project` (two more solves) would change nothing
+    that matters. Any other mode's rows drift with the step's truncation
+    error. The round-off allowed is ``FLAT_ROUND_OFF`` on each of them.
+    """
+    if mode[M_KIND] != FACE or mode[M_SLIP] != 1:
+        return True
+    if max(abs(y[4]), abs(y[5]), abs(y[9]), abs(y[10]), abs(y[11])) > FLAT_ROUND_OFF:
+        return True
+    rot = sc[SC_ROT]
+    rotation_matrix(y, rot)
+    d = sc[SC_PROBE][0]
+    arm(par, rot, 0.0, 0.0, 0.0, d)
+    return abs(y[2] + d[2]) > FLAT_ROUND_OFF
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _post_record_fall(par, y, mode, sc):
     """True when, without excitation, a pivoting body is past its top: tilting and falling."""
     if mode[M_KIND] != POINT and mode[M_KIND] != EDGE:
@@ -1031,7 +1080,7 @@ def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, is
         found = -1  # a point the stretch holds is still above the support: not a flight
     if found >= 0 and istate[I_CHATTER] == 1 and mode[M_SLIP] == 1:
         # a chatter's stretch goes on while its patch could only slip from rest
-        speed, _ = slip_velocity(par, record, dt, t + h, y, mode, data, sc)
+        speed, _, _ = slip_velocity(par, record, dt, t + h, y, mode, data, sc)
         found = -1 if speed <= velocity_tol else 0
     if found >= 0:
         istate[I_STRETCH] = 0
@@ -1122,17 +1171,23 @@ def _settle(par, y, sc, data, reach, gap_tol, velocity_tol):
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
 def watch_chatter(t, before, event, mode, istate, chatter):
-    """Count an EDGE's slip restarts and remedies; start a chatter's stretch at the third.
+    """Count an EDGE's or FACE's slip restarts and remedies; start a chatter's stretch at the third.
 
-    A restart is a slip-stop after which the edge slips again from rest
+    A restart is a slip-stop after which the patch slips again from rest
     (the event ``EV_STICK`` with a sliding mode). ``chatter`` holds the last
-    one's time [s] and how many followed each other within
-    ``CHATTER_WINDOW``; at ``CHATTER_COUNT`` the remedy's time stepping takes
-    over (:func:`_start_chatter`). Returns the event's kind.
+    one's time [s] and how many followed each other within the window
+    (``CHATTER_WINDOW`` for an EDGE, whose onset direction at its friction
+    limit is unstable; ``FACE_CHATTER_WINDOW`` for a FACE, whose restarts
+    are the support's acceleration hovering at the friction limit, each a
+    real stick and slip, except where they follow each other within
+    microseconds: no slip from rest lasts there); at ``CHATTER_COUNT`` the
+    remedy's time stepping takes over (:func:`_start_chatter`). Returns the
+    event's kind.
     """
-    if before != EDGE or not (event == EV_REMEDY or (event == EV_STICK and mode[M_SLIP] == 1)):
+    if before < EDGE or not (event == EV_REMEDY or (event == EV_STICK and mode[M_SLIP] == 1)):
         return event
-    chatter[1] = chatter[1] + 1.0 if t - chatter[0] < CHATTER_WINDOW else 1.0
+    window = CHATTER_WINDOW if before == EDGE else FACE_CHATTER_WINDOW
+    chatter[1] = chatter[1] + 1.0 if t - chatter[0] < window else 1.0
     chatter[0] = t
     if chatter[1] < CHATTER_COUNT:
         return event
@@ -1166,7 +1221,7 @@ def slip_velocity(par, record, dt, t, y, mode, data, sc):
     """The held patch's slip velocity at (t, y), at its centre of pressure, in ``sc[SC_SVEL]``.
 
     The mode is solved there (:func:`solve_at`, its rows left in the
-    scratch). Returns (its speed [m/s], its number of tangential rows).
+    scratch). Returns (its speed [m/s], the patch's normal rows, its tangential rows).
     """
     ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
     svel = sc[SC_SVEL]
@@ -1174,7 +1229,7 @@ def slip_velocity(par, record, dt, t, y, mode, data, sc):
     size = 0.0
     for k in range(n_tangent):
         size += svel[k] ** 2
-    return math.sqrt(size), n_tangent
+    return math.sqrt(size), n_normal, n_tangent
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -1276,8 +1331,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             continue
         rest_ready = False
         if not fresh:
-            references(par, record_, dt, t, y, mode, data, sc, ref)
-            count = event_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
+            count = start_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
                                     kinds)  # fmt: skip
         fresh = False
         h = min(_next_end(t, breaks, h_max, t_end) - t, closing_step(par, y, mode, sc, ref))
@@ -1306,12 +1360,11 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
                 istate[I_RECORDS] += 1
                 istate[I_STATUS] = STATUS_OVERTURNED
                 return t
-        elif not resting(mode, y, velocity_tol):
+        elif not resting(mode, y, velocity_tol) and drifted(par, y, mode, sc):
             project(par, record_, dt, t, y, mode, data, sc)
         if istate[I_STRETCH] == 0 and not resting(mode, y, velocity_tol):
             # the next step's references and event functions: their solve is the record's
-            references(par, record_, dt, t, y, mode, data, sc, ref)
-            count = event_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
+            count = start_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
                                     kinds)  # fmt: skip
             fresh = True
         else:
