@@ -113,3 +113,33 @@ def test_the_tilt_after_the_chatter_does_not_depend_on_the_step():
         q = state[-1, 3:7]
         tilts.append(math.acos(1.0 - 2.0 * (q[1] ** 2 + q[2] ** 2)))
     assert tilts[1] == pytest.approx(tilts[0], rel=0.02)  # 0.0139 rad both; 0.25 % apart
+
+
+def _restarts(kind: int, times) -> list[int]:
+    """The event kinds watch_chatter makes of slip restarts of a ``kind`` patch at ``times``."""
+    istate = np.zeros(engine.I_SIZE, dtype=np.int64)
+    chatter = np.array([-math.inf, 0.0])
+    kinds = []
+    for t in times:
+        mode = np.array([kind, 0, 1], dtype=np.int64)  # slipping again after the slip-stop
+        kinds.append(engine.watch_chatter(t, kind, engine.EV_STICK, mode, istate, chatter))
+    return kinds
+
+
+@pytest.mark.parametrize(
+    ("kind", "spacing", "chatters"),
+    [
+        (body_kernel.EDGE, 5e-4, True),  # an edge's restarts within a millisecond
+        (body_kernel.EDGE, 2e-3, False),
+        # a flat base's restarts 0.1 ms apart are real stick-slips (the support's acceleration
+        # hovering at the friction limit); 5e-12 s apart (a cabinet once made 2,287 of them at
+        # one instant) no slip from rest lasts
+        (body_kernel.FACE, 1e-4, False),
+        (body_kernel.FACE, 5e-12, True),
+        (body_kernel.POINT, 5e-12, False),  # a point's slip is not watched
+    ],
+)
+def test_slip_restarts_in_quick_succession_hand_the_patch_to_the_remedy(kind, spacing, chatters):
+    kinds = _restarts(kind, 1.0 + spacing * np.arange(engine.CHATTER_COUNT))
+    assert kinds[:-1] == [engine.EV_STICK] * (engine.CHATTER_COUNT - 1)
+    assert kinds[-1] == (engine.EV_REMEDY if chatters else engine.EV_STICK)

@@ -1,0 +1,109 @@
+"""The 3-D engine's step start: one solve for the references and the event functions (#18).
+
+A sliding patch's references (its slip direction) need the held mode solved
+at the step's start, and so do its event functions. ``start_functions``
+solves once where the slip kept its side of the stored direction (the only
+case in which the stored one is not read), and must give what the two solves
+gave: the same event functions and the same accelerations, to round-off. A
+sliding flat base is not projected while its held rows have drifted by
+round-off only (``drifted``).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from freestand.core.body import Body, Box, Cylinder
+from freestand.core.contact import body_kernel as bk
+from freestand.core.dynamics import body_engine as engine
+from freestand.core.dynamics.body_history import initial_state
+from freestand.core.model import Friction
+
+G = 9.81
+BODIES = (
+    Body("box", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.4, 0.3), centre=(0.05, -0.02, 0.9)),
+    Body("cylinder", Cylinder(0.8, 2.5), 5000.0, Friction(0.4, 0.3)),
+)
+
+
+def _sliding(body, speed, angle, twist, tilt=0.0):
+    """A body flat on the support (optionally tilted about x by ``tilt`` [rad]), sliding."""
+    y = initial_state(body)
+    if tilt:
+        y[3], y[4] = math.cos(0.5 * tilt), math.sin(0.5 * tilt)
+    y[7], y[8], y[12] = speed * math.cos(angle), speed * math.sin(angle), twist
+    return y
+
+
+def _functions(body, y, record, start):
+    """(event functions, accelerations, stored slip) of a FACE slip at (0, y)."""
+    par = bk.body_parameters(body, G)
+    mode = np.array([bk.FACE, 0, 1], dtype=np.int64)
+    data = np.zeros(bk.DATA_SIZE)
+    data[bk.D_SLIP] = 1.0  # a stored direction the slip's own one replaces
+    sc = bk.new_scratch()
+    ref = np.zeros(5)
+    values = np.zeros(engine.MAX_EVENT_FUNCTIONS)
+    kinds = np.zeros(engine.MAX_EVENT_FUNCTIONS, dtype=np.int64)
+    if start:
+        count = engine.start_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values,
+                                       kinds)  # fmt: skip
+    else:  # the two solves the step's start made before
+        engine.references(par, record, 1.0, 0.0, y, mode, data, sc, ref)
+        count = engine.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values,
+                                       kinds)  # fmt: skip
+    return values[:count].copy(), sc[bk.SC_ACC].copy(), data[bk.D_SLIP : bk.D_SLIP + 3].copy()
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.sampled_from(BODIES), st.floats(1e-3, 1.0), st.floats(-math.pi / 3, math.pi / 3),
+    st.floats(-0.5, 0.5), st.floats(-4.0, 4.0), st.floats(-4.0, 4.0), st.floats(-3.0, 3.0),
+)  # fmt: skip
+def test_one_solve_at_the_step_start_gives_what_two_gave(body, speed, angle, twist, ax, ay, av):
+    # the slip within 60 deg of the stored direction (+x): its own direction is taken
+    record = np.array([[ax, ax], [ay, ay], [av, av]])
+    y = _sliding(body, speed, angle, twist)
+    once, acc_once, stored_once = _functions(body, y, record, start=True)
+    twice, acc_twice, stored_twice = _functions(body, y, record, start=False)
+    scale = body.mass * G
+    # tolerance: the friction centre settles to 1e-12 of the half-width in both solves
+    np.testing.assert_allclose(once, twice, rtol=1e-9, atol=1e-9 * scale)
+    np.testing.assert_allclose(acc_once, acc_twice, rtol=1e-9, atol=1e-9)
+    np.testing.assert_array_equal(stored_once, stored_twice)
+
+
+def test_a_slip_turned_against_the_stored_direction_is_solved_again():
+    # the slip runs along -x, the stored direction is +x: the first solve read the stored one
+    body = BODIES[1]
+    record = np.zeros((3, 2))
+    y = _sliding(body, 0.2, math.pi, 0.0)
+    once, acc_once, _ = _functions(body, y, record, start=True)
+    twice, acc_twice, _ = _functions(body, y, record, start=False)
+    np.testing.assert_allclose(acc_once, acc_twice, rtol=1e-12, atol=1e-12)
+    assert acc_once[0] > 0.0  # the kinetic friction opposes the slip along -x
+    np.testing.assert_allclose(once, twice, rtol=1e-12, atol=1e-9)
+
+
+@pytest.mark.parametrize("body", BODIES, ids=lambda b: b.name)
+def test_a_sliding_flat_base_is_projected_only_past_round_off(body):
+    par = bk.body_parameters(body, G)
+    sc = bk.new_scratch()
+    sliding = np.array([bk.FACE, 0, 1], dtype=np.int64)
+    flat = _sliding(body, 0.3, 0.4, 0.1)
+    assert not engine.drifted(par, flat, sliding, sc)
+    assert engine.drifted(par, _sliding(body, 0.3, 0.4, 0.1, tilt=1e-9), sliding, sc)
+    rising = flat.copy()
+    rising[9] = 1e-9  # [m/s]
+    assert engine.drifted(par, rising, sliding, sc)
+    sunk = flat.copy()
+    sunk[2] -= 1e-9  # [m]
+    assert engine.drifted(par, sunk, sliding, sc)
+    # other modes are always projected: their rows drift with the step's truncation error
+    assert engine.drifted(par, flat, np.array([bk.FACE, 0, 0], dtype=np.int64), sc)
+    assert engine.drifted(par, flat, np.array([bk.EDGE, 0, 1], dtype=np.int64), sc)
