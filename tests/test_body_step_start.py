@@ -60,13 +60,14 @@ def _functions(body, y, record, start):
     return values[:count].copy(), sc[bk.SC_ACC].copy(), data[bk.D_SLIP : bk.D_SLIP + 3].copy()
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(
-    st.sampled_from(BODIES), st.floats(1e-3, 1.0), st.floats(-math.pi / 3, math.pi / 3),
-    st.floats(-0.5, 0.5), st.floats(-4.0, 4.0), st.floats(-4.0, 4.0), st.floats(-3.0, 3.0),
+    st.sampled_from(BODIES), st.floats(1e-3, 1.0), st.floats(-1.5, 1.5),
+    st.floats(-3.0, 3.0), st.floats(-4.0, 4.0), st.floats(-4.0, 4.0), st.floats(-3.0, 3.0),
 )  # fmt: skip
 def test_one_solve_at_the_step_start_gives_what_two_gave(body, speed, angle, twist, ax, ay, av):
-    # the slip within 60 deg of the stored direction (+x): its own direction is taken
+    # the slip within 86 deg of the stored direction (+x), twisting: where the friction centre
+    # is moved, the slip there may turn past 90 deg, and the first solve read the stored one
     record = np.array([[ax, ax], [ay, ay], [av, av]])
     y = _sliding(body, speed, angle, twist)
     once, acc_once, stored_once = _functions(body, y, record, start=True)

@@ -757,7 +757,8 @@ SC_LAM = 13
 SC_SVEL = 14
 SC_SACC = 15
 SC_DIR = 16
-SC_CENTRE = 17  # the friction centre of the rows: base x, y [m] (body frame), rho [m]; kind, index
+SC_CENTRE = 17  # the friction centre of the rows: base x, y [m] (body frame), rho [m]; kind, index;
+# then 1.0 where the last solve's slip direction was the stored one at any of its centres
 SC_PROBE = 18  # (3, 6) work outside a solve: arms of probed points, a projection's velocities
 
 #: [m/s] below which a slip velocity has no direction of its own: a slip this slow keeps the
@@ -776,7 +777,7 @@ def new_scratch():
         np.zeros((3, 3)), np.zeros((3, 3)), np.zeros(6), np.zeros(6),
         np.zeros((6, 3)), np.zeros(3), np.zeros((6, 3)), np.zeros(3), np.zeros((4, 3)),
         np.zeros((13, 6)), np.zeros((6, 6)), np.zeros(6), np.zeros(6), np.zeros(6),
-        np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(5), np.zeros((3, 6)),
+        np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(6), np.zeros((3, 6)),
     )  # fmt: skip
 
 
@@ -832,16 +833,19 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     (:func:`slip_direction`, ``stored`` its fallback, as mode data); else u
     is ``direction`` as given. The patch is the one whose rows the scratch
     holds (``sc[SC_CENTRE][3:5]``, :func:`scratch_rows`); the rows and
-    ``sc[SC_CENTRE]`` are left at the final centre. False when a system is
-    singular.
+    ``sc[SC_CENTRE]`` are left at the final centre, and ``sc[SC_CENTRE][5]``
+    is 1.0 where the stored direction was read (at any centre), else 0.0.
+    False when a system is singular.
     """
     centre = sc[SC_CENTRE]
     kind = int(centre[3])
     index = int(centre[4])
+    centre[5] = 0.0
     if kind != FACE and kind != EDGE:
         if kinetic:
-            direction = slip_direction(y, n_tangent, stored, sc[SC_TANGENT], sc[SC_SVEL],
-                                        sc[SC_DIR])  # fmt: skip
+            direction = sc[SC_DIR]
+            if not slip_direction(y, n_tangent, stored, sc[SC_TANGENT], sc[SC_SVEL], direction):
+                centre[5] = 1.0
         return solve_mode(par, sc[SC_INV], sc[SC_BASE], use_bias, slip, direction, sc[SC_NORMAL],
                           sc[SC_NBIAS], n_normal, sc[SC_TANGENT], sc[SC_TBIAS], n_tangent,
                           sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS], sc[SC_ACC],
@@ -853,7 +857,9 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     svel, own = sc[SC_SVEL], sc[SC_DIR]
     for _ in range(CENTRE_ITERATIONS):
         if kinetic:
-            direction = slip_direction(y, n_tangent, stored, tangent, svel, own)
+            direction = own
+            if not slip_direction(y, n_tangent, stored, tangent, svel, direction):
+                centre[5] = 1.0
         ok = solve_mode(par, inv, base, use_bias, slip, direction, normal, nbias, n_normal,
                         tangent, tbias, n_tangent, work, matrix, rhs, acc, lam)  # fmt: skip
         if not ok:
@@ -882,7 +888,8 @@ def slip_direction(y, n_tangent, data, tangent, svel, direction):
     at a small constant velocity.
 
     On the tangential rows ``tangent`` (their velocities written to ``svel``);
-    ``data`` the mode data; u is written to ``direction``, which is returned.
+    ``data`` the mode data; u is written to ``direction``. Returns False
+    where it is the stored one.
     """
     tangential_velocity(y, tangent, n_tangent, svel)
     size = 0.0
@@ -894,7 +901,7 @@ def slip_direction(y, n_tangent, data, tangent, svel, direction):
     own = size > SLIP_FLOOR and along > 0.0
     for k in range(n_tangent):
         direction[k] = svel[k] / size if own else data[D_SLIP + k]
-    return direction
+    return own
 
 
 @nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)

@@ -238,9 +238,8 @@ def references(par, record, dt, t, y, mode, data, sc, ref):
     pressure at (t, y), or the stored one while the slip is slower than
     ``SLIP_FLOOR``. Returns the normal and tangential rows of the slip's
     solve where the scratch holds the held mode solved at (t, y) as with
-    the references stored (the slip's own direction kept its side of the
-    stored one, which the solve then did not read: :func:`slip_direction`),
-    else (0, -1).
+    the references stored: its solve read no stored direction
+    (:func:`slip_direction`), or the stored one is kept; else (0, -1).
     """
     rot = sc[SC_ROT]
     rotation_matrix(y, rot)
@@ -265,12 +264,10 @@ def references(par, record, dt, t, y, mode, data, sc, ref):
         return 0, -1
     size, n_normal, n_tangent = slip_velocity(par, record, dt, t, y, mode, data, sc)
     svel = sc[SC_SVEL]
-    along = 0.0
     for i in range(n_tangent):
-        along += svel[i] * data[D_SLIP + i]
         ref[i] = svel[i] / size if size > SLIP_FLOOR else data[D_SLIP + i]
         data[D_SLIP + i] = ref[i]
-    return n_normal, n_tangent if size <= SLIP_FLOOR or along > 0.0 else -1
+    return n_normal, n_tangent if size <= SLIP_FLOOR or sc[SC_CENTRE][5] == 0.0 else -1
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
