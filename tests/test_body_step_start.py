@@ -40,8 +40,9 @@ def _sliding(body, speed, angle, twist, tilt=0.0):
     return y
 
 
-def _functions(body, y, record, start):
-    """(event functions, accelerations, stored slip) of a FACE slip at (0, y)."""
+def _functions(body, y, record, start, solved=False):
+    """(event functions, accelerations, stored slip) of a FACE slip at (0, y); ``solved``: as
+    at a step's end left unprojected, the scratch holds the solve of its event functions."""
     par = bk.body_parameters(body, G)
     mode = np.array([bk.FACE, 0, 1], dtype=np.int64)
     data = np.zeros(bk.DATA_SIZE)
@@ -50,9 +51,11 @@ def _functions(body, y, record, start):
     ref = np.zeros(5)
     values = np.zeros(engine.MAX_EVENT_FUNCTIONS)
     kinds = np.zeros(engine.MAX_EVENT_FUNCTIONS, dtype=np.int64)
+    if solved:  # the step's end: the event functions with the step's stored direction
+        engine.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
     if start:
         count = engine.start_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values,
-                                       kinds)  # fmt: skip
+                                       kinds, solved)  # fmt: skip
     else:  # the two solves the step's start made before
         engine.references(par, record, 1.0, 0.0, y, mode, data, sc, ref)
         count = engine.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values,
@@ -72,11 +75,13 @@ def test_one_solve_at_the_step_start_gives_what_two_gave(body, speed, angle, twi
     y = _sliding(body, speed, angle, twist)
     once, acc_once, stored_once = _functions(body, y, record, start=True)
     twice, acc_twice, stored_twice = _functions(body, y, record, start=False)
+    none, acc_none, stored_none = _functions(body, y, record, start=True, solved=True)
     scale = body.mass * G
     # tolerance: the friction centre settles to 1e-12 of the half-width in both solves
-    np.testing.assert_allclose(once, twice, rtol=1e-9, atol=1e-9 * scale)
-    np.testing.assert_allclose(acc_once, acc_twice, rtol=1e-9, atol=1e-9)
-    np.testing.assert_array_equal(stored_once, stored_twice)
+    for values, acc, stored in ((once, acc_once, stored_once), (none, acc_none, stored_none)):
+        np.testing.assert_allclose(values, twice, rtol=1e-9, atol=1e-9 * scale)
+        np.testing.assert_allclose(acc, acc_twice, rtol=1e-9, atol=1e-9)
+        np.testing.assert_allclose(stored, stored_twice, rtol=1e-9, atol=1e-12)
 
 
 def test_a_slip_turned_against_the_stored_direction_is_solved_again():

@@ -415,7 +415,7 @@ def patch_rows(par, y, rot, kind, index, psi, centre, normal, nbias, tangent, tb
     :func:`move_friction_centre`).
     """
     if kind == FREE:
-        return 0, 0
+        return row_counts(FREE)
     if kind == POINT:
         d = arms[3]
         if par[P_SHAPE] == SHAPE_BOX:
@@ -431,7 +431,7 @@ def patch_rows(par, y, rot, kind, index, psi, centre, normal, nbias, tangent, tb
         _point_row(y, arms[0], 0.0, 0.0, 1.0, zt, normal, nbias, 0)
         _point_row(y, d, 1.0, 0.0, 0.0, xt, tangent, tbias, 0)
         _point_row(y, d, 0.0, 1.0, 0.0, yt, tangent, tbias, 1)
-        return 1, 2
+        return row_counts(POINT)
     if kind == EDGE:
         ax, ay = box_corner(par, index)
         bx, by = box_corner(par, (index + 1) % 4)
@@ -439,15 +439,23 @@ def patch_rows(par, y, rot, kind, index, psi, centre, normal, nbias, tangent, tb
         arm(par, rot, bx, by, 0.0, arms[1])
         _point_row(y, arms[0], 0.0, 0.0, 1.0, 0.0, normal, nbias, 0)
         _point_row(y, arms[1], 0.0, 0.0, 1.0, 0.0, normal, nbias, 1)
-        n_normal = 2
     else:  # FACE
         arm(par, rot, 0.0, 0.0, 0.0, arms[0])
         _point_row(y, arms[0], 0.0, 0.0, 1.0, 0.0, normal, nbias, 0)
         _angular_row(1.0, 0.0, 0.0, normal, nbias, 1)
         _angular_row(0.0, 1.0, 0.0, normal, nbias, 2)
-        n_normal = 3
     tangent_rows(par, y, rot, centre, tangent, tbias, arms)
-    return n_normal, 3
+    return row_counts(kind)
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def row_counts(kind):
+    """(normal rows, tangential rows) of a patch of ``kind`` (the module's table)."""
+    if kind == FREE:
+        return 0, 0
+    if kind == POINT:
+        return 1, 2
+    return (2, 3) if kind == EDGE else (3, 3)
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)

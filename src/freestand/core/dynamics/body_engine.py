@@ -96,6 +96,7 @@ from freestand.core.contact.body_kernel import (
     rim_angle,
     rotation_matrix,
     row_acceleration,
+    row_counts,
     sin_tilt,
     solve_at,
     solve_at_centre,
@@ -231,7 +232,7 @@ def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
-def references(par, record, dt, t, y, mode, data, sc, ref):
+def references(par, record, dt, t, y, mode, data, sc, ref, solved=False):
     """The step's references: the slip direction (3) and the pivot's horizontal direction (2).
 
     The slip direction is the slip velocity's at the held patch's centre of
@@ -240,6 +241,9 @@ def references(par, record, dt, t, y, mode, data, sc, ref):
     solve where the scratch holds the held mode solved at (t, y) as with
     the references stored: its solve read no stored direction
     (:func:`slip_direction`), or the stored one is kept; else (0, -1).
+    ``solved``: the scratch holds the held mode solved at (t, y) already (a
+    step's end left unprojected, :func:`drifted`, whose event functions left
+    the slip velocity in the scratch), and it is not solved again.
     """
     rot = sc[SC_ROT]
     rotation_matrix(y, rot)
@@ -262,7 +266,11 @@ def references(par, record, dt, t, y, mode, data, sc, ref):
         ref[4] = py / size
     if mode[M_SLIP] == 0:
         return 0, -1
-    size, n_normal, n_tangent = slip_velocity(par, record, dt, t, y, mode, data, sc)
+    if solved:
+        n_normal, n_tangent = row_counts(mode[M_KIND])
+        size = _size(sc[SC_SVEL], n_tangent)
+    else:
+        size, n_normal, n_tangent = slip_velocity(par, record, dt, t, y, mode, data, sc)
     svel = sc[SC_SVEL]
     for i in range(n_tangent):
         ref[i] = svel[i] / size if size > SLIP_FLOOR else data[D_SLIP + i]
@@ -278,12 +286,13 @@ def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
-def start_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
+def start_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds, solved=False):
     """A step's references (:func:`references`) and event functions at its start (t, y).
 
-    One solve where the slip's references made it; returns the functions' count.
+    One solve where the slip's references made it (none where the scratch
+    holds it, ``solved``); returns the functions' count.
     """
-    n_normal, n_tangent = references(par, record, dt, t, y, mode, data, sc, ref)
+    n_normal, n_tangent = references(par, record, dt, t, y, mode, data, sc, ref, solved)
     if n_tangent < 0:
         return event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds)
     return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
@@ -1223,10 +1232,16 @@ def slip_velocity(par, record, dt, t, y, mode, data, sc):
     ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
     svel = sc[SC_SVEL]
     tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
+    return _size(svel, n_tangent), n_normal, n_tangent
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _size(vector, count):
+    """The length of the first ``count`` components of ``vector``."""
     size = 0.0
-    for k in range(n_tangent):
-        size += svel[k] ** 2
-    return math.sqrt(size), n_normal, n_tangent
+    for k in range(count):
+        size += vector[k] ** 2
+    return math.sqrt(size)
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -1327,6 +1342,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             istate[I_RECORDS] += 1
             continue
         rest_ready = False
+        solved = False
         if not fresh:
             count = start_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
                                     kinds)  # fmt: skip
@@ -1357,12 +1373,15 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
                 istate[I_RECORDS] += 1
                 istate[I_STATUS] = STATUS_OVERTURNED
                 return t
-        elif not resting(mode, y, velocity_tol) and drifted(par, y, mode, sc):
-            project(par, record_, dt, t, y, mode, data, sc)
+        elif not resting(mode, y, velocity_tol):
+            if drifted(par, y, mode, sc):
+                project(par, record_, dt, t, y, mode, data, sc)
+            else:
+                solved = True  # locate's solve at the step's end: the state is unchanged
         if istate[I_STRETCH] == 0 and not resting(mode, y, velocity_tol):
             # the next step's references and event functions: their solve is the record's
             count = start_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
-                                    kinds)  # fmt: skip
+                                    kinds, solved)  # fmt: skip
             fresh = True
         else:
             solve_at(par, record_, dt, t, y, mode, data, sc)
