@@ -273,7 +273,10 @@ def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol):
 
     u(a, b) = normalise(u + a e1 + b e2) with (e1, e2) across u; the residual
     (e1 . s', e2 . s') is driven to zero with a finite-difference Jacobian and
-    step halving. True when consistent (``direction`` holds u).
+    step halving; where 20 halvings find no lower residual Newton has stalled
+    (the next iteration would start from the same u: such stalls went on for
+    all 30 iterations, 430 solves, where no consistent onset exists). True
+    when consistent (``direction`` holds u).
     """
     e1 = np.empty(3)
     e2 = np.empty(3)
@@ -303,6 +306,7 @@ def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol):
         db = -(-jac[1, 0] * r1 + jac[0, 0] * r2) / det
         norm0 = math.hypot(r1, r2)
         factor = 1.0
+        decreased = False
         for _ in range(20):
             for k in range(3):
                 trial[k] = direction[k] + factor * (da * e1[k] + db * e2[k])
@@ -310,8 +314,11 @@ def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol):
             _onset_rate(par, y, sc, level, n_normal, 3, trial)
             f1, f2 = _onset_across(sc, e1, e2)
             if math.hypot(f1, f2) < norm0:
+                decreased = True
                 break
             factor *= 0.5
+        if not decreased:
+            break  # stalled: no step along Newton's direction lowers the residual
         for k in range(3):
             direction[k] = trial[k]
     along, across, size = _onset_rate(par, y, sc, level, n_normal, 3, direction)
