@@ -220,7 +220,7 @@ def resting(mode, y, velocity_tol):
 def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
     """Phase 1: the state at t + h in ``out`` (RK4, or unchanged at rest); False if singular.
 
-    The scratch holds the held mode solved at (t, y) (:func:`event_functions`
+    The scratch holds the held mode solved at (t, y) (:func:`start_functions`
     at the step's start): the first stage is read from it.
     """
     if resting(mode, y, velocity_tol):
@@ -376,7 +376,7 @@ def closing_step(par, y, mode, sc, ref):
     would see the gap open at both its ends and miss the impact. Each gap (a
     box corner not held) and a rolling cylinder's landing function f is
     predicted by its Taylor polynomial f + f' t + f'' t^2 / 2 (f'' from the
-    held mode's accelerations in ``sc``, which :func:`event_functions` just
+    held mode's accelerations in ``sc``, which :func:`start_functions` just
     solved); the step ends ``CLOSING_OVERSHOOT`` past its earliest zero, so
     that :func:`locate` brackets the crossing. A rolling cylinder's lean (the
     horizontal projection of its axis) turns at ``|e_h x e_h'| / |e_h|^2``,
@@ -451,7 +451,7 @@ def _slip_turn_time(mode, sc):
     rocking edge or point a step longer than the slip's own time scale makes
     RK4 oscillate from step to step and gain energy (a flat base sliding is
     not limited: its direction is not coupled to a rotation). ``sc`` holds the rows and
-    accelerations that :func:`event_functions` just solved. Not below
+    accelerations that :func:`start_functions` just solved. Not below
     ``SLIP_MIN_STEP``: a slip that dies away without reversing would
     otherwise take ever shorter steps (its energy is then negligible).
     """
@@ -1208,8 +1208,9 @@ def _start_chatter(mode, istate, event):
     An edge at its friction limit can have no consistent slip from rest
     that lasts: its onset direction is unstable (the slip veers within
     microseconds and the slip-stop function fires), or none exists (a
-    remedy). Where such restarts follow each other within
-    ``CHATTER_WINDOW``, the velocity-level time stepping takes over until
+    remedy); nor, at times, a flat base landed twisting. Where such
+    restarts follow each other within the window of :func:`watch_chatter`,
+    the velocity-level time stepping takes over until
     the patch sticks, slips at a speed above the velocity tolerance, or
     another contact holds (:func:`_stretch`).
     """
