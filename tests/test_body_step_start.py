@@ -2,11 +2,12 @@
 
 A sliding patch's references (its slip direction) need the held mode solved
 at the step's start, and so do its event functions. ``start_functions``
-solves once where the slip kept its side of the stored direction (the only
-case in which the stored one is not read), and must give what the two solves
-gave: the same event functions and the same accelerations, to round-off. A
-sliding flat base is not projected while its held rows have drifted by
-round-off only (``drifted``).
+solves once where that solve read no stored slip direction at any friction
+centre (the stored one is what the reference replaces), and must give what
+the two solves gave: the same event functions and the same accelerations,
+to round-off; so must a step's end left unprojected, whose solve the next
+start reuses. A sliding flat base is not projected while its held rows
+have drifted by round-off only (``drifted``).
 """
 
 from __future__ import annotations
