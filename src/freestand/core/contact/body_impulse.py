@@ -240,9 +240,9 @@ def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses):
 
     ``velocity`` (6) is updated. Projected Gauss-Seidel (Jean 1999), its
     sweeps forwards and backwards in turn (:func:`_sweep`); at sweeps 8, 16,
-    32, ... that have not converged, the exact solution on the sweeps'
-    active set is tried (:func:`polish`) and, where it satisfies the laws,
-    taken: the sweeps converge linearly, and slowly where impulses can move
+    32, ... that have not converged, the exact solution is sought by Newton's
+    method from the sweeps' impulses (:func:`polish`) and, where it
+    satisfies the laws, taken: the sweeps converge linearly, and slowly where impulses can move
     between points without moving the body (an edge's two corners pushing
     along it).
     ``impulses`` (at least count, 3) [N s] (x, y, n): on entry the sweeps'
