@@ -53,7 +53,8 @@ def run_from_instant(max_step: float):
            np.empty((ROWS, 3), dtype=np.int64), np.empty((ROWS, 2)))  # fmt: skip
     events = (np.empty(ROWS),) + tuple(np.empty(ROWS, dtype=np.int64) for _ in range(3))
     engine.run(par, record, dt, breaks, max_step, t + SPAN, record.shape[1] * dt, GAP, VELOCITY,
-               t, y, mode, np.zeros(body_kernel.DATA_SIZE), istate, *out, *events)  # fmt: skip
+               t, y, mode, np.zeros(body_kernel.DATA_SIZE), np.zeros(1, body_kernel.SCRATCH_DTYPE), istate, *out,
+               *events)  # fmt: skip
     count = min(int(istate[engine.I_EVENTS]), ROWS)
     rows = int(istate[engine.I_RECORDS])
     return istate, events[1][:count], out[0][:rows], out[1][:rows], out[2][:rows], out[3][:rows]

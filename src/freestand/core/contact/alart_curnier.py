@@ -31,10 +31,10 @@ quadratically, what the sweeps approach linearly.
 
 from __future__ import annotations
 
-import math
-
 import numba as nb
 import numpy as np
+
+from freestand.core.contact.vectors import norm2
 
 NEWTON_ITERATIONS = 30  # at most
 LINE_SEARCH_HALVINGS = 30  # a step halved at most this many times
@@ -52,7 +52,7 @@ def largest_tangential_eigenvalue(w):
     """
     half_trace = 0.5 * (w[0, 0] + w[1, 1])
     half_difference = 0.5 * (w[0, 0] - w[1, 1])
-    return half_trace + math.hypot(half_difference, 0.5 * (w[0, 1] + w[1, 0]))
+    return half_trace + norm2(half_difference, 0.5 * (w[0, 1] + w[1, 0]))
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -76,7 +76,7 @@ def _point_function(p, mu, rho_n, rho_t, delassus, impulses, speeds, residual, j
     radius = mu * projected_normal
     zx = impulses[r] - rho_t * speeds[r]
     zy = impulses[r + 1] - rho_t * speeds[r + 1]
-    size = math.hypot(zx, zy)
+    size = norm2(zx, zy)
     if size <= radius:
         # inside: F_t = P_t - z = rho_t u_t
         residual[r] = rho_t * speeds[r]
@@ -158,10 +158,10 @@ def obeys_laws(count, mu, impulses, speeds, velocity_tolerance, impulse_toleranc
             return False
         if normal > impulse_tolerance and speeds[r + 2] > velocity_tolerance:
             return False  # complementarity
-        tangential = math.hypot(impulses[r], impulses[r + 1])
+        tangential = norm2(impulses[r], impulses[r + 1])
         if tangential > mu * max(normal, 0.0) + impulse_tolerance:
             return False
-        slip = math.hypot(speeds[r], speeds[r + 1])
+        slip = norm2(speeds[r], speeds[r + 1])
         if tangential < mu * normal - impulse_tolerance and slip > velocity_tolerance:
             return False  # inside the cone, the point sticks
         if slip > velocity_tolerance:
@@ -171,7 +171,7 @@ def obeys_laws(count, mu, impulses, speeds, velocity_tolerance, impulse_toleranc
             excess_x = impulses[r] + mu * normal * speeds[r] / slip
             excess_y = impulses[r + 1] + mu * normal * speeds[r + 1] / slip
             allowed = impulse_tolerance + mu * normal * velocity_tolerance / slip
-            if math.hypot(excess_x, excess_y) > allowed:
+            if norm2(excess_x, excess_y) > allowed:
                 return False
     return True
 
@@ -233,7 +233,7 @@ def solve_alart_curnier(count, mu, delassus, free, impulses, velocity_tolerance,
     for p in range(count):
         r = 3 * p
         normal = max(0.0, impulses[r + 2])
-        tangential = math.hypot(impulses[r], impulses[r + 1])
+        tangential = norm2(impulses[r], impulses[r + 1])
         if tangential > mu * normal:
             impulses[r] *= mu * normal / tangential
             impulses[r + 1] *= mu * normal / tangential

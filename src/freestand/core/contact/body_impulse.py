@@ -58,6 +58,7 @@ from freestand.core.contact.body_kernel import (
     cross,
     lowest_rim_angle,
 )
+from freestand.core.contact.vectors import norm2
 
 MAX_POINTS = 8
 RIM_POINTS = 8  # a cylinder's base as this many rim points, from the lowest one
@@ -174,7 +175,7 @@ def _sweep(par, inv_inertia, arms, count, mu, delassus, stiffness, velocity, imp
         ux, uy, un = _point_speed(velocity, d)
         tx = impulses[p, 0] - ux / stiffness[p]
         ty = impulses[p, 1] - uy / stiffness[p]
-        size = math.hypot(tx, ty)
+        size = norm2(tx, ty)
         limit = mu * normal
         if size > limit:
             tx *= limit / size
@@ -184,7 +185,7 @@ def _sweep(par, inv_inertia, arms, count, mu, delassus, stiffness, velocity, imp
         impulses[p, 0] = tx
         impulses[p, 1] = ty
         _apply(par, inv_inertia, d, dx, dy, 0.0, velocity)
-        change = max(change, math.hypot(dx, dy) / (par[P_MASS] * scale))
+        change = max(change, norm2(dx, dy) / (par[P_MASS] * scale))
     return change
 
 

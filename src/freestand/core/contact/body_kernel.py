@@ -82,6 +82,7 @@ import numpy as np
 
 from freestand.core.body import Body, Box
 from freestand.core.contact.engine import solve_in_place
+from freestand.core.contact.vectors import norm2
 
 # --- the parameter vector -----------------------------------------------------------------------
 
@@ -146,7 +147,7 @@ def rectangle_twist_radius(half_x: float, half_y: float) -> float:
         return 0.5 * p
     if p <= 1e-9 * q:
         return 0.5 * q
-    d = math.hypot(p, q)
+    d = norm2(p, q)
     integral = 2.0 * p * q * d + p**3 * math.log((q + d) / p) + q**3 * math.log((p + d) / q)
     return integral / (6.0 * p * q)
 
@@ -403,17 +404,20 @@ def rim_terms(par, y, rot, psi):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
-def patch_rows(par, y, rot, kind, index, psi, centre, normal, nbias, tangent, tbias, arms):
-    """Fill the rows of a patch; returns (normal rows, tangential rows).
+def patch_rows(par, y, sc, kind, index, psi):
+    """Fill the rows of a patch in the scratch ``sc``; returns (normal rows, tangential rows).
 
-    ``normal`` (6, 3) and ``tangent`` (6, 3) hold the rows as columns, ``nbias``
-    and ``tbias`` their biases, ``arms`` (4, 3) the arms of the patch's points:
-    the normal points (EDGE: its two corners; POINT: the point; FACE: the base
-    centre) then, in row 3, the friction centre of the tangential rows. A
-    FACE's or EDGE's tangential rows are at its friction centre ``centre``
-    (body-frame base x, y [m] and the twist radius rho [m], see
-    :func:`move_friction_centre`).
+    At the rotation ``sc[SC_ROT]``. ``sc[SC_NORMAL]`` (6, 3) and
+    ``sc[SC_TANGENT]`` (6, 3) hold the rows as columns, ``sc[SC_NBIAS]`` and
+    ``sc[SC_TBIAS]`` their biases, ``sc[SC_ARMS]`` (4, 3) the arms of the
+    patch's points: the normal points (EDGE: its two corners; POINT: the
+    point; FACE: the base centre) then, in row 3, the friction centre of the
+    tangential rows. A FACE's or EDGE's tangential rows are at its friction
+    centre ``sc[SC_CENTRE]`` (body-frame base x, y [m] and the twist radius
+    rho [m], see :func:`move_friction_centre`).
     """
+    rot, normal, nbias, arms = sc[SC_ROT], sc[SC_NORMAL], sc[SC_NBIAS], sc[SC_ARMS]
+    tangent, tbias = sc[SC_TANGENT], sc[SC_TBIAS]
     if kind == FREE:
         return row_counts(FREE)
     if kind == POINT:
@@ -444,7 +448,7 @@ def patch_rows(par, y, rot, kind, index, psi, centre, normal, nbias, tangent, tb
         _point_row(y, arms[0], 0.0, 0.0, 1.0, 0.0, normal, nbias, 0)
         _angular_row(1.0, 0.0, 0.0, normal, nbias, 1)
         _angular_row(0.0, 1.0, 0.0, normal, nbias, 2)
-    tangent_rows(par, y, rot, centre, tangent, tbias, arms)
+    tangent_rows(par, y, sc)
     return row_counts(kind)
 
 
@@ -459,14 +463,15 @@ def row_counts(kind):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
-def tangent_rows(par, y, rot, centre, tangent, tbias, arms):
-    """A FACE's or EDGE's tangential rows at its friction centre (arm in ``arms[3]``).
+def tangent_rows(par, y, sc):
+    """A FACE's or EDGE's tangential rows at its friction centre, in the scratch ``sc``.
 
-    The horizontal velocity of the material point at the centre, then the
-    twist ``(0, rho e_z)`` with rho = ``centre[2]``.
+    The horizontal velocity of the material point at the centre
+    ``sc[SC_CENTRE]`` (its arm in ``sc[SC_ARMS][3]``), then the twist
+    ``(0, rho e_z)`` with rho = ``centre[2]``.
     """
-    d = arms[3]
-    arm(par, rot, centre[0], centre[1], 0.0, d)
+    centre, tangent, tbias, d = sc[SC_CENTRE], sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS][3]
+    arm(par, sc[SC_ROT], centre[0], centre[1], 0.0, d)
     _point_row(y, d, 1.0, 0.0, 0.0, 0.0, tangent, tbias, 0)
     _point_row(y, d, 0.0, 1.0, 0.0, 0.0, tangent, tbias, 1)
     _angular_row(0.0, 0.0, centre[2], tangent, tbias, 2)
@@ -499,7 +504,7 @@ def effective_twist_radius(par, kind, index, cx, cy):
             if p <= 0.0 or q <= 0.0:
                 return floor
             return max(rectangle_twist_radius(p, q), floor)
-        shrink = 1.0 - math.hypot(cx, cy) / par[P_HALF_X]
+        shrink = 1.0 - norm2(cx, cy) / par[P_HALF_X]
         return max(par[P_RHO_FACE] * shrink, floor)
     if kind == EDGE:
         ax, ay = box_corner(par, index)
@@ -548,7 +553,7 @@ def move_friction_centre(par, rot, kind, index, lam, centre):
             cx = min(max(cx, -par[P_HALF_X]), par[P_HALF_X])
             cy = min(max(cy, -par[P_HALF_Y]), par[P_HALF_Y])
         else:
-            size = math.hypot(cx, cy)
+            size = norm2(cx, cy)
             if size > par[P_HALF_X]:
                 cx *= par[P_HALF_X] / size
                 cy *= par[P_HALF_X] / size
@@ -563,7 +568,7 @@ def move_friction_centre(par, rot, kind, index, lam, centre):
         cy = ay + share * (by - ay)
     else:
         return 0.0
-    moved = math.hypot(cx - centre[0], cy - centre[1])
+    moved = norm2(cx - centre[0], cy - centre[1])
     centre[0] = cx
     centre[1] = cy
     centre[2] = effective_twist_radius(par, kind, index, cx, cy)
@@ -617,9 +622,8 @@ def tangential_velocity(y, tangent, n_tangent, out):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
-def solve_mode(par, inv_inertia, base, use_bias, slip, direction, normal, nbias, n_normal,
-               tangent, tbias, n_tangent, work, matrix, rhs, acc, lam):  # fmt: skip
-    """Solve the contact problem of one mode; False when its system is singular.
+def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, acc, lam):
+    """Solve the contact problem of one mode on the scratch's rows; False when singular.
 
     Held rows: the normal rows, and the tangential rows when sticking. A
     sliding patch carries ``f_t = -mu N u`` (``direction`` = u, unit, on the
@@ -630,40 +634,53 @@ def solve_mode(par, inv_inertia, base, use_bias, slip, direction, normal, nbias,
     Velocity level (an impact, no bias): ``base`` is the velocity before, the
     held rows' velocities after vanish, ``acc`` is the velocity after and
     ``lam`` are impulses [N s]. ``lam`` holds the normal multipliers, then
-    the tangential ones (sticking, or ``-mu N u`` when sliding).
+    the tangential ones (sticking, or ``-mu N u`` when sliding). The rows,
+    the inverse inertia and the work arrays are the scratch's ``sc``.
     """
+    inv, normal, nbias, tangent, tbias = (sc[SC_INV], sc[SC_NORMAL], sc[SC_NBIAS], sc[SC_TANGENT],
+                                          sc[SC_TBIAS])  # fmt: skip
+    work, matrix, rhs = sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS]
     mu = par[P_MU_KINETIC]
+    inv_m = 1.0 / par[P_MASS]
     held = n_normal + (n_tangent if slip == 0 else 0)
-    # columns: generalised force per multiplier, work[0:held]
-    for j in range(held):
-        col = work[j]
-        if j < n_normal:
+    # the held rows w_r, work[0:held], and rhs = -(w_r . base + b_r)
+    for r in range(held):
+        row = work[r]
+        if r < n_normal:
             for i in range(6):
-                col[i] = normal[i, j]
-            if slip == 1 and (j == 0 or n_normal == 2):  # a FACE's couples carry no friction
-                for k in range(n_tangent):
-                    for i in range(6):
-                        col[i] -= mu * direction[k] * tangent[i, k]
+                row[i] = normal[i, r]
+            bias = nbias[r]
         else:
             for i in range(6):
-                col[i] = tangent[i, j - n_normal]
-    minv = base
-    for j in range(held):
-        apply_inverse_mass(par, inv_inertia, work[j], work[7 + j])  # M^-1 column
-    for r in range(held):
-        total = 0.0
-        if use_bias:
-            total = nbias[r] if r < n_normal else tbias[r - n_normal]
+                row[i] = tangent[i, r - n_normal]
+            bias = tbias[r - n_normal]
+        total = bias if use_bias else 0.0
         for i in range(6):
-            w_ri = normal[i, r] if r < n_normal else tangent[i, r - n_normal]
-            total += w_ri * minv[i]
+            total += row[i] * base[i]
         rhs[r] = -total
+    # M^-1 times each multiplier's generalised force, work[7 + j]: its row, and on a sliding
+    # patch's normal columns the friction -mu u (a FACE's couples carry none)
+    col = work[6]
+    for j in range(held):
+        for i in range(6):
+            col[i] = work[j, i]
+        if slip == 1 and j < n_normal and (j == 0 or n_normal == 2):
+            for k in range(n_tangent):
+                for i in range(6):
+                    col[i] -= mu * direction[k] * tangent[i, k]
+        out = work[7 + j]
+        out[0] = col[0] * inv_m
+        out[1] = col[1] * inv_m
+        out[2] = col[2] * inv_m
+        for i in range(3):
+            out[3 + i] = inv[i, 0] * col[3] + inv[i, 1] * col[4] + inv[i, 2] * col[5]
+    for r in range(held):
         for j in range(held):
             entry = 0.0
             for i in range(6):
-                w_ri = normal[i, r] if r < n_normal else tangent[i, r - n_normal]
-                entry += w_ri * work[7 + j, i]
+                entry += work[r, i] * work[7 + j, i]
             matrix[r, j] = entry
+    minv = base
     if held > 0 and not solve_in_place(matrix, rhs, held):
         return False
     for i in range(6):
@@ -732,7 +749,7 @@ def normal_margin(par, rot, kind, lam):
         my = rot[0, 1] * lam[1] + rot[1, 1] * lam[2]
         if par[P_SHAPE] == SHAPE_BOX:
             return min(n, par[P_HALF_X] * n - abs(my), par[P_HALF_Y] * n - abs(mx))
-        return min(n, par[P_HALF_X] * n - math.hypot(mx, my))
+        return min(n, par[P_HALF_X] * n - norm2(mx, my))
     return 0.0
 
 
@@ -778,15 +795,28 @@ SC_PROBE = 18  # (3, 6) work outside a solve: arms of probed points, a projectio
 SLIP_FLOOR = 1e-6
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
-def new_scratch():
-    """The work arrays of the kernel, as one tuple (see the SC_* indices)."""
-    return (
-        np.zeros((3, 3)), np.zeros((3, 3)), np.zeros(6), np.zeros(6),
-        np.zeros((6, 3)), np.zeros(3), np.zeros((6, 3)), np.zeros(3), np.zeros((4, 3)),
-        np.zeros((13, 6)), np.zeros((6, 6)), np.zeros(6), np.zeros(6), np.zeros(6),
-        np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(6), np.zeros((3, 6)),
-    )  # fmt: skip
+#: the scratch's fields, in the order of the SC_* indices: one record, passed to a compiled
+#: function as one pointer (a tuple of its 19 arrays was passed as some 150 words, at every call)
+SCRATCH_DTYPE = np.dtype(
+    [
+        ("rot", "f8", (3, 3)), ("inv", "f8", (3, 3)), ("f0", "f8", 6), ("base", "f8", 6),
+        ("normal", "f8", (6, 3)), ("nbias", "f8", 3), ("tangent", "f8", (6, 3)),
+        ("tbias", "f8", 3), ("arms", "f8", (4, 3)), ("work", "f8", (13, 6)),
+        ("matrix", "f8", (6, 6)), ("rhs", "f8", 6), ("acc", "f8", 6), ("lam", "f8", 6),
+        ("svel", "f8", 3), ("sacc", "f8", 3), ("dir", "f8", 3), ("centre", "f8", 6),
+        ("probe", "f8", (3, 6)),
+    ],
+    align=True,
+)  # fmt: skip
+
+
+def new_scratch() -> np.void:
+    """The work arrays of the kernel, as one record (``sc[SC_ROT]``, ... see the SC_* indices).
+
+    A view of a one-element structured array (``SCRATCH_DTYPE``), which it
+    keeps alive; a compiled function receives it as a pointer to its data.
+    """
+    return np.zeros(1, dtype=SCRATCH_DTYPE)[0]
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -821,8 +851,7 @@ def scratch_rows(par, y, kind, index, psi, sc):
     """
     centre = sc[SC_CENTRE]
     reset_friction_centre(par, kind, index, centre)
-    return patch_rows(par, y, sc[SC_ROT], kind, index, psi, centre, sc[SC_NORMAL],
-                      sc[SC_NBIAS], sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS])  # fmt: skip
+    return patch_rows(par, y, sc, kind, index, psi)
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -851,36 +880,39 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     centre[5] = 0.0
     if kind != FACE and kind != EDGE:
         if kinetic:
-            direction = sc[SC_DIR]
-            if not slip_direction(y, n_tangent, stored, sc[SC_TANGENT], sc[SC_SVEL], direction):
+            own = sc[SC_DIR]
+            if not slip_direction(y, n_tangent, stored, sc[SC_TANGENT], sc[SC_SVEL], own):
                 centre[5] = 1.0
-        return solve_mode(par, sc[SC_INV], sc[SC_BASE], use_bias, slip, direction, sc[SC_NORMAL],
-                          sc[SC_NBIAS], n_normal, sc[SC_TANGENT], sc[SC_TBIAS], n_tangent,
-                          sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS], sc[SC_ACC],
-                          sc[SC_LAM])  # fmt: skip
-    # the scratch's arrays taken once: each take of a tuple's array is a reference count
-    rot, inv, base, normal, nbias = sc[SC_ROT], sc[SC_INV], sc[SC_BASE], sc[SC_NORMAL], sc[SC_NBIAS]
-    tangent, tbias, work, matrix = sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_WORK], sc[SC_MATRIX]
-    rhs, acc, lam, arms = sc[SC_RHS], sc[SC_ACC], sc[SC_LAM], sc[SC_ARMS]
+            return _solve_scratch(par, sc, use_bias, slip, own, n_normal, n_tangent)
+        return _solve_scratch(par, sc, use_bias, slip, direction, n_normal, n_tangent)
+    rot, base, tangent, acc, lam = sc[SC_ROT], sc[SC_BASE], sc[SC_TANGENT], sc[SC_ACC], sc[SC_LAM]
     svel, own = sc[SC_SVEL], sc[SC_DIR]
     for _ in range(CENTRE_ITERATIONS):
         if kinetic:
-            direction = own
-            if not slip_direction(y, n_tangent, stored, tangent, svel, direction):
+            if not slip_direction(y, n_tangent, stored, tangent, svel, own):
                 centre[5] = 1.0
-        ok = solve_mode(par, inv, base, use_bias, slip, direction, normal, nbias, n_normal,
-                        tangent, tbias, n_tangent, work, matrix, rhs, acc, lam)  # fmt: skip
+            ok = solve_mode(par, sc, base, use_bias, slip, own, n_normal, n_tangent, acc, lam)
+        else:
+            ok = solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, acc,
+                            lam)  # fmt: skip
         if not ok:
             return False
         if slip == 0:
             centre_stick_friction(par, rot, kind, index, n_normal, lam, centre)
-            tangent_rows(par, y, rot, centre, tangent, tbias, arms)
+            tangent_rows(par, y, sc)
             return True
         moved = move_friction_centre(par, rot, kind, index, lam, centre)
         if moved <= CENTRE_TOLERANCE * par[P_HALF_X]:
             return True
-        tangent_rows(par, y, rot, centre, tangent, tbias, arms)
+        tangent_rows(par, y, sc)
     return True
+
+
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _solve_scratch(par, sc, use_bias, slip, direction, n_normal, n_tangent):
+    """:func:`solve_mode` on the scratch's rows and work arrays, sliding along ``direction``."""
+    return solve_mode(par, sc, sc[SC_BASE], use_bias, slip, direction, n_normal, n_tangent,
+                      sc[SC_ACC], sc[SC_LAM])  # fmt: skip
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -946,9 +978,7 @@ def solve_at_centre(par, record, dt, t, y, mode, data, sc):
     (ok, normal rows, tangential rows).
     """
     n_normal, n_tangent = _prepare_held(par, record, dt, t, y, mode, data, sc)
-    ok = solve_mode(par, sc[SC_INV], sc[SC_BASE], True, 0, sc[SC_DIR], sc[SC_NORMAL],
-                    sc[SC_NBIAS], n_normal, sc[SC_TANGENT], sc[SC_TBIAS], n_tangent,
-                    sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS], sc[SC_ACC], sc[SC_LAM])  # fmt: skip
+    ok = _solve_scratch(par, sc, True, 0, sc[SC_DIR], n_normal, n_tangent)
     return ok, n_normal, n_tangent
 
 

@@ -66,16 +66,11 @@ from freestand.core.contact.body_kernel import (
     SC_DIR,
     SC_INV,
     SC_LAM,
-    SC_MATRIX,
-    SC_NBIAS,
-    SC_NORMAL,
     SC_PROBE,
-    SC_RHS,
     SC_ROT,
     SC_SVEL,
     SC_TANGENT,
     SC_TBIAS,
-    SC_WORK,
     SHAPE_BOX,
     SLIP_FLOOR,
     STATE_SIZE,
@@ -86,7 +81,6 @@ from freestand.core.contact.body_kernel import (
     flat_gap,
     friction_margin,
     lowest_rim_angle,
-    new_scratch,
     normal_margin,
     normal_total_rows,
     point_velocity,
@@ -717,9 +711,7 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
             speed += svel[k] ** 2
         if math.sqrt(speed) <= settle_below:
             held_tangent = n_tangent
-    if solve_mode(par, sc[SC_INV], base, False, 0, sc[SC_DIR], sc[SC_NORMAL], sc[SC_NBIAS],
-                  n_normal, sc[SC_TANGENT], sc[SC_TBIAS], held_tangent, sc[SC_WORK],
-                  sc[SC_MATRIX], sc[SC_RHS], after, lam):  # fmt: skip
+    if solve_mode(par, sc, base, False, 0, sc[SC_DIR], n_normal, held_tangent, after, lam):
         for i in range(6):
             y[7 + i] = after[i]
 
@@ -1268,15 +1260,18 @@ def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mo
 
 @nb.njit(cache=True, error_model="numpy", _nrt=True)
 def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol, t, y, mode,
-        data, istate, out_t, out_y, out_mode, out_force, ev_time, ev_kind, ev_before,
+        data, scratch, istate, out_t, out_y, out_mode, out_force, ev_time, ev_kind, ev_before,
         ev_after):  # fmt: skip
     """The loop: advance, locate, resolve, record, from t to t_end.
 
-    Returns the time reached; ``istate[I_STATUS]`` says why it stopped
-    (completed, overturned, or the output buffer full: call again with larger
-    buffers from the returned time and state).
+    ``scratch`` is a one-element array of
+    :data:`~freestand.core.contact.body_kernel.SCRATCH_DTYPE`, its record the
+    kernel's scratch, owned by the caller. Returns the time reached;
+    ``istate[I_STATUS]`` says why it stopped (completed, overturned, or the
+    output buffer full: call again with larger buffers from the returned time
+    and state).
     """
-    sc = new_scratch()
+    sc = scratch[0]
     k = np.zeros((5, STATE_SIZE))
     out = np.zeros(STATE_SIZE)
     trial = np.zeros(STATE_SIZE)

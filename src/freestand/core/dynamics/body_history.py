@@ -19,6 +19,7 @@ from freestand.core.contact.body_kernel import (
     FACE,
     FREE,
     PIVOT_LEAN,
+    SCRATCH_DTYPE,
     STATE_SIZE,
     body_parameters,
 )
@@ -307,6 +308,7 @@ def simulate_body(
     mode = np.zeros(3, dtype=np.int64)
     data = np.zeros(DATA_SIZE)
     istate = np.zeros(engine.I_SIZE, dtype=np.int64)
+    scratch = np.zeros(1, dtype=SCRATCH_DTYPE)  # its record is the kernel's scratch
     # a step ends at max_step, at every break of the record and at every event
     capacity = int(end / step * 1.1) + 2 * int(np.count_nonzero(breaks < end)) + 64
     buffers = _buffers(capacity)
@@ -316,7 +318,7 @@ def simulate_body(
     chunks = []
     while True:
         t = engine.run(par, record, motion.time_step, breaks, step, end, motion.duration,
-                       tolerances.gap, tolerances.velocity, t, y, mode, data, istate,
+                       tolerances.gap, tolerances.velocity, t, y, mode, data, scratch, istate,
                        *buffers, *events)  # fmt: skip
         if istate[engine.I_STATUS] != engine.STATUS_BUFFER_FULL:
             chunks.append(tuple(b[: istate[engine.I_RECORDS]] for b in buffers))

@@ -65,6 +65,7 @@ from freestand.core.body import Body, Box, base_ray_distance
 from freestand.core.contact.body_kernel import (
     DATA_SIZE,
     P_MASS,
+    SCRATCH_DTYPE,
     STATE_SIZE,
     body_parameters,
     energy,
@@ -336,7 +337,7 @@ def _inertial_work(par, record, dt, out_t, out_y, count):
 
 @nb.njit(cache=True)
 def _run_to(par, record, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol, t, y,
-            mode, data, istate, buffers, events, work):  # fmt: skip
+            mode, data, scratch, istate, buffers, events, work):  # fmt: skip
     """The engine from t to ``t_end`` (or overturning); adds the inertial work to ``work[0]``.
 
     The output buffer is reused: after each call of the engine its rows are
@@ -346,8 +347,8 @@ def _run_to(par, record, dt, breaks, h_max, t_end, record_end, gap_tol, velocity
     ev_time, ev_kind, ev_before, ev_after = events
     while True:
         t = engine.run(par, record, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol,
-                       t, y, mode, data, istate, out_t, out_y, out_mode, out_force, ev_time,
-                       ev_kind, ev_before, ev_after)  # fmt: skip
+                       t, y, mode, data, scratch, istate, out_t, out_y, out_mode, out_force,
+                       ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
         last = istate[engine.I_RECORDS] - 1
         work[0] += _inertial_work(par, record, dt, out_t, out_y, last + 1)
         out_t[0] = out_t[last]
@@ -408,6 +409,7 @@ def _pulse_outcome(context, amplitude):
     mode = np.zeros(3, dtype=np.int64)
     data = np.zeros(DATA_SIZE)
     istate = np.zeros(engine.I_SIZE, dtype=np.int64)
+    scratch = np.zeros(1, dtype=SCRATCH_DTYPE)  # the engine's scratch, alive for both runs
     buffers = (np.zeros(_BUFFER), np.zeros((_BUFFER, STATE_SIZE)),
                np.zeros((_BUFFER, 3), dtype=np.int64), np.zeros((_BUFFER, 2)))  # fmt: skip
     events = (np.zeros(0), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64),
@@ -416,7 +418,7 @@ def _pulse_outcome(context, amplitude):
     slack = ENERGY_SLACK * (e_barrier - e_rest)
     counters[_SIMULATIONS] += 1
     t = _run_to(par, record, dt, breaks, h_max, length, length, gap_tol, velocity_tol, 0.0, y,
-                mode, data, istate, buffers, events, work)  # fmt: skip
+                mode, data, scratch, istate, buffers, events, work)  # fmt: skip
     e = energy(par, y)
     margin = (e - e_rest) / (e_barrier - e_rest)
     end = length + free_time
@@ -424,7 +426,7 @@ def _pulse_outcome(context, amplitude):
            and _sound(e, e_rest, work, slack)):  # fmt: skip
         t_next = min(t + _CHECK_STEPS * h_max, end)
         t = _run_to(par, record, dt, breaks, h_max, t_next, length, gap_tol, velocity_tol, t, y,
-                    mode, data, istate, buffers, events, work)  # fmt: skip
+                    mode, data, scratch, istate, buffers, events, work)  # fmt: skip
         e = energy(par, y)
     counters[_REMEDIES] += istate[engine.I_REMEDIES]
     counters[_STRETCH_STEPS] += istate[engine.I_STRETCH_STEPS]
