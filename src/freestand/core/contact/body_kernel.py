@@ -885,17 +885,12 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
                 centre[5] = 1.0
             return _solve_scratch(par, sc, use_bias, slip, own, n_normal, n_tangent)
         return _solve_scratch(par, sc, use_bias, slip, direction, n_normal, n_tangent)
-    rot, base, tangent, acc, lam = sc[SC_ROT], sc[SC_BASE], sc[SC_TANGENT], sc[SC_ACC], sc[SC_LAM]
-    svel, own = sc[SC_SVEL], sc[SC_DIR]
+    if kind == EDGE and slip == 1:
+        return _slide_edge(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent)
+    rot, lam = sc[SC_ROT], sc[SC_LAM]
     for _ in range(CENTRE_ITERATIONS):
-        if kinetic:
-            if not slip_direction(y, n_tangent, stored, tangent, svel, own):
-                centre[5] = 1.0
-            ok = solve_mode(par, sc, base, use_bias, slip, own, n_normal, n_tangent, acc, lam)
-        else:
-            ok = solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, acc,
-                            lam)  # fmt: skip
-        if not ok:
+        if not _solve_at_rows(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal,
+                              n_tangent):  # fmt: skip
             return False
         if slip == 0:
             centre_stick_friction(par, rot, kind, index, n_normal, lam, centre)
@@ -906,6 +901,82 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
             return True
         tangent_rows(par, y, sc)
     return True
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _solve_at_rows(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal, n_tangent):
+    """One solve on the scratch's rows (:func:`solve_patch`'s u); flags a stored direction read."""
+    if kinetic:
+        own = sc[SC_DIR]
+        if not slip_direction(y, n_tangent, stored, sc[SC_TANGENT], sc[SC_SVEL], own):
+            sc[SC_CENTRE][5] = 1.0
+        return _solve_scratch(par, sc, use_bias, slip, own, n_normal, n_tangent)
+    return _solve_scratch(par, sc, use_bias, slip, direction, n_normal, n_tangent)
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _slide_edge(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent):
+    """A sliding EDGE solved with its friction at its centre of pressure (:func:`solve_patch`).
+
+    The centre is the share sigma in [0, 1] along the edge (from its first
+    corner); the solve at sigma puts the centre of pressure at F(sigma), also
+    in [0, 1], and the root of ``g = F(sigma) - sigma`` is found by the
+    secant method, safeguarded by bisection on the bracket that the signs of
+    g keep (g(0) >= 0 >= g(1): a root always lies inside). The first step
+    is the fixed point's, sigma = F(sigma). The plain fixed-point steps
+    settled slowly or not at all: four sliding edges in five took all
+    ``CENTRE_ITERATIONS`` solves, and their slides more than half of a
+    rocking cabinet's solves.
+    """
+    centre, lam = sc[SC_CENTRE], sc[SC_LAM]
+    index = int(centre[4])
+    ax, ay = box_corner(par, index)
+    bx, by = box_corner(par, (index + 1) % 4)
+    length = math.sqrt((bx - ax) ** 2 + (by - ay) ** 2)
+    tolerance = CENTRE_TOLERANCE * par[P_HALF_X] / length  # on sigma
+    share = ((centre[0] - ax) * (bx - ax) + (centre[1] - ay) * (by - ay)) / (length * length)
+    low, high = 0.0, 1.0
+    previous, g_previous = math.nan, math.nan
+    for i in range(CENTRE_ITERATIONS):
+        if not _solve_at_rows(par, y, sc, use_bias, 1, direction, kinetic, stored, n_normal,
+                              n_tangent):  # fmt: skip
+            return False
+        total = lam[0] + lam[1]
+        if total <= 0.0:
+            return True  # no centre of pressure: the centre stays
+        g = min(max(lam[1] / total, 0.0), 1.0) - share
+        if abs(g) <= tolerance:
+            _edge_centre(par, index, share + g, ax, ay, bx, by, centre)
+            return True
+        if g > 0.0:
+            low = max(low, share)
+        else:
+            high = min(high, share)
+        following = share + g  # the fixed point's step
+        if i > 0 and g != g_previous:
+            following = share - g * (share - previous) / (g - g_previous)
+        # inside the bracket; at its end only where that end is the edge's corner, not yet
+        # solved (a corner that lifts: the centre of pressure reaches it, g = 1 - sigma)
+        if not low < following < high:
+            if following >= high and high == 1.0 and share < 1.0:
+                following = 1.0
+            elif following <= low and low == 0.0 and share > 0.0:
+                following = 0.0
+            else:
+                following = 0.5 * (low + high)
+        previous, g_previous = share, g
+        share = following
+        _edge_centre(par, index, share, ax, ay, bx, by, centre)
+        tangent_rows(par, y, sc)
+    return True
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _edge_centre(par, index, share, ax, ay, bx, by, centre):
+    """The friction centre at ``share`` along the edge from (ax, ay) to (bx, by), with its rho."""
+    centre[0] = ax + share * (bx - ax)
+    centre[1] = ay + share * (by - ay)
+    centre[2] = effective_twist_radius(par, EDGE, index, centre[0], centre[1])
 
 
 @nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
@@ -966,7 +1037,7 @@ def slip_direction(y, n_tangent, data, tangent, svel, direction):
 
 
 @nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
-def _prepare_held(par, record, dt, t, y, mode, data, sc):
+def prepare_held(par, record, dt, t, y, mode, data, sc):
     """:func:`prepare` for the held mode at (t, y), its pivot at the stored rim angle's point."""
     kind = mode[M_KIND]
     rot = sc[SC_ROT]
@@ -983,7 +1054,7 @@ def solve_at(par, record, dt, t, y, mode, data, sc):
     and its friction acts about its centre of pressure (:func:`solve_patch`).
     Returns (ok, normal rows, tangential rows).
     """
-    n_normal, n_tangent = _prepare_held(par, record, dt, t, y, mode, data, sc)
+    n_normal, n_tangent = prepare_held(par, record, dt, t, y, mode, data, sc)
     ok = solve_patch(par, y, sc, True, mode[M_SLIP], sc[SC_DIR], mode[M_SLIP] == 1, data,
                      n_normal, n_tangent)  # fmt: skip
     return ok, n_normal, n_tangent
@@ -998,7 +1069,7 @@ def solve_at_centre(par, record, dt, t, y, mode, data, sc):
     expresses their friction about the centre of pressure. Returns
     (ok, normal rows, tangential rows).
     """
-    n_normal, n_tangent = _prepare_held(par, record, dt, t, y, mode, data, sc)
+    n_normal, n_tangent = prepare_held(par, record, dt, t, y, mode, data, sc)
     ok = _solve_scratch(par, sc, True, 0, sc[SC_DIR], n_normal, n_tangent)
     return ok, n_normal, n_tangent
 

@@ -85,6 +85,7 @@ from freestand.core.contact.body_kernel import (
     normal_total_rows,
     point_velocity,
     prepare,
+    prepare_held,
     rate,
     reset_friction_centre,
     rim_angle,
@@ -693,7 +694,10 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     FACE: the tilt is removed (a pure yaw) and the base set on the support;
     EDGE and POINT: the centre of gravity shifted vertically by the held
     points' mean gap. Velocities: the least-kinetic-energy change that makes
-    the held rows' velocities vanish (a plastic impact on the held rows).
+    the held rows' velocities vanish (a plastic impact on the held rows), on
+    the rows at the patch's geometric centre (a sticking patch's rows hold
+    it still about any centre). The scratch is left with those rows, not a
+    solve: every caller solves the mode at the projected state next.
     """
     kind = mode[M_KIND]
     if kind == FREE:
@@ -716,7 +720,8 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
         radius = par[P_HALF_X]
         arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
         y[2] -= y[2] + d[2]
-    ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
+    # the held rows at the projected state (every caller solves the mode there next)
+    n_normal, n_tangent = prepare_held(par, record, dt, t, y, mode, data, sc)
     base, after, lam = probe[0], probe[1], probe[2]  # the velocity before, after; impulses
     for i in range(6):
         base[i] = y[7 + i]
