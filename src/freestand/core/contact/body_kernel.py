@@ -214,14 +214,16 @@ def rotation_matrix(y, out):
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
 def world_inverse_inertia(par, rot, out):
-    """I_w^-1 = R I^-1 R^T (3, 3) [1/(kg m^2)]."""
+    """I_w^-1 = R I^-1 R^T (3, 3) [1/(kg m^2)]: T = R I^-1, then T R^T (symmetric)."""
     for i in range(3):
-        for j in range(3):
-            total = 0.0
-            for k in range(3):
-                for m in range(3):
-                    total += rot[i, k] * par[P_INVERSE + 3 * k + m] * rot[j, m]
+        r0, r1, r2 = rot[i, 0], rot[i, 1], rot[i, 2]
+        t0 = r0 * par[P_INVERSE] + r1 * par[P_INVERSE + 3] + r2 * par[P_INVERSE + 6]
+        t1 = r0 * par[P_INVERSE + 1] + r1 * par[P_INVERSE + 4] + r2 * par[P_INVERSE + 7]
+        t2 = r0 * par[P_INVERSE + 2] + r1 * par[P_INVERSE + 5] + r2 * par[P_INVERSE + 8]
+        for j in range(i, 3):
+            total = t0 * rot[j, 0] + t1 * rot[j, 1] + t2 * rot[j, 2]
             out[i, j] = total
+            out[j, i] = total
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
