@@ -867,7 +867,9 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     centre of pressure (:func:`centre_stick_friction`). Sliding, the friction
     ``-mu N u`` acts at the centre of pressure, which the solution moves: the
     rows are rebuilt at the centre and solved again until it settles
-    (``CENTRE_TOLERANCE``, at most ``CENTRE_ITERATIONS`` solves). ``kinetic``:
+    (``CENTRE_TOLERANCE``, at most ``CENTRE_ITERATIONS`` solves), a FACE's by
+    the fixed point's steps, an EDGE's by a secant on its share along the
+    edge (:func:`_slide_edge`). ``kinetic``:
     the slip direction u is the slip velocity's at each centre
     (:func:`slip_direction`, ``stored`` its fallback, as mode data); else u
     is ``direction`` as given. The patch is the one whose rows the scratch
