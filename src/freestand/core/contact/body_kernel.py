@@ -883,12 +883,8 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     index = int(centre[4])
     centre[5] = 0.0
     if kind != FACE and kind != EDGE:
-        if kinetic:
-            own = sc[SC_DIR]
-            if not slip_direction(y, n_tangent, stored, sc[SC_TANGENT], sc[SC_SVEL], own):
-                centre[5] = 1.0
-            return _solve_scratch(par, sc, use_bias, slip, own, n_normal, n_tangent)
-        return _solve_scratch(par, sc, use_bias, slip, direction, n_normal, n_tangent)
+        return _solve_at_rows(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal,
+                              n_tangent)  # fmt: skip
     if kind == EDGE and slip == 1:
         return _slide_edge(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent)
     rot, lam = sc[SC_ROT], sc[SC_LAM]
