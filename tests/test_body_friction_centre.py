@@ -175,3 +175,66 @@ def test_a_patch_s_kind_is_the_one_its_rows_were_built_for():
     assert (centre[3], centre[4]) == (bk.EDGE, 2)
     assert (centre[0], centre[1]) == (0.0, -0.3)  # edge 2's midpoint
     assert centre[2] == pytest.approx(0.25)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    tilt=st.floats(0.01, 0.4), yaw=st.floats(-0.3, 0.3),
+    velocity=st.lists(st.floats(-0.5, 0.5), min_size=6, max_size=6),
+    push=st.lists(st.floats(-6.0, 6.0), min_size=3, max_size=3),
+    share=st.floats(0.0, 1.0), stored=st.floats(-math.pi, math.pi),
+)  # fmt: skip
+def test_a_sliding_edge_s_share_map_is_its_full_solve_s(tilt, yaw, velocity, push, share, stored):
+    # edge 2 (corners 2 and 3, along x at y = -b_y) tilted down: F(sigma), the centre of
+    # pressure's share with the friction at sigma, from the 2 x 2 system of
+    # body_kernel.edge_share against the full solve on rows built at sigma (tolerance:
+    # round-off of two eliminations, 1e-9 of the share)
+    par = bk.body_parameters(BOX, G)
+    y = initial_state(BOX, (tilt, 0.0))
+    y[3:7] = (y[3] * math.cos(0.5 * yaw), y[4] * math.cos(0.5 * yaw),
+              y[4] * math.sin(0.5 * yaw), y[3] * math.sin(0.5 * yaw))  # fmt: skip
+    y[7:13] = velocity
+    record = np.repeat(np.asarray(push)[:, None], 2, axis=1)
+    data = np.zeros(bk.DATA_SIZE)
+    data[bk.D_SLIP : bk.D_SLIP + 3] = math.cos(stored), math.sin(stored), 0.0
+    sc = bk.new_scratch()
+    n_normal, n_tangent = bk.prepare(par, record, 1.0, 0.0, y, bk.EDGE, 2, 0.0, sc)
+    bk.edge_slide_terms(par, y, sc, True)
+    direction = np.zeros(3)
+    quick = bk.edge_share(par, sc, 2, share, direction, True, data)
+    ax, ay = bk.box_corner(par, 2)
+    bx, by = bk.box_corner(par, 3)
+    centre = sc[bk.SC_CENTRE]
+    centre[0], centre[1] = ax + share * (bx - ax), ay + share * (by - ay)
+    centre[2] = bk.effective_twist_radius(par, bk.EDGE, 2, centre[0], centre[1])
+    bk.tangent_rows(par, y, sc)
+    u = np.zeros(3)
+    bk.slip_direction(y, n_tangent, data, sc[bk.SC_TANGENT], np.zeros(3), u)
+    assert bk.solve_mode(par, sc, sc[bk.SC_BASE], True, 1, u, n_normal, n_tangent,
+                         np.zeros(6), lam := np.zeros(6))  # fmt: skip
+    total = lam[0] + lam[1]
+    if total <= 1e-9 * BOX.mass * G:
+        assert math.isnan(quick) or total > 0.0  # no centre of pressure
+        return
+    assert quick == pytest.approx(min(max(lam[1] / total, 0.0), 1.0), abs=1e-9)
+
+
+def test_a_sliding_edge_settles_at_its_centre_of_pressure():
+    # a tilted box sliding and twisting on edge 2: the solve's friction centre is the
+    # centre of pressure of its own normal forces (to CENTRE_TOLERANCE, 1e-12 of b_x)
+    par = bk.body_parameters(BOX, G)
+    y = initial_state(BOX, (0.2, 0.0))
+    y[7:13] = 0.3, -0.1, 0.0, 0.0, 0.0, 0.8
+    sc = bk.new_scratch()
+    mode = np.array([bk.EDGE, 2, 1], dtype=np.int64)
+    data = np.zeros(bk.DATA_SIZE)
+    data[bk.D_SLIP] = 1.0
+    ok, _, _ = bk.solve_at(par, np.zeros((3, 2)), 1.0, 0.0, y, mode, data, sc)
+    assert ok
+    lam, centre = sc[bk.SC_LAM], sc[bk.SC_CENTRE]
+    share = lam[1] / (lam[0] + lam[1])
+    assert 0.0 < share < 1.0  # the twist moves it off the midpoint, not to a corner
+    assert share != pytest.approx(0.5, abs=1e-3)
+    ax, _ = bk.box_corner(par, 2)
+    bx, _ = bk.box_corner(par, 3)
+    assert centre[0] == pytest.approx(ax + share * (bx - ax), abs=1e-11)
