@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 
+import numba as nb
 import numpy as np
 
 from freestand.core.body import Body, Box
@@ -389,17 +390,62 @@ def body_motion(body: Body, state: np.ndarray) -> BodyMotion:
     about the vertical followed by a swing of the axis), the base centre
     ``r - R c`` with c the centre of gravity in the body frame.
     """
-    state = np.asarray(state, dtype=float)
-    w, qx, qy, qz = state[:, 3], state[:, 4], state[:, 5], state[:, 6]
-    cos_tilt = 1.0 - 2.0 * (qx**2 + qy**2)
-    tilt = np.arccos(np.clip(cos_tilt, -1.0, 1.0))
-    twist = np.unwrap(2.0 * np.arctan2(qz, w))
-    twist -= twist[0]
-    rot = rotation_matrices(state[:, 3:7])
-    # base centre = r - R c
-    base = state[:, 0:3] - rot @ np.asarray(body.centre)
-    lowest, highest = _base_heights(body, rot, base)
-    return BodyMotion(tilt, base[:, 0:2] - base[0, 0:2], twist, lowest, highest)
+    state = np.ascontiguousarray(state, dtype=float)
+    if isinstance(body.shape, Box):
+        outline, radius = np.ascontiguousarray(body.shape.base_corners(), dtype=float), 0.0
+    else:
+        outline, radius = np.zeros((0, 3)), float(body.shape.radius)
+    count = state.shape[0]
+    tilt, twist, lowest, highest = (np.empty(count) for _ in range(4))
+    slide = np.empty((count, 2))
+    _motion_rows(state, np.asarray(body.centre, dtype=float), outline, radius, tilt, slide, twist,
+                 lowest, highest)  # fmt: skip
+    return BodyMotion(tilt, slide, twist, lowest, highest)
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, highest):
+    """:func:`body_motion`'s arrays in one pass over the states (its Notes).
+
+    ``outline``: a box's base corners in the body frame (K, 3), or none and
+    the rim's ``radius`` [m]. The twist is unwrapped as ``numpy.unwrap``
+    (a jump above pi between two states is taken the other way round).
+    """
+    first_x, first_y, previous = 0.0, 0.0, 0.0
+    for i in range(state.shape[0]):
+        w, x, y, z = state[i, 3], state[i, 4], state[i, 5], state[i, 6]
+        # the rotation's rows (body to support frame)
+        r00, r01, r02 = 1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y)
+        r10, r11, r12 = 2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x)
+        r20, r21, r22 = 2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y)
+        tilt[i] = math.acos(min(max(r22, -1.0), 1.0))
+        # the base centre r - R c
+        bx = state[i, 0] - (r00 * centre[0] + r01 * centre[1] + r02 * centre[2])
+        by = state[i, 1] - (r10 * centre[0] + r11 * centre[1] + r12 * centre[2])
+        bz = state[i, 2] - (r20 * centre[0] + r21 * centre[1] + r22 * centre[2])
+        if i == 0:
+            first_x, first_y = bx, by
+        slide[i, 0] = bx - first_x
+        slide[i, 1] = by - first_y
+        angle = 2.0 * math.atan2(z, w)
+        if i == 0:
+            twist[i] = 0.0
+        else:
+            jump = angle - previous
+            turn = (jump + math.pi) % (2.0 * math.pi) - math.pi
+            if turn == -math.pi and jump > 0.0:
+                turn = math.pi
+            twist[i] = twist[i - 1] + (turn if abs(jump) >= math.pi else jump)
+        previous = angle
+        if outline.shape[0] > 0:
+            low, high = math.inf, -math.inf
+            for k in range(outline.shape[0]):
+                height = r20 * outline[k, 0] + r21 * outline[k, 1] + r22 * outline[k, 2] + bz
+                low, high = min(low, height), max(high, height)
+            lowest[i], highest[i] = low, high
+        else:
+            reach = radius * math.hypot(r20, r21)
+            lowest[i], highest[i] = bz - reach, bz + reach
 
 
 def lost_contact_depth(width: float, gap: float) -> float:
@@ -493,16 +539,6 @@ def rotation_matrices(quaternions: np.ndarray) -> np.ndarray:
         np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
         np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1),
     ], axis=1)  # fmt: skip
-
-
-def _base_heights(body, rot, base) -> tuple[np.ndarray, np.ndarray]:
-    """Heights [m] of the lowest and the highest base point above the support, per sample."""
-    if isinstance(body.shape, Box):
-        corners = body.shape.base_corners()
-        z = np.einsum("kj,nj->kn", rot[:, 2, :], corners) + base[:, 2:3]
-        return z.min(axis=1), z.max(axis=1)
-    reach = body.shape.radius * np.hypot(rot[:, 2, 0], rot[:, 2, 1])
-    return base[:, 2] - reach, base[:, 2] + reach
 
 
 def run_body_history(
