@@ -67,7 +67,7 @@ def _released(shape, mu, ratio, tilt, duration=3.0):
 
 
 # Released bodies that once broke the engine: a slip onset whose fixed point cycles
-# (the slip direction by scan and bisection), a remedy loop (the velocity-level impact
+# (the slip direction by scan and regula falsi), a remedy loop (the velocity-level impact
 # and the time-stepping stretch), a slow edge slip that made RK4 oscillate, a slender
 # cylinder whose lean whirls near flat (the rim point swings round the rim), a squat
 # cylinder rocking back to flat whose lean passes 3.5e-7 rad beside the vertical (a

@@ -201,7 +201,7 @@ def _onset_consistent(along, across, size, rate_tol):
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol):
-    """Two tangential rows (a point): the onset angle by a scan and bisection.
+    """Two tangential rows (a point): the onset angle by a scan and regula falsi.
 
     f(theta) = u_perp . s'(u), u = (cos theta, sin theta), changes sign at every
     direction the slip rate is parallel to; of those where it points along u
@@ -215,8 +215,8 @@ def _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol):
         theta = theta0 + 2.0 * math.pi * i / ONSET_SCAN
         value = _onset_sign(par, y, sc, level, n_normal, theta, direction)
         if i > 0 and value * previous <= 0.0:
-            root = _onset_bisect(par, y, sc, level, n_normal, theta - 2.0 * math.pi / ONSET_SCAN,
-                                 theta, previous, direction)  # fmt: skip
+            root = _onset_root(par, y, sc, level, n_normal, theta - 2.0 * math.pi / ONSET_SCAN,
+                                 theta, previous, value, direction)  # fmt: skip
             direction[0] = math.cos(root)
             direction[1] = math.sin(root)
             along, across, size = _onset_rate(par, y, sc, level, n_normal, 2, direction)
@@ -245,17 +245,49 @@ def _onset_sign(par, y, sc, level, n_normal, theta, direction):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _onset_bisect(par, y, sc, level, n_normal, low, high, f_low, direction):
+def _onset_root(par, y, sc, level, n_normal, low, high, f_low, f_high, direction):
+    """The root of :func:`_onset_sign` in [low, high] (its values there f_low, f_high, of
+    opposite signs or zero) to 1e-14 rad.
+
+    Regula falsi, Anderson and Bjorck's variant (BIT 12, 1972: the retained
+    end's value scaled by ``1 - f_new / f_old``, else halved), bisecting
+    where a value is not finite (a singular system); some 8 solves per root
+    where bisection took 47.
+    """
+    if f_low == 0.0:
+        return low
+    if f_high == 0.0:
+        return high
+    side = 0
     for _ in range(60):
-        middle = 0.5 * (low + high)
-        f_mid = _onset_sign(par, y, sc, level, n_normal, middle, direction)
-        if f_mid * f_low <= 0.0:
-            high = middle
-        else:
-            low, f_low = middle, f_mid
         if high - low < 1e-14:
             break
+        middle = 0.5 * (low + high)
+        if math.isfinite(f_low) and math.isfinite(f_high) and f_low != f_high:
+            middle = min(max(low - f_low * (high - low) / (f_high - f_low), low), high)
+        if not low < middle < high:
+            middle = 0.5 * (low + high)
+        f_mid = _onset_sign(par, y, sc, level, n_normal, middle, direction)
+        if f_mid == 0.0:
+            return middle
+        if f_mid * f_low < 0.0:
+            if side == -1:
+                f_low *= _retained_scale(f_mid, f_high)
+            side = -1
+            high, f_high = middle, f_mid
+        else:
+            if side == 1:
+                f_high *= _retained_scale(f_mid, f_low)
+            side = 1
+            low, f_low = middle, f_mid
     return 0.5 * (low + high)
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _retained_scale(f_new, f_old):
+    """Anderson-Bjorck's scale of a retained end's value: ``1 - f_new / f_old``, else 1/2."""
+    scale = 1.0 - f_new / f_old if f_old != 0.0 and math.isfinite(f_old) else 0.5
+    return scale if scale > 0.0 else 0.5
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)

@@ -567,6 +567,13 @@ def _trial_time(low, high, g_low, g_high):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _retained_scale(g_new, g_old):
+    """Anderson-Bjorck's scale of the retained end's value: 1 - g_new / g_old, else 1/2."""
+    scale = 1.0 - g_new / g_old if g_old != 0.0 else 0.5
+    return scale if scale > 0.0 else 0.5
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count, trial,
            values, kinds, bracket, out):  # fmt: skip
     """Phase 2: the earliest crossing of an event function within the step.
@@ -613,23 +620,25 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
                 high_values[i] = values[i]
             for i in range(STATE_SIZE):
                 out[i] = trial[i]
+            g_trial = high_values[fired] - levels[fired]
             if fired != target:
                 target = fired
                 side = 0
                 g_low = low_values[target] - levels[target]
             elif side == -1:
-                g_low *= 0.5
+                g_low *= _retained_scale(g_trial, g_high)
             else:
                 side = -1
-            g_high = high_values[target] - levels[target]
+            g_high = g_trial
         else:
             low = middle
             for i in range(n):
                 low_values[i] = values[i]
+            g_trial = low_values[target] - levels[target]
             if side == 1:
-                g_high *= 0.5
+                g_high *= _retained_scale(g_trial, g_low)
             side = 1
-            g_low = low_values[target] - levels[target]
+            g_low = g_trial
     # the solve at the event's state (the caller's next phase reads the scratch)
     event_functions(par, record, dt, t + high, out, mode, data, sc, ref, values, kinds)
     return high, kinds[target]
