@@ -34,6 +34,7 @@ from __future__ import annotations
 import numba as nb
 import numpy as np
 
+from freestand.core.contact.engine import solve_symmetric_in_place
 from freestand.core.contact.vectors import norm2
 
 NEWTON_ITERATIONS = 30  # at most
@@ -130,22 +131,40 @@ def _function(count, mu, rho_n, rho_t, delassus, free, impulses, speeds, residua
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=True)
-def _least_squares_step(jacobian, residual):
-    """The Newton step ``-J^+ F``, by the normal equations regularised by ``REGULARISATION``.
+def _least_squares_step(jacobian, residual, normal, step):
+    """The Newton step ``-J^+ F`` in ``step``, by the normal equations regularised by
+    ``REGULARISATION``.
 
     ``(J^T J + lambda I) s = -J^T F`` with lambda ``REGULARISATION`` times
     the largest diagonal of ``J^T J``: where J is singular (impulses moving
     between points without moving the body) the step's component along its
     null space vanishes, as the minimum-norm least-squares step's does, at a
-    tenth of the cost of a singular value decomposition.
+    tenth of the cost of a singular value decomposition. Solved in place by
+    ``L D L^T`` (``normal`` is work space); where round-off leaves a pivot
+    that is not positive, by LU with pivoting.
     """
-    normal = jacobian.T @ jacobian
+    n = jacobian.shape[0]
     largest = 0.0
-    for i in range(normal.shape[0]):
+    for i in range(n):
+        for j in range(i + 1):
+            total = 0.0
+            for r in range(n):
+                total += jacobian[r, i] * jacobian[r, j]
+            normal[i, j] = total
+            normal[j, i] = total
         largest = max(largest, normal[i, i])
-    for i in range(normal.shape[0]):
+        total = 0.0
+        for r in range(n):
+            total -= jacobian[r, i] * residual[r]
+        step[i] = total
+    for i in range(n):
         normal[i, i] += REGULARISATION * largest + 1e-300
-    return np.linalg.solve(normal, -(jacobian.T @ residual))
+    if solve_symmetric_in_place(normal, step, n):
+        return
+    matrix = jacobian.T @ jacobian
+    for i in range(n):
+        matrix[i, i] += REGULARISATION * largest + 1e-300
+    step[:] = np.linalg.solve(matrix, -(jacobian.T @ residual))
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -203,11 +222,13 @@ def solve_alart_curnier(count, mu, delassus, free, impulses, velocity_tolerance,
     trial = np.empty(n3)
     trial_residual = np.empty(n3)
     trial_jacobian = np.empty((n3, n3))
+    normal = np.empty((n3, n3))
+    step = np.empty(n3)
     norm = _function(count, mu, rho_n, rho_t, delassus, free, impulses, speeds, residual, jacobian)
     for _iteration in range(NEWTON_ITERATIONS):
         if norm <= impulse_tolerance**2:
             break
-        step = _least_squares_step(jacobian, residual)
+        _least_squares_step(jacobian, residual, normal, step)
         fraction = 1.0
         accepted = False
         for _halving in range(LINE_SEARCH_HALVINGS):

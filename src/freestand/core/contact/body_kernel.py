@@ -381,8 +381,8 @@ def _angular_row(e0, e1, e2, rows, bias, k):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
-def rim_terms(par, y, rot, psi):
-    """The moving rim point's extra acceleration terms (z, x, y) [m/s^2].
+def rim_terms(par, y, rot, cos_psi, sin_psi):
+    """The moving rim point's extra acceleration terms (z, x, y) [m/s^2] (rim angle psi).
 
     With t the rim tangent at the contact point, ``psi' = -e_z.(omega x R t)/sigma``
     and ``R s*' = R_b psi' R t``: the terms are ``omega x (R s*')``; zero when
@@ -392,9 +392,9 @@ def rim_terms(par, y, rot, psi):
     """
     if sin_tilt(rot) <= PIVOT_LEAN:
         return 0.0, 0.0, 0.0
-    s = -(rot[2, 0] * math.cos(psi) + rot[2, 1] * math.sin(psi))
-    tx = -math.sin(psi)
-    ty = math.cos(psi)
+    s = -(rot[2, 0] * cos_psi + rot[2, 1] * sin_psi)
+    tx = -sin_psi
+    ty = cos_psi
     t0 = rot[0, 0] * tx + rot[0, 1] * ty
     t1 = rot[1, 0] * tx + rot[1, 1] * ty
     t2 = rot[2, 0] * tx + rot[2, 1] * ty
@@ -431,8 +431,9 @@ def patch_rows(par, y, sc, kind, index, psi):
             zt, xt, yt = 0.0, 0.0, 0.0
         else:
             radius = par[P_HALF_X]
-            arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, arms[0])
-            zt, xt, yt = rim_terms(par, y, rot, psi)
+            cos_psi, sin_psi = math.cos(psi), math.sin(psi)
+            arm(par, rot, radius * cos_psi, radius * sin_psi, 0.0, arms[0])
+            zt, xt, yt = rim_terms(par, y, rot, cos_psi, sin_psi)
         for i in range(3):
             d[i] = arms[0, i]
         _point_row(y, arms[0], 0.0, 0.0, 1.0, zt, normal, nbias, 0)
