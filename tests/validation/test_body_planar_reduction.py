@@ -133,6 +133,25 @@ def test_squat_cylinder_slides_along_the_line_of_an_oblique_motion():
     assert result.max_slide == pytest.approx(axis.max_slide, rel=1e-6)
 
 
+@pytest.mark.parametrize("angle", [0.3, 1.0, 0.25 * math.pi])
+def test_a_slip_from_rest_slides_as_newmarks_block_in_every_direction(angle):
+    # Newmark (1965): a squat cylinder (R 0.875 m, H 1.25 m, mu 0.625) under one cycle of
+    # 9 m/s^2 at 1 Hz slides as the rigid block, whatever the motion's direction. Slow, a
+    # slip turns at mu g / |s|: RK4's 5 ms steps were unstable on that rate, a sideways
+    # slip grew from round-off to 4 mm/s at 1 rad, and the cylinder slid 1.8 % too far
+    # (body_engine.slip_stiffness). Tolerance 1e-6, as the cylinder's slide above.
+    dt = 0.005
+    time = np.arange(0.0, 2.0, dt)
+    pulse = np.where(time <= 1.0, 9.0 * np.sin(2.0 * np.pi * time), 0.0)
+    body = Body("squat", Cylinder(0.875, 1.25), 1000.0, Friction(0.625, 0.625))
+    result = simulate_body(body, SupportMotion3(dt, pulse).rotated(angle), 3.0)
+    newmark = slide_block(GroundMotion(dt, pulse), 0.625, 0.625)
+    assert result.max_slide == pytest.approx(newmark.max_slide, rel=1e-6)
+    # along the motion's line throughout (tolerance 1e-9 m of 0.11 m: round-off)
+    across = result.slide[:, 0] * math.sin(angle) - result.slide[:, 1] * math.cos(angle)
+    assert np.abs(across).max() <= 1e-9
+
+
 def test_square_box_slides_as_far_along_the_diagonal():
     body = Body("b", Box((2.0, 2.0, 0.5)), 1000.0, Friction(0.2, 0.2))
     axis = simulate_body(body, SupportMotion3(DT, PULSE), 3.0)

@@ -117,11 +117,13 @@ M_KIND = 0
 M_INDEX = 1
 M_SLIP = 2  # 0 stick, 1 slip
 # mode data (float64, DATA_SIZE): rim angle psi of a cylinder's pivot [rad], slip direction
-# (3), and 1.0 where the slip starts from rest (its onset direction; 0.0 for a slip under way)
+# (3), 1.0 where the slip starts from rest (its onset direction; 0.0 for a slip under way),
+# and the step's slip floor [m/s] (0.0: SLIP_FLOOR; see unit_slip)
 D_PSI = 0
 D_SLIP = 1
 D_ONSET = 4
-DATA_SIZE = 5
+D_FLOOR = 5
+DATA_SIZE = 6
 
 STATE_SIZE = 13  # r (3), q (4), v (3), omega (3)
 
@@ -1136,18 +1138,20 @@ def slip_direction(y, n_tangent, data, tangent, svel, direction):
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
 def unit_slip(svel, n_tangent, data, direction):
     """u from the slip velocity s (``svel``) and the stored r (``data[D_SLIP:]``): see
-    :func:`slip_direction`. Returns False where u depends on r."""
+    :func:`slip_direction`, with the floor ``max(SLIP_FLOOR, data[D_FLOOR])``. Returns False
+    where u depends on r."""
+    floor = max(SLIP_FLOOR, data[D_FLOOR])
     size = 0.0
     along = 0.0
     for k in range(n_tangent):
         size += svel[k] ** 2
         along += svel[k] * data[D_SLIP + k]
     size = math.sqrt(size)
-    if size > SLIP_FLOOR and along > 0.0:
+    if size > floor and along > 0.0:
         for k in range(n_tangent):
             direction[k] = svel[k] / size
         return True
-    extra = abs(along) - along + max(SLIP_FLOOR - size, 0.0)
+    extra = abs(along) - along + max(floor - size, 0.0)
     length = 0.0
     for k in range(n_tangent):
         direction[k] = svel[k] + extra * data[D_SLIP + k]

@@ -41,6 +41,7 @@ import numpy as np
 
 from freestand.core.contact.body_impulse import MAX_POINTS, base_points, velocity_impact
 from freestand.core.contact.body_kernel import (
+    D_FLOOR,
     D_ONSET,
     D_PSI,
     D_SLIP,
@@ -125,6 +126,7 @@ SLIP_FRACTION = 0.5  # a step lasts at most this part of a slip's time scale |s|
 FACE_TURN = 0.3  # [rad] a flat base's slip turns by about this much at most in a step
 SLIP_MIN_STEP = 1e-4  # [s] the slip's time scale bounds no step below this
 FACE_MIN_STEP = 3e-4  # [s] a flat base's turn bounds no step below this
+FLOOR_STABILITY = 2.0  # h lambda of a flat base's slip turning at its floor (RK4: stable to 2.78)
 STRETCH_STEP = 1e-4  # [s] step of the velocity-level time stepping (the remedy)
 STRETCH_CHECK = 16  # a stretch looks for a consistent mode at its steps 1, 2, 4, 8, 16, 32, 48, ...
 STRETCH_IMPACT = 10.0  # a stretch's point approaching faster than this times g h lands [-]
@@ -234,10 +236,11 @@ def references(par, record, dt, t, y, mode, data, sc, ref, solved=False):
 
     The slip direction is the slip velocity's at the held patch's centre of
     pressure at (t, y), or the stored one while the slip is slower than
-    ``SLIP_FLOOR``. Returns the normal and tangential rows of the slip's
-    solve where the scratch holds the held mode solved at (t, y) as with
-    the references stored: its solve read no stored direction
-    (:func:`slip_direction`), or the stored one is kept; else (0, -1).
+    ``SLIP_FLOOR`` or the last step's floor (:func:`slip_floor`). Returns the
+    normal and tangential rows of the slip's solve where the scratch holds
+    the held mode solved at (t, y) as with the references stored: its solve
+    read no stored direction (:func:`slip_direction`), or the stored one is
+    kept; else (0, -1).
     ``solved``: the scratch holds the held mode solved at (t, y) already (a
     step's end left unprojected, :func:`drifted`, whose event functions left
     the slip velocity in the scratch), and it is not solved again.
@@ -269,10 +272,11 @@ def references(par, record, dt, t, y, mode, data, sc, ref, solved=False):
     else:
         size, n_normal, n_tangent = slip_velocity(par, record, dt, t, y, mode, data, sc)
     svel = sc[SC_SVEL]
+    floor = max(SLIP_FLOOR, data[D_FLOOR])  # the last step's (slip_floor)
     for i in range(n_tangent):
-        ref[i] = svel[i] / size if size > SLIP_FLOOR else data[D_SLIP + i]
+        ref[i] = svel[i] / size if size > floor else data[D_SLIP + i]
         data[D_SLIP + i] = ref[i]
-    return n_normal, n_tangent if size <= SLIP_FLOOR or sc[SC_CENTRE][5] == 0.0 else -1
+    return n_normal, n_tangent if size <= floor or sc[SC_CENTRE][5] == 0.0 else -1
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -391,7 +395,7 @@ def closing_step(par, y, mode, sc, ref):
     wx, wy, wz = y[10], y[11], y[12]
     earliest = math.inf
     if mode[M_SLIP] == 1:
-        earliest = _slip_turn_time(mode, sc)
+        earliest = _slip_turn_time(par, mode, sc)
     d = sc[SC_PROBE][0]
     if par[P_SHAPE] == SHAPE_BOX:
         if kind == FACE:
@@ -440,7 +444,7 @@ def closing_step(par, y, mode, sc, ref):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _slip_turn_time(mode, sc):
+def _slip_turn_time(par, mode, sc):
     """Time [s] in which a slip's velocity could stop or turn: |s| / |s'| times SLIP_FRACTION.
 
     The kinetic friction follows the slip's direction, which turns quickly as
@@ -454,12 +458,18 @@ def _slip_turn_time(mode, sc):
     cask's 5 ms steps missed the quick turns of its slow slips: its path
     strayed 2.5 mm from a 0.1 ms run over 20 s (a 65 mm slide); bounded, 0.5
     mm, at 27 % more steps. ``sc`` holds the rows and accelerations that
-    :func:`start_functions` just solved. Not below ``SLIP_MIN_STEP``: a slip
+    :func:`start_functions` just solved. A flat base's step is also bounded
+    by RK4's stability on the rate at which friction turns a slow slip,
+    ``FLOOR_STABILITY |s| / slip_stiffness`` (:func:`slip_floor`): unbounded,
+    a slip across the force grew from round-off (a squat cylinder pushed at 1
+    rad from its axes slid 1.8 % too far); bounded, the cask's path stays
+    0.05 mm from a 0.1 ms run's, where the turn bound alone left 0.47 mm.
+    Not below ``SLIP_MIN_STEP``: a slip
     that dies away without reversing would otherwise take ever shorter steps
     (its energy is then negligible); a flat base's not below ``FACE_MIN_STEP``,
     whose slow creeps (0.1 mm/s for 10 ms, the support driving across them)
-    took a quarter of the cask's steps at 0.1 ms: at 0.3 ms its path stays
-    0.47 mm from the fine run's (0.51 at 0.1 ms), with 11 % fewer steps.
+    took a quarter of the cask's steps at 0.1 ms; at that floor a slower slip
+    keeps its step's starting direction (:func:`slip_floor`).
     """
     kind = mode[M_KIND]
     n_tangent = 2 if kind == POINT else 3
@@ -477,13 +487,57 @@ def _slip_turn_time(mode, sc):
         if speed <= SLIP_FLOOR * SLIP_FLOOR:
             return math.inf
         change = max(change - along * along / speed, 0.0)
-        if change == 0.0:
-            return math.inf
-        return max(FACE_TURN * math.sqrt(speed / change), FACE_MIN_STEP) / CLOSING_OVERSHOOT
+        limit = FLOOR_STABILITY * math.sqrt(speed) / slip_stiffness(par, sc)
+        if change > 0.0:
+            limit = min(limit, FACE_TURN * math.sqrt(speed / change))
+        return max(limit, FACE_MIN_STEP) / CLOSING_OVERSHOOT
     if change == 0.0:
         return math.inf
     limit = SLIP_FRACTION * math.sqrt(speed / change)
     return max(limit, SLIP_MIN_STEP) / CLOSING_OVERSHOOT
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def slip_floor(par, mode, sc, h):
+    """The speed [m/s] below which a flat base's slip keeps its step's starting direction.
+
+    A slip's direction u = s/|s| turns at ``slip_stiffness / |s|`` (the
+    kinetic friction pushes a slip's component across u back at that rate):
+    a stiff rate where the slip is slow, on which RK4's explicit stages are
+    unstable beyond ``h lambda = 2.78``. A slip across the force then grows
+    from round-off instead of dying out, step by step: a squat cylinder
+    pushed by one sine cycle at 1 rad from its axes slid 1.8 % further than
+    along them, with a sideways speed of 4 mm/s (0 along them, by symmetry).
+    A flat base's steps are bounded so that ``h lambda <= FLOOR_STABILITY``
+    (:func:`_slip_turn_time`) down to ``FACE_MIN_STEP``; below that, and on a
+    slip's first step from rest, the slip slower than this floor (the speed
+    at which ``h lambda = FLOOR_STABILITY``) is pulled to the step's starting
+    direction (:func:`~freestand.core.contact.body_kernel.unit_slip`), which
+    RK4 integrates stably, and the next step keeps that direction as its
+    reference while the slip stays below the floor (:func:`references`: the
+    step-by-step update to ``s/|s|`` is an explicit step on the same rate).
+    A FACE only (an edge's or point's slip steps are bounded by its time
+    scale, ``SLIP_FRACTION``); 0.0 (``SLIP_FLOOR``) otherwise. ``sc`` holds
+    the step's start solved (:func:`start_functions`). Returns [m/s].
+    """
+    if mode[M_KIND] != FACE or mode[M_SLIP] != 1:
+        return 0.0
+    return slip_stiffness(par, sc) * h / FLOOR_STABILITY
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def slip_stiffness(par, sc):
+    """``mu N max(1/m, rho^2 (I^-1)_zz)`` [m/s^2]: a flat base's slip of speed |s| turns at
+    this / |s|.
+
+    The friction's largest acceleration per unit of its direction, on the
+    FACE's rows and solution in the scratch (N its normal force, rho its
+    twist radius): a horizontal force moves G by 1/m (the held tilt takes
+    its moment), the twist row ``(0, rho e_z)`` by ``rho^2 (I^-1)_zz``.
+    """
+    rho = sc[SC_CENTRE][2]
+    largest = max(1.0 / par[P_MASS], rho * rho * sc[SC_INV][2, 2])
+    return par[P_MU_KINETIC] * max(sc[SC_LAM][0], 0.0) * largest + 1e-300
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -1380,6 +1434,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
                                     kinds)  # fmt: skip
         fresh = False
         h = min(_next_end(t, breaks, h_max, t_end) - t, closing_step(par, y, mode, sc, ref))
+        data[D_FLOOR] = slip_floor(par, mode, sc, h)
         advance(par, record_, dt, t, h, y, mode, data, sc, k, out, velocity_tol)
         h, which = locate(par, record_, dt, t, h, y, mode, data, sc, k, ref, start_values, count,
                           trial, values, kinds, bracket, out)  # fmt: skip
