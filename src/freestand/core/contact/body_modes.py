@@ -76,6 +76,7 @@ from freestand.core.contact.body_kernel import (
     solve_patch,
     tangential_velocity,
 )
+from freestand.core.contact.regula_falsi import retained_scale
 
 ACCELERATION = 0
 VELOCITY = 1
@@ -216,7 +217,7 @@ def _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol):
         value = _onset_sign(par, y, sc, level, n_normal, theta, direction)
         if i > 0 and value * previous <= 0.0:
             root = _onset_root(par, y, sc, level, n_normal, theta - 2.0 * math.pi / ONSET_SCAN,
-                                 theta, previous, value, direction)  # fmt: skip
+                               theta, previous, value, direction)  # fmt: skip
             direction[0] = math.cos(root)
             direction[1] = math.sin(root)
             along, across, size = _onset_rate(par, y, sc, level, n_normal, 2, direction)
@@ -272,22 +273,15 @@ def _onset_root(par, y, sc, level, n_normal, low, high, f_low, f_high, direction
             return middle
         if f_mid * f_low < 0.0:
             if side == -1:
-                f_low *= _retained_scale(f_mid, f_high)
+                f_low *= retained_scale(f_mid, f_high)
             side = -1
             high, f_high = middle, f_mid
         else:
             if side == 1:
-                f_high *= _retained_scale(f_mid, f_low)
+                f_high *= retained_scale(f_mid, f_low)
             side = 1
             low, f_low = middle, f_mid
     return 0.5 * (low + high)
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _retained_scale(f_new, f_old):
-    """Anderson-Bjorck's scale of a retained end's value: ``1 - f_new / f_old``, else 1/2."""
-    scale = 1.0 - f_new / f_old if f_old != 0.0 and math.isfinite(f_old) else 0.5
-    return scale if scale > 0.0 else 0.5
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -308,11 +302,11 @@ def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol, iterations):
 
     u(a, b) = normalise(u + a e1 + b e2) with (e1, e2) across u; the residual
     (e1 . s', e2 . s') is driven to zero with a finite-difference Jacobian and
-    step halving; where 20 halvings find no lower residual Newton has stalled
-    (the next iteration would start from the same u: such stalls went on for
-    all 30 iterations, 430 solves, where no consistent onset exists). At most
-    ``iterations`` steps, each halved at most ``ONSET_HALVINGS`` times. True
-    when consistent (``direction`` holds u).
+    step halving, at most ``iterations`` steps; where ``ONSET_HALVINGS``
+    halvings find no lower residual Newton has stalled (the next iteration
+    would start from the same u: such stalls went on for all 30 iterations,
+    430 solves, where no consistent onset exists). True when consistent
+    (``direction`` holds u).
     """
     e1 = np.empty(3)
     e2 = np.empty(3)
