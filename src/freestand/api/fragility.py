@@ -414,7 +414,7 @@ def fragility(
     >>> cabinet.to_dict()["angles"], cabinet.to_dict()["im"]["kind"]
     ([0.0, 90.0, 180.0, 270.0], 'pga-rotd50')
     >>> cabinet.to_frame()["count"].tolist()  # of 4 at 2, 4, 6 m/s^2: uplift, then twist
-    [0, 4, 4, 0, 1, 4]
+    [0, 4, 4, 0, 3, 4]
     """
     from freestand.io.campaign_runner import run_fragility
     from freestand.io.fragility_options import build_campaign
