@@ -1125,7 +1125,9 @@ def slip_direction(y, n_tangent, data, tangent, svel, direction):
     at a two-dimensional slip's stop (where s is across r) and made the
     event function jump by 1e-3 m/s inside the bracket: regula falsi crept
     on the jump for 30 to 80 trials. A slip along r (a planar one) slides
-    along r either way.
+    along r either way. The floor is ``SLIP_FLOOR``, or a flat base's
+    step's ``data[D_FLOOR]`` where larger (the engine's ``slip_floor``: the
+    speed below which RK4 could not follow the slip's turn stably).
 
     On the tangential rows ``tangent`` (their velocities written to ``svel``);
     ``data`` the mode data; u is written to ``direction``. Returns False
