@@ -23,6 +23,7 @@ from freestand.core.contact.body_kernel import (
     SCRATCH_DTYPE,
     STATE_SIZE,
     body_parameters,
+    rotation_matrix,
 )
 from freestand.core.dynamics import body_engine as engine
 from freestand.core.dynamics.results import ContactTolerances
@@ -412,22 +413,20 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
     (a jump above pi between two states is taken the other way round).
     """
     first_x, first_y, previous = 0.0, 0.0, 0.0
+    rot = np.empty((3, 3))  # body to support frame
     for i in range(state.shape[0]):
-        w, x, y, z = state[i, 3], state[i, 4], state[i, 5], state[i, 6]
-        # the rotation's rows (body to support frame)
-        r00, r01, r02 = 1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y)
-        r10, r11, r12 = 2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x)
-        r20, r21, r22 = 2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y)
+        rotation_matrix(state[i], rot)
+        r20, r21, r22 = rot[2, 0], rot[2, 1], rot[2, 2]
         tilt[i] = math.acos(min(max(r22, -1.0), 1.0))
         # the base centre r - R c
-        bx = state[i, 0] - (r00 * centre[0] + r01 * centre[1] + r02 * centre[2])
-        by = state[i, 1] - (r10 * centre[0] + r11 * centre[1] + r12 * centre[2])
+        bx = state[i, 0] - (rot[0, 0] * centre[0] + rot[0, 1] * centre[1] + rot[0, 2] * centre[2])
+        by = state[i, 1] - (rot[1, 0] * centre[0] + rot[1, 1] * centre[1] + rot[1, 2] * centre[2])
         bz = state[i, 2] - (r20 * centre[0] + r21 * centre[1] + r22 * centre[2])
         if i == 0:
             first_x, first_y = bx, by
         slide[i, 0] = bx - first_x
         slide[i, 1] = by - first_y
-        angle = 2.0 * math.atan2(z, w)
+        angle = 2.0 * math.atan2(state[i, 6], state[i, 3])
         if i == 0:
             twist[i] = 0.0
         else:
