@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
@@ -164,6 +164,61 @@ def test_a_body_sliding_flat_gets_no_twist_from_its_friction(gx, gy, slide, push
     assert (centre[0], centre[1]) == pytest.approx((cx, cy), abs=1e-9)
     # its friction is the kinetic one against the slide
     assert math.hypot(lam[3], lam[4]) == pytest.approx(0.3 * lam[0], rel=1e-9)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.booleans(), st.floats(-0.15, 0.15), st.floats(-0.1, 0.1), st.floats(0.0, 2 * math.pi),
+    st.floats(0.05, 0.5), st.floats(0.0, 2 * math.pi), st.floats(-2.0, 2.0),
+    st.floats(0.0, 2 * math.pi), st.floats(0.0, 3.0),
+)  # fmt: skip
+def test_a_sliding_twisting_face_s_friction_acts_at_its_own_centre_of_pressure(
+    cylinder, gx, gy, yaw, speed, slide, spin, push, size
+):
+    """Newton and Euler hold with the friction at the centre of pressure of the solve's own N.
+
+    A flat base sliding and twisting (the slip direction then depends on
+    where the friction acts) under a horizontal push: the solve's friction
+    centre is the centre of pressure of its normal multipliers, and its
+    accelerations are those of the applied load, the normal force and
+    couples, and the friction ``-mu N u`` with its twist, applied there
+    (``body_kernel.face_offset_torques`` places the friction in one solve).
+    """
+    shape = Cylinder(0.5, 2.0) if cylinder else Box((1.0, 0.6, 2.0))
+    body = Body("flat", shape, 400.0, Friction(0.3, 0.3), centre=(gx, gy, 0.8))
+    par = bk.body_parameters(body, G)
+    record = np.zeros((3, 2))
+    record[0, :] = size * math.cos(push)
+    record[1, :] = size * math.sin(push)
+    y = initial_state(body)
+    y[3], y[6] = math.cos(0.5 * yaw), math.sin(0.5 * yaw)
+    y[7], y[8], y[12] = speed * math.cos(slide), speed * math.sin(slide), spin
+    sc = bk.new_scratch()
+    mode = np.array([bk.FACE, 0, 1], dtype=np.int64)
+    data = np.zeros(bk.DATA_SIZE)
+    data[bk.D_SLIP], data[bk.D_SLIP + 1] = math.cos(slide), math.sin(slide)
+    ok, n_normal, n_tangent = bk.solve_at(par, record, 1.0, 0.0, y, mode, data, sc)
+    assert ok
+    acc, lam, centre = sc[bk.SC_ACC], sc[bk.SC_LAM], sc[bk.SC_CENTRE]
+    # a flat base only where it is one: N > 0 and the centre of pressure inside the base
+    assume(bk.normal_margin(par, sc[bk.SC_ROT], bk.FACE, lam) > 1e-6 * lam[0])
+    cx, cy = bk.face_centre_of_pressure(sc[bk.SC_ROT], lam)
+    assert (centre[0], centre[1]) == pytest.approx((cx, cy), abs=1e-9)  # [m]
+    # M acc = f_0 + the normal rows' forces + the friction's on the rows at the centre
+    force = sc[bk.SC_F0].copy()
+    for r in range(n_normal):
+        force += lam[r] * sc[bk.SC_NORMAL][:, r]
+    for k in range(n_tangent):
+        force += lam[n_normal + k] * sc[bk.SC_TANGENT][:, k]
+    expected = np.concatenate((force[:3] / body.mass, sc[bk.SC_INV] @ force[3:]))
+    assert acc == pytest.approx(expected, abs=1e-9)  # [m/s^2, rad/s^2]
+    # the friction is the kinetic one, against the slip at that centre
+    slip = sc[bk.SC_SVEL][:n_tangent]
+    friction = lam[n_normal : n_normal + n_tangent]
+    assert np.linalg.norm(friction) == pytest.approx(0.3 * lam[0], rel=1e-9)
+    assert friction / np.linalg.norm(friction) == pytest.approx(
+        -slip / np.linalg.norm(slip), abs=1e-9
+    )
 
 
 def test_a_patch_s_kind_is_the_one_its_rows_were_built_for():

@@ -642,6 +642,12 @@ def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, ac
     ``lam`` are impulses [N s]. ``lam`` holds the normal multipliers, then
     the tangential ones (sticking, or ``-mu N u`` when sliding). The rows,
     the inverse inertia and the work arrays are the scratch's ``sc``.
+
+    A sliding FACE's friction acts at its centre of pressure, ``N p = (-M_y,
+    M_x)`` from its couples: the twist of that offset is linear in the
+    multipliers (:func:`face_offset_torques`), and one solve places the
+    friction at the centre of pressure of its own solution, where its
+    tangential rows (``sc[SC_CENTRE]``) are elsewhere.
     """
     inv, normal, nbias, tangent, tbias = (sc[SC_INV], sc[SC_NORMAL], sc[SC_NBIAS], sc[SC_TANGENT],
                                           sc[SC_TBIAS])  # fmt: skip
@@ -649,6 +655,8 @@ def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, ac
     mu = par[P_MU_KINETIC]
     inv_m = 1.0 / par[P_MASS]
     held = n_normal + (n_tangent if slip == 0 else 0)
+    face_slide = slip == 1 and n_normal == 3
+    torques = face_offset_torques(sc, mu, direction) if face_slide else (0.0, 0.0, 0.0)
     # the held rows w_r, work[0:held], and rhs = -(w_r . base + b_r)
     for r in range(held):
         row = work[r]
@@ -678,8 +686,9 @@ def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, ac
         out[0] = col[0] * inv_m
         out[1] = col[1] * inv_m
         out[2] = col[2] * inv_m
+        twist = col[5] + (torques[j] if face_slide else 0.0)
         for i in range(3):
-            out[3 + i] = inv[i, 0] * col[3] + inv[i, 1] * col[4] + inv[i, 2] * col[5]
+            out[3 + i] = inv[i, 0] * col[3] + inv[i, 1] * col[4] + inv[i, 2] * twist
     for r in range(held):
         for j in range(held):
             entry = 0.0
@@ -700,6 +709,26 @@ def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, ac
         for k in range(n_tangent):
             lam[n_normal + k] = -mu * total * direction[k]
     return True
+
+
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+def face_offset_torques(sc, mu, direction):
+    """A sliding FACE's twist [N m] per unit of its multipliers N, M_x, M_y from its CoP's offset.
+
+    The friction ``-mu N u`` at the centre of pressure p (horizontal, from
+    the base centre, ``N p = (-M_y, M_x)``, :func:`face_centre_of_pressure`)
+    twists the body by ``(p x f)_z = mu (u_x M_x + u_y M_y)``. The tangential
+    rows at the friction centre c (``sc[SC_CENTRE]``) carry ``mu N (u_x c_y -
+    u_y c_x)`` of it in N's column; the three terms put the friction at p
+    instead: ``-mu (u_x c_y - u_y c_x)`` on N, ``mu u_x`` on M_x, ``mu u_y``
+    on M_y (u = ``direction``, world x and y; the base flat, c turned by its
+    yaw).
+    """
+    centre, rot = sc[SC_CENTRE], sc[SC_ROT]
+    cx = rot[0, 0] * centre[0] + rot[0, 1] * centre[1]
+    cy = rot[1, 0] * centre[0] + rot[1, 1] * centre[1]
+    ux, uy = direction[0], direction[1]
+    return -mu * (ux * cy - uy * cx), mu * ux, mu * uy
 
 
 @nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
@@ -905,20 +934,132 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
                               n_tangent)  # fmt: skip
     if kind == EDGE and slip == 1:
         return _slide_edge(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent)
-    rot, lam = sc[SC_ROT], sc[SC_LAM]
-    for _ in range(CENTRE_ITERATIONS):
-        if not _solve_at_rows(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal,
+    if slip == 1:
+        return _slide_face(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent)
+    if not _solve_at_rows(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal,
+                          n_tangent):  # fmt: skip
+        return False
+    centre_stick_friction(par, sc[SC_ROT], kind, index, n_normal, sc[SC_LAM], centre)
+    tangent_rows(par, y, sc)
+    return True
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _slide_face(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent):
+    """A sliding FACE solved with its friction at its centre of pressure (:func:`solve_patch`).
+
+    Each solve places the friction at the centre of pressure of its own
+    normal multipliers (:func:`face_offset_torques`), with the slip
+    direction u and twist radius rho of the centre c it starts from; its
+    centre of pressure F(c) ends the search where u and ``u_t rho`` are
+    the same there (:func:`_face_friction_kept`): at once without twist. A
+    twist turns the slip across the base (by about ``omega_z b / |s|``) and
+    c = F(c) is then found by Anderson's mixing of the last three centres
+    (D. G. Anderson, J. ACM 12 (1965) 547-560; :func:`_anderson_centre`),
+    where the plain iteration c <- F(c) took all ``CENTRE_ITERATIONS`` at
+    ``omega_z b ~ |s|``. ``history`` rows: the last centres and their F.
+    """
+    centre, rot, lam = sc[SC_CENTRE], sc[SC_ROT], sc[SC_LAM]
+    index = int(centre[4])
+    history = sc[SC_EDGE]  # (3, 10): free while a FACE slides; rows (x, y, F_x, F_y)
+    for iteration in range(CENTRE_ITERATIONS):
+        if not _solve_at_rows(par, y, sc, use_bias, 1, direction, kinetic, stored, n_normal,
                               n_tangent):  # fmt: skip
             return False
-        if slip == 0:
-            centre_stick_friction(par, rot, kind, index, n_normal, lam, centre)
-            tangent_rows(par, y, sc)
-            return True
-        moved = move_friction_centre(par, rot, kind, index, lam, centre)
+        ux, uy, twist = _face_friction(sc, kinetic, direction)
+        row = history[iteration % 3]
+        row[0], row[1] = centre[0], centre[1]
+        moved = move_friction_centre(par, rot, FACE, index, lam, centre)
         if moved <= CENTRE_TOLERANCE * par[P_HALF_X]:
             return True
         tangent_rows(par, y, sc)
+        if _face_friction_kept(par, y, sc, kinetic, stored, n_tangent, ux, uy, twist, direction):
+            return True
+        row[2], row[3] = centre[0], centre[1]
+        if iteration > 0:
+            _anderson_centre(par, history, iteration, centre)
+            tangent_rows(par, y, sc)
     return True
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _anderson_centre(par, history, iteration, centre):
+    """The next trial centre of c = F(c) by Anderson's mixing of the last iterates.
+
+    ``history[iteration % 3]`` is the newest (x, y, F_x, F_y), the rows
+    before it the older (two, or one at the second iterate). With the
+    residuals r = F(c) - c: ``c' = F_n - sum_j gamma_j (F_n - F_j)``, gamma
+    minimising ``|r_n - sum_j gamma_j (r_n - r_j)|`` (exact for an affine F
+    in the plane from three iterates). Kept on the base as
+    :func:`move_friction_centre` keeps a centre of pressure; sets ``centre``
+    (x, y, rho).
+    """
+    new = history[iteration % 3]
+    rx, ry = new[2] - new[0], new[3] - new[1]
+    a = history[(iteration - 1) % 3]
+    ax, ay = rx - (a[2] - a[0]), ry - (a[3] - a[1])
+    gamma_a, gamma_b = 0.0, 0.0
+    if iteration >= 2:
+        b = history[(iteration - 2) % 3]
+        bx, by = rx - (b[2] - b[0]), ry - (b[3] - b[1])
+        determinant = ax * by - ay * bx
+        if determinant != 0.0:
+            gamma_a = (rx * by - ry * bx) / determinant
+            gamma_b = (ax * ry - ay * rx) / determinant
+        cx = new[2] - gamma_a * (new[2] - a[2]) - gamma_b * (new[2] - b[2])
+        cy = new[3] - gamma_a * (new[3] - a[3]) - gamma_b * (new[3] - b[3])
+    if iteration < 2 or determinant == 0.0:
+        denominator = ax * ax + ay * ay
+        if denominator <= 0.0:
+            return
+        gamma_a = (ax * rx + ay * ry) / denominator
+        cx = new[2] - gamma_a * (new[2] - a[2])
+        cy = new[3] - gamma_a * (new[3] - a[3])
+    if par[P_SHAPE] == SHAPE_BOX:
+        cx = min(max(cx, -par[P_HALF_X]), par[P_HALF_X])
+        cy = min(max(cy, -par[P_HALF_Y]), par[P_HALF_Y])
+    else:
+        size = norm2(cx, cy)
+        if size > par[P_HALF_X]:
+            cx *= par[P_HALF_X] / size
+            cy *= par[P_HALF_X] / size
+    centre[0] = cx
+    centre[1] = cy
+    centre[2] = effective_twist_radius(par, FACE, 0, cx, cy)
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _face_friction_kept(par, y, sc, kinetic, stored, n_tangent, ux, uy, twist, direction):
+    """Whether a sliding FACE's solve holds at its moved friction centre (:func:`solve_patch`).
+
+    The solve put the friction ``-mu N u`` at its own centre of pressure
+    (:func:`face_offset_torques`), with u and the twist radius rho of the
+    centre it started from: it holds where, at the centre of pressure (the
+    rows' new centre), u (``kinetic``: the slip velocity's there,
+    :func:`slip_direction`, which leaves it in ``sc[SC_DIR]``; else
+    ``direction``) and ``u_t rho`` change by no more than
+    ``CENTRE_TOLERANCE`` (of the half-width for the twist): a slide without
+    twist, in one solve. ``ux, uy, twist``: the solve's u_x, u_y and u_t rho.
+    """
+    if kinetic and not slip_direction(y, n_tangent, stored, sc[SC_TANGENT], sc[SC_SVEL],
+                                      sc[SC_DIR]):  # fmt: skip
+        sc[SC_CENTRE][5] = 1.0
+    now_x, now_y, now_twist = _face_friction(sc, kinetic, direction)
+    return (
+        abs(now_x - ux) <= CENTRE_TOLERANCE
+        and abs(now_y - uy) <= CENTRE_TOLERANCE
+        and abs(now_twist - twist) <= CENTRE_TOLERANCE * par[P_HALF_X]
+    )
+
+
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _face_friction(sc, kinetic, direction):
+    """A sliding FACE's u_x, u_y and u_t rho at its friction centre (``kinetic``: ``sc[SC_DIR]``)."""
+    rho = sc[SC_CENTRE][2]
+    if kinetic:
+        u = sc[SC_DIR]
+        return u[0], u[1], u[2] * rho
+    return direction[0], direction[1], direction[2] * rho
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
