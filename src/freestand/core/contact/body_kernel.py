@@ -1054,7 +1054,7 @@ def _face_friction_kept(par, y, sc, kinetic, stored, n_tangent, ux, uy, twist, d
 
 @nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
 def _face_friction(sc, kinetic, direction):
-    """A sliding FACE's u_x, u_y and u_t rho at its friction centre (``kinetic``: ``sc[SC_DIR]``)."""
+    """A sliding FACE's u_x, u_y and u_t rho at its friction centre (kinetic: sc[SC_DIR])."""
     rho = sc[SC_CENTRE][2]
     if kinetic:
         u = sc[SC_DIR]
