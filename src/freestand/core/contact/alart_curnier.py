@@ -40,6 +40,8 @@ from freestand.core.contact.vectors import norm2
 NEWTON_ITERATIONS = 30  # at most
 LINE_SEARCH_HALVINGS = 30  # a step halved at most this many times
 SUFFICIENT_DECREASE = 1e-4  # Armijo's constant on |F|^2
+STALL_HALVINGS = 4  # a step halved this many times or more is a stalled iteration...
+STALL_ITERATIONS = 5  # ...and this many stalled iterations in a row end the search
 REGULARISATION = 1e-13  # of the Newton step's normal equations, relative to their largest term
 
 
@@ -208,7 +210,13 @@ def solve_alart_curnier(count, mu, delassus, free, impulses, velocity_tolerance,
     ``rho_n = 1 / W_nn`` and ``rho_t`` one over the larger eigenvalue of the
     point's W_tt (the sweeps' steps). Newton's iterations stop where
     ``|F|`` falls to ``impulse_tolerance``; the solution is then checked
-    against the laws themselves (:func:`obeys_laws`).
+    against the laws themselves (:func:`obeys_laws`). They also stop where
+    ``STALL_ITERATIONS`` in a row each halved their step ``STALL_HALVINGS``
+    times or more: the start is then outside the method's quadratic basin
+    (a flat cylinder's eight rim points from the sweeps' early impulses
+    crept on for hundreds of evaluations of F and failed; every solve of a
+    rocking cabinet's that succeeds halves its steps at most three times in
+    a row), and the caller's sweeps go on.
     """
     n3 = 3 * count
     rho_n = np.empty(count)
@@ -225,12 +233,14 @@ def solve_alart_curnier(count, mu, delassus, free, impulses, velocity_tolerance,
     normal = np.empty((n3, n3))
     step = np.empty(n3)
     norm = _function(count, mu, rho_n, rho_t, delassus, free, impulses, speeds, residual, jacobian)
+    stalled = 0
     for _iteration in range(NEWTON_ITERATIONS):
         if norm <= impulse_tolerance**2:
             break
         _least_squares_step(jacobian, residual, normal, step)
         fraction = 1.0
         accepted = False
+        halvings = 0
         for _halving in range(LINE_SEARCH_HALVINGS):
             for j in range(n3):
                 trial[j] = impulses[j] + fraction * step[j]
@@ -240,7 +250,9 @@ def solve_alart_curnier(count, mu, delassus, free, impulses, velocity_tolerance,
                 accepted = True
                 break
             fraction *= 0.5
-        if not accepted:
+            halvings += 1
+        stalled = stalled + 1 if halvings >= STALL_HALVINGS else 0
+        if not accepted or stalled >= STALL_ITERATIONS:
             break
         for j in range(n3):
             impulses[j] = trial[j]
