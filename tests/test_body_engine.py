@@ -9,6 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
+from freestand.core.contact import body_kernel as bk
 from freestand.core.dynamics.body_history import SupportMotion3, simulate_body
 from freestand.core.model import Friction
 
@@ -203,3 +204,39 @@ def test_a_cask_landing_from_a_small_rock_rocks_on_without_free_flight():
     assert 1e-6 < result.max_rotation < 1e-4
     assert not result.free_flight
     assert all(event[3] != "free" for event in result.events)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.floats(-1.0, 1.0), st.floats(-1.0, 1.0), st.floats(-1.0, 1.0), st.floats(-1.0, 1.0),
+    st.floats(-math.pi, math.pi), st.sampled_from([1.0, 1e-8, 0.0]),
+)  # fmt: skip
+def test_the_rim_point_a_cylinder_rolls_on_is_the_lowest_on_the_stored_side(
+    q0, q1, q2, q3, stored, scale
+):
+    """pivot_direction's (cos psi, sin psi) against the angle's definition (atan2 of R's row).
+
+    The lowest rim point, psi = atan2(-R_32, -R_31), or psi + pi where it lies
+    against the stored angle (past a landing); the stored angle within
+    PIVOT_LEAN of flat. Computed without trigonometry, cached per stored
+    angle: a second call with another stored angle must not reuse the first.
+    """
+    q = np.array([q0, q1 * scale, q2 * scale, q3])
+    if np.linalg.norm(q) < 1e-3:
+        q = np.array([1.0, 0.0, 0.0, 0.0])
+    y = np.zeros(13)
+    y[3:7] = q / np.linalg.norm(q)
+    rot = np.zeros((3, 3))
+    bk.rotation_matrix(y, rot)
+    par = bk.body_parameters(Body("c", Cylinder(0.5, 2.0), 1.0, Friction(0.5, 0.5)), 9.81)
+    sc = bk.new_scratch()
+    for psi_stored in (stored, stored + 1.0):
+        if bk.sin_tilt(rot) <= bk.PIVOT_LEAN:
+            psi = psi_stored
+        else:
+            psi = math.atan2(-rot[2, 1], -rot[2, 0])
+            if math.cos(psi - psi_stored) < 0.0:
+                psi += math.pi
+        c, s = bk.pivot_direction(par, rot, bk.POINT, psi_stored, sc)
+        assert (c, s) == pytest.approx((math.cos(psi), math.sin(psi)), abs=1e-12)
+    assert bk.pivot_direction(par, rot, bk.FACE, stored, sc) == (1.0, 0.0)

@@ -129,7 +129,7 @@ STATE_SIZE = 13  # r (3), q (4), v (3), omega (3)
 
 # row scratch: W (6, 6) columns, bias (6); normal rows first, then tangential ones
 TILT_EPSILON = 1e-9  # sin(tilt) below which a cylinder counts as flat for its rim point
-PIVOT_LEAN = 1e-6  # sin(tilt) below which a rocking cylinder keeps its rim point (see rim_angle)
+PIVOT_LEAN = 1e-6  # sin(tilt) below which a rocking cylinder keeps its rim point (pivot_direction)
 RHO_FLOOR = 1e-9  # smallest twist radius of a FACE or EDGE, relative to the base's half-width [-]
 CENTRE_ITERATIONS = 12  # most solves of a sliding FACE or EDGE to settle its friction centre
 CENTRE_TOLERANCE = 1e-12  # its settling: a move below this times the half-width [-]
@@ -254,31 +254,6 @@ def box_corner(par, k):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
-def rim_angle(par, rot, psi_stored):
-    """Body-frame angle psi [rad] of the rim point a cylinder rolls on.
-
-    The lowest rim point, ``(cos psi, sin psi) = -(R_31, R_32) / sin(tilt)``,
-    while it lies on the side of the stored angle ``psi_stored`` (the pivot at
-    the step's start); past a landing (the axis has crossed the vertical
-    within a step) the highest rim point, which continues the rocking about
-    the same side smoothly, as a planar block's rotation continues through
-    zero about its corner until the landing is located. Within ``PIVOT_LEAN``
-    of flat (the opposite edge within 2 R 1e-6 of the support) the stored
-    angle: there the lowest point's direction is set by round-off and, where
-    the lean passes the vertical at a distance, swings round the rim faster
-    than any step follows; the body rocks about the stored rim point, as a
-    planar block about its corner.
-    """
-    s = sin_tilt(rot)
-    if s <= PIVOT_LEAN:
-        return psi_stored
-    lowest = math.atan2(-rot[2, 1], -rot[2, 0])
-    if math.cos(lowest - psi_stored) < 0.0:
-        return lowest + math.pi
-    return lowest
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def lowest_rim_angle(rot, psi_stored):
     """Body-frame angle [rad] of the cylinder's lowest rim point (the stored one when flat)."""
     if sin_tilt(rot) <= PIVOT_LEAN:
@@ -390,7 +365,7 @@ def rim_terms(par, y, rot, cos_psi, sin_psi):
     and ``R s*' = R_b psi' R t``: the terms are ``omega x (R s*')``; zero when
     the base is flat (the contact point then does not move). ``sigma =
     -(R_31 cos psi + R_32 sin psi)`` is sin(tilt) at the lowest rim point and
-    -sin(tilt) at the highest (the continuation past a landing, :func:`rim_angle`).
+    -sin(tilt) at the highest (the continuation past a landing, :func:`pivot_direction`).
     """
     if sin_tilt(rot) <= PIVOT_LEAN:
         return 0.0, 0.0, 0.0
@@ -409,8 +384,11 @@ def rim_terms(par, y, rot, cos_psi, sin_psi):
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
-def patch_rows(par, y, sc, kind, index, psi):
+def patch_rows(par, y, sc, kind, index, cos_psi, sin_psi):
     """Fill the rows of a patch in the scratch ``sc``; returns (normal rows, tangential rows).
+
+    A cylinder's POINT is its rim point at the body-frame angle psi, given
+    by ``cos_psi`` and ``sin_psi`` (:func:`pivot_direction`).
 
     At the rotation ``sc[SC_ROT]``. ``sc[SC_NORMAL]`` (6, 3) and
     ``sc[SC_TANGENT]`` (6, 3) hold the rows as columns, ``sc[SC_NBIAS]`` and
@@ -433,7 +411,6 @@ def patch_rows(par, y, sc, kind, index, psi):
             zt, xt, yt = 0.0, 0.0, 0.0
         else:
             radius = par[P_HALF_X]
-            cos_psi, sin_psi = math.cos(psi), math.sin(psi)
             arm(par, rot, radius * cos_psi, radius * sin_psi, 0.0, arms[0])
             zt, xt, yt = rim_terms(par, y, rot, cos_psi, sin_psi)
         for i in range(3):
@@ -821,6 +798,7 @@ SC_CENTRE = 17  # the friction centre of the rows: base x, y [m] (body frame), r
 # then 1.0 where the last solve's slip direction was the stored one at any of its centres
 SC_PROBE = 18  # (3, 6) work outside a solve: arms of probed points, a projection's velocities
 SC_EDGE = 19  # (3, 10) a sliding EDGE's terms of its centre's search (:func:`edge_slide_terms`)
+SC_RIM = 20  # (4,) the stored rim angle's cosine and sine: set (1.0), psi [rad], cos, sin
 
 # the columns of ``sc[SC_EDGE]``'s rows 0 and 1 (one per corner's normal row r, q_r = M^-1 w_r)
 E_A0 = 0  # w_r . M^-1 w_0
@@ -853,7 +831,7 @@ SCRATCH_DTYPE = np.dtype(
         ("tbias", "f8", 3), ("arms", "f8", (4, 3)), ("work", "f8", (13, 6)),
         ("matrix", "f8", (6, 6)), ("rhs", "f8", 6), ("acc", "f8", 6), ("lam", "f8", 6),
         ("svel", "f8", 3), ("sacc", "f8", 3), ("dir", "f8", 3), ("centre", "f8", 6),
-        ("probe", "f8", (3, 6)), ("edge", "f8", (3, 10)),
+        ("probe", "f8", (3, 6)), ("edge", "f8", (3, 10)), ("rim", "f8", 4),
     ],
     align=True,
 )  # fmt: skip
@@ -869,30 +847,76 @@ def new_scratch() -> np.void:
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
-def pivot_angle(par, y, rot, kind, psi_stored):
-    """The rim angle of a cylinder's POINT patch (stored when flat), else the stored value."""
-    if kind == POINT and par[P_SHAPE] == SHAPE_CYLINDER:
-        return rim_angle(par, rot, psi_stored)
-    return psi_stored
+def pivot_direction(par, rot, kind, psi_stored, sc):
+    """(cos psi, sin psi) of the rim point a cylinder's POINT rolls on; (1, 0) for other patches.
+
+    psi is the body-frame angle of the lowest rim point,
+    ``(cos psi, sin psi) = -(R_31, R_32) / sin(tilt)``, while it lies on the
+    side of the stored angle ``psi_stored`` (the pivot at the step's start);
+    past a landing (the axis has crossed the vertical within a step) the
+    highest rim point, which continues the rocking about the same side
+    smoothly, as a planar block's rotation continues through zero about its
+    corner until the landing is located. Within ``PIVOT_LEAN`` of flat (the
+    opposite edge within 2 R 1e-6 of the support) the stored angle: there
+    the lowest point's direction is set by round-off and, where the lean
+    passes the vertical at a distance, swings round the rim faster than any
+    step follows; the body rocks about the stored rim point, as a planar
+    block about its corner. The cosine and sine come from the rotation, the
+    stored angle's from the scratch (:func:`stored_direction`, once per
+    stored angle): no trigonometry per solve.
+    """
+    if kind != POINT or par[P_SHAPE] != SHAPE_CYLINDER:
+        return 1.0, 0.0
+    cos_stored, sin_stored = stored_direction(psi_stored, sc)
+    s = sin_tilt(rot)
+    if s <= PIVOT_LEAN:
+        return cos_stored, sin_stored
+    c = -rot[2, 0] / s
+    n = -rot[2, 1] / s
+    if c * cos_stored + n * sin_stored < 0.0:
+        return -c, -n
+    return c, n
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def stored_direction(psi, sc):
+    """(cos psi, sin psi) of a stored rim angle, kept in ``sc[SC_RIM]`` for the next call."""
+    rim = sc[SC_RIM]
+    if rim[0] != 1.0 or rim[1] != psi:
+        rim[0] = 1.0
+        rim[1] = psi
+        rim[2] = math.cos(psi)
+        rim[3] = math.sin(psi)
+    return rim[2], rim[3]
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
 def prepare(par, record, dt, t, y, kind, index, psi, sc):
     """Rotation, inverse inertia, applied wrench, M^-1 f_0 and the patch's rows at ``t``.
 
-    Returns (normal rows, tangential rows).
+    ``psi`` [rad]: a cylinder's POINT's rim angle. Returns (normal rows,
+    tangential rows).
     """
+    rotation_matrix(y, sc[SC_ROT])
+    prepare_load(par, record, dt, t, y, sc)
+    cos_psi, sin_psi = 1.0, 0.0
+    if kind == POINT and par[P_SHAPE] == SHAPE_CYLINDER:
+        cos_psi, sin_psi = math.cos(psi), math.sin(psi)
+    return scratch_rows(par, y, kind, index, cos_psi, sin_psi, sc)
+
+
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+def prepare_load(par, record, dt, t, y, sc):
+    """Inverse inertia, applied wrench and M^-1 f_0 at ``t``, at the rotation ``sc`` holds."""
     rot, inv, f0 = sc[SC_ROT], sc[SC_INV], sc[SC_F0]
-    rotation_matrix(y, rot)
     world_inverse_inertia(par, rot, inv)
     a_x, a_y, a_v = support_acceleration(record, dt, t)
     applied_wrench(par, y, inv, rot, a_x, a_y, a_v, f0)
     apply_inverse_mass(par, inv, f0, sc[SC_BASE])
-    return scratch_rows(par, y, kind, index, psi, sc)
 
 
 @nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
-def scratch_rows(par, y, kind, index, psi, sc):
+def scratch_rows(par, y, kind, index, cos_psi, sin_psi, sc):
     """The patch's rows (:func:`patch_rows`) in the scratch, at the rotation it holds.
 
     The friction centre starts at the patch's geometric centre
@@ -900,7 +924,7 @@ def scratch_rows(par, y, kind, index, psi, sc):
     """
     centre = sc[SC_CENTRE]
     reset_friction_centre(par, kind, index, centre)
-    return patch_rows(par, y, sc, kind, index, psi)
+    return patch_rows(par, y, sc, kind, index, cos_psi, sin_psi)
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -1311,8 +1335,9 @@ def prepare_held(par, record, dt, t, y, mode, data, sc):
     kind = mode[M_KIND]
     rot = sc[SC_ROT]
     rotation_matrix(y, rot)
-    psi = pivot_angle(par, y, rot, kind, data[D_PSI])
-    return prepare(par, record, dt, t, y, kind, mode[M_INDEX], psi, sc)
+    prepare_load(par, record, dt, t, y, sc)
+    cos_psi, sin_psi = pivot_direction(par, rot, kind, data[D_PSI], sc)
+    return scratch_rows(par, y, kind, mode[M_INDEX], cos_psi, sin_psi, sc)
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)

@@ -457,7 +457,7 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
     rotation, inverse inertia and base of the instant.
     """
     rot = sc[SC_ROT]
-    n_normal, n_tangent = scratch_rows(par, y, kind, index, psi, sc)
+    n_normal, n_tangent = scratch_rows(par, y, kind, index, math.cos(psi), math.sin(psi), sc)
     svel = sc[SC_SVEL]
     speed = 0.0
     tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
@@ -572,7 +572,7 @@ def candidates(par, touching, psi, kinds, indices, angles):
 def _face_pivot(par, y, sc):
     """Rim angle towards which a FACE solution's centre of pressure leaves the disc."""
     rot = sc[SC_ROT]
-    n_normal, n_tangent = scratch_rows(par, y, FACE, 0, 0.0, sc)
+    n_normal, n_tangent = scratch_rows(par, y, FACE, 0, 1.0, 0.0, sc)
     if not _solve(par, y, sc, ACCELERATION, 0, sc[SC_DIR], n_normal, n_tangent):
         return 0.0, False
     lam = sc[SC_LAM]

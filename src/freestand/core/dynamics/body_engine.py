@@ -85,12 +85,12 @@ from freestand.core.contact.body_kernel import (
     lowest_rim_angle,
     normal_margin,
     normal_total_rows,
+    pivot_direction,
     point_velocity,
     prepare,
     prepare_held,
     rate,
     reset_friction_centre,
-    rim_angle,
     rotation_matrix,
     row_acceleration,
     row_counts,
@@ -385,8 +385,10 @@ def closing_step(par, y, mode, sc, ref):
     horizontal projection of its axis) turns at ``|e_h x e_h'| / |e_h|^2``,
     which grows as 1/tilt near flat: :func:`_whirl_step` bounds the step there.
     Below ``PIVOT_LEAN`` the cylinder turns about its stored rim point, above
-    it about the lowest one (:func:`rim_angle`): a step from below ends about
-    where an upper bound of the lean, ``|e_h| + |e_h'| t + |e_h''| t^2 / 2``,
+    it about the lowest one
+    (:func:`~freestand.core.contact.body_kernel.pivot_direction`): a step
+    from below ends about where an upper bound of the lean,
+    ``|e_h| + |e_h'| t + |e_h''| t^2 / 2``,
     reaches ``RISE_LEAN``, so that the rim point's change falls between steps,
     not inside RK4's stages (a 5 ms step from 3e-7 to 2.7e-6 once set a
     slender cylinder rolling that lands at fine steps).
@@ -552,7 +554,8 @@ def _whirl_step(lean, areal, landing_time, landing_speed, distance):
     vertical at ``distance`` (its side component there). Where it passes,
     the rolling point swings round the rim at ``landing_speed / distance``
     [rad/s]. Within ``PIVOT_LEAN`` of flat the body lands as in a plane (the
-    contact point keeps its side, :func:`rim_angle`): the step may cross the
+    contact point keeps its side,
+    :func:`~freestand.core.contact.body_kernel.pivot_direction`): the step may cross the
     landing when the lean is predicted to pass within ``PLANAR_PASS`` of
     ``PIVOT_LEAN`` (so that the rim point's jump to its stored angle there is
     at most asin(PLANAR_PASS)) and the prediction is trusted: the motion is
@@ -703,7 +706,8 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
 def _lean_comes_flat(par, y, mode, sc):
     """True when a rolling cylinder's lean whirls within ``PIVOT_LEAN`` of flat, closing.
 
-    There the rim point it rolls on is kept (:func:`rim_angle`): a lean that
+    There the rim point it rolls on is kept
+    (:func:`~freestand.core.contact.body_kernel.pivot_direction`): a lean that
     whirls past the vertical at about ``PIVOT_LEAN`` would swing round the
     rim about a point that is no longer the lowest (the rolling disc's finite
     time singularity, Le Saux et al. 2005). The base is then flat to 2 R
@@ -780,9 +784,9 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
         g0, _ = corner_gap(par, y, rot, mode[M_INDEX], d)
         y[2] -= g0
     else:
-        psi = rim_angle(par, rot, data[D_PSI])
+        cos_psi, sin_psi = pivot_direction(par, rot, kind, data[D_PSI], sc)
         radius = par[P_HALF_X]
-        arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
+        arm(par, rot, radius * cos_psi, radius * sin_psi, 0.0, d)
         y[2] -= y[2] + d[2]
     # the held rows at the projected state (every caller solves the mode there next)
     n_normal, n_tangent = prepare_held(par, record, dt, t, y, mode, data, sc)
