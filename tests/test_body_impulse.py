@@ -217,3 +217,18 @@ def test_an_edge_whose_sticking_corner_the_sweeps_keep_on_the_cone(tilt, azimuth
     For 1000 sweeps the sticking corner stays on the cone's edge, sliding, and the Newton
     polish started there finds no solution; it finds it after some 1300 sweeps."""
     _assert_contact_laws("box", 1.0, tilt, azimuth, velocity)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.floats(-2.0, 2.0), min_size=15, max_size=15), st.floats(0.1, 1e5))
+def test_kinetic_energy_is_half_m_v2_plus_half_omega_i_omega(values, mass):
+    """The energy from the world inverse inertia (by its cofactors) equals the direct sum."""
+    b = np.array(values[:9]).reshape(3, 3)
+    inertia = mass * (b @ b.T + 0.5 * np.eye(3))  # [kg m^2], positive definite
+    velocity = np.array(values[9:])
+    par = body_parameters(Body("b", Box((1.0, 1.0, 1.0)), mass, Friction(0.5, 0.5)), 9.81)
+    expected = (
+        0.5 * mass * velocity[:3] @ velocity[:3] + 0.5 * velocity[3:] @ inertia @ velocity[3:]
+    )
+    energy = kinetic_energy(par, np.linalg.inv(inertia), velocity)
+    assert energy == pytest.approx(expected, rel=1e-10, abs=1e-12 * mass)  # [J]

@@ -137,15 +137,32 @@ def _delassus(par, inv_inertia, d, out):
         out[2, k] = un
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def kinetic_energy(par, inv_inertia, velocity):
-    """(1/2) m |v|^2 + (1/2) omega . I_w omega [J] (I_w from its inverse)."""
+    """(1/2) m |v|^2 + (1/2) omega . I_w omega [J] (I_w from its inverse).
+
+    ``omega . I_w omega = omega . adj(A) omega / det(A)`` with ``A = I_w^-1``
+    (the inverse by its cofactors: no factorisation, no allocation).
+    """
     m = par[P_MASS]
-    inertia = np.linalg.inv(inv_inertia)
-    rotational = 0.0
-    for i in range(3):
-        for j in range(3):
-            rotational += velocity[3 + i] * inertia[i, j] * velocity[3 + j]
+    a = inv_inertia
+    # cofactors of A (adj(A) = C^T; the quadratic form takes C as it is)
+    c00 = a[1, 1] * a[2, 2] - a[1, 2] * a[2, 1]
+    c01 = a[1, 2] * a[2, 0] - a[1, 0] * a[2, 2]
+    c02 = a[1, 0] * a[2, 1] - a[1, 1] * a[2, 0]
+    c10 = a[0, 2] * a[2, 1] - a[0, 1] * a[2, 2]
+    c11 = a[0, 0] * a[2, 2] - a[0, 2] * a[2, 0]
+    c12 = a[0, 1] * a[2, 0] - a[0, 0] * a[2, 1]
+    c20 = a[0, 1] * a[1, 2] - a[0, 2] * a[1, 1]
+    c21 = a[0, 2] * a[1, 0] - a[0, 0] * a[1, 2]
+    c22 = a[0, 0] * a[1, 1] - a[0, 1] * a[1, 0]
+    determinant = a[0, 0] * c00 + a[0, 1] * c01 + a[0, 2] * c02
+    wx, wy, wz = velocity[3], velocity[4], velocity[5]
+    rotational = (
+        wx * (c00 * wx + c10 * wy + c20 * wz)
+        + wy * (c01 * wx + c11 * wy + c21 * wz)
+        + wz * (c02 * wx + c12 * wy + c22 * wz)
+    ) / determinant
     return 0.5 * m * (velocity[0] ** 2 + velocity[1] ** 2 + velocity[2] ** 2) + 0.5 * rotational
 
 
