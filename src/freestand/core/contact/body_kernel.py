@@ -215,7 +215,7 @@ def rotation_matrix(y, out):
     out[2, 2] = 1.0 - 2.0 * (x * x + yy * yy)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
 def world_inverse_inertia(par, rot, out):
     """I_w^-1 = R I^-1 R^T (3, 3) [1/(kg m^2)]: T = R I^-1, then T R^T (symmetric)."""
     for i in range(3):
@@ -445,7 +445,7 @@ def row_counts(kind):
     return (2, 3) if kind == EDGE else (3, 3)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
 def tangent_rows(par, y, sc):
     """A FACE's or EDGE's tangential rows at its friction centre, in the scratch ``sc``.
 
@@ -590,7 +590,7 @@ def normal_total(kind, lam):
     return 0.0
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
 def tangential_velocity(y, tangent, n_tangent, out):
     """The tangential rows' velocities s (scaled slip velocity) [m/s]."""
     for k in range(n_tangent):
@@ -1268,7 +1268,7 @@ def _solve_scratch(par, sc, use_bias, slip, direction, n_normal, n_tangent):
                       sc[SC_ACC], sc[SC_LAM])  # fmt: skip
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
 def slip_direction(y, n_tangent, data, tangent, svel, direction):
     """The sliding direction u: the slip velocity's while it points on the stored one's side.
 
@@ -1302,7 +1302,7 @@ def slip_direction(y, n_tangent, data, tangent, svel, direction):
     return unit_slip(svel, n_tangent, data, direction)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
 def unit_slip(svel, n_tangent, data, direction):
     """u from the slip velocity s (``svel``) and the stored r (``data[D_SLIP:]``): see
     :func:`slip_direction`, with the floor ``max(SLIP_FLOOR, data[D_FLOOR])``. Returns False
