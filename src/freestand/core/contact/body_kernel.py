@@ -797,7 +797,8 @@ SC_DIR = 16
 SC_CENTRE = 17  # the friction centre of the rows: base x, y [m] (body frame), rho [m]; kind, index;
 # then 1.0 where the last solve's slip direction was the stored one at any of its centres
 SC_PROBE = 18  # (3, 6) work outside a solve: arms of probed points, a projection's velocities
-SC_EDGE = 19  # (3, 10) a sliding EDGE's terms of its centre's search (:func:`edge_slide_terms`)
+SC_EDGE = 19  # (3, 10) a sliding EDGE's terms of its centre's search (:func:`edge_slide_terms`);
+# a sliding FACE's last centres and their centres of pressure (:func:`_slide_face`)
 SC_RIM = 20  # (4,) the stored rim angle's cosine and sine: set (1.0), psi [rad], cos, sin
 
 # the columns of ``sc[SC_EDGE]``'s rows 0 and 1 (one per corner's normal row r, q_r = M^-1 w_r)
@@ -936,11 +937,12 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     Sticking, the rows' centre does not change the solution (every point of
     the patch is held): one solve, then the friction is expressed about the
     centre of pressure (:func:`centre_stick_friction`). Sliding, the friction
-    ``-mu N u`` acts at the centre of pressure, which the solution moves: the
-    rows are rebuilt at the centre and solved again until it settles
-    (``CENTRE_TOLERANCE``, at most ``CENTRE_ITERATIONS`` solves), a FACE's by
-    the fixed point's steps, an EDGE's by a secant on its share along the
-    edge (:func:`_slide_edge`). ``kinetic``:
+    ``-mu N u`` acts at the centre of pressure, which the solution moves: a
+    FACE's solve places it there itself, and is solved again only where its
+    slip direction or twist radius differ there (:func:`_slide_face`); an
+    EDGE's centre is found by a secant on its share along the edge, then
+    solved once (:func:`_slide_edge`); to ``CENTRE_TOLERANCE``, at most
+    ``CENTRE_ITERATIONS`` solves or ``EDGE_ITERATIONS`` shares. ``kinetic``:
     the slip direction u is the slip velocity's at each centre
     (:func:`slip_direction`, ``stored`` its fallback, as mode data); else u
     is ``direction`` as given. The patch is the one whose rows the scratch
