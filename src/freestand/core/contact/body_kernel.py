@@ -519,6 +519,18 @@ def reset_friction_centre(par, kind, index, centre):
     centre[2] = effective_twist_radius(par, kind, index, centre[0], centre[1])
 
 
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+def on_base(par, cx, cy):
+    """A body-frame base point (cx, cy) [m] kept on the base (a box's rectangle, a disc)."""
+    if par[P_SHAPE] == SHAPE_BOX:
+        bx, by = par[P_HALF_X], par[P_HALF_Y]
+        return min(max(cx, -bx), bx), min(max(cy, -by), by)
+    size = norm2(cx, cy)
+    if size > par[P_HALF_X]:
+        return cx * par[P_HALF_X] / size, cy * par[P_HALF_X] / size
+    return cx, cy
+
+
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
 def move_friction_centre(par, rot, kind, index, lam, centre):
     """Move the friction centre to the patch's centre of pressure; returns how far [m].
@@ -532,14 +544,7 @@ def move_friction_centre(par, rot, kind, index, lam, centre):
         if n <= 0.0:
             return 0.0
         cx, cy = face_centre_of_pressure(rot, lam)
-        if par[P_SHAPE] == SHAPE_BOX:
-            cx = min(max(cx, -par[P_HALF_X]), par[P_HALF_X])
-            cy = min(max(cy, -par[P_HALF_Y]), par[P_HALF_Y])
-        else:
-            size = norm2(cx, cy)
-            if size > par[P_HALF_X]:
-                cx *= par[P_HALF_X] / size
-                cy *= par[P_HALF_X] / size
+        cx, cy = on_base(par, cx, cy)
     elif kind == EDGE:
         n = lam[0] + lam[1]
         if n <= 0.0:
@@ -1016,9 +1021,8 @@ def _anderson_centre(par, history, iteration, centre):
     before it the older (two, or one at the second iterate). With the
     residuals r = F(c) - c: ``c' = F_n - sum_j gamma_j (F_n - F_j)``, gamma
     minimising ``|r_n - sum_j gamma_j (r_n - r_j)|`` (exact for an affine F
-    in the plane from three iterates). Kept on the base as
-    :func:`move_friction_centre` keeps a centre of pressure; sets ``centre``
-    (x, y, rho).
+    in the plane from three iterates). Kept on the base (:func:`on_base`);
+    sets ``centre`` (x, y, rho).
     """
     new = history[iteration % 3]
     rx, ry = new[2] - new[0], new[3] - new[1]
@@ -1041,14 +1045,7 @@ def _anderson_centre(par, history, iteration, centre):
         gamma_a = (ax * rx + ay * ry) / denominator
         cx = new[2] - gamma_a * (new[2] - a[2])
         cy = new[3] - gamma_a * (new[3] - a[3])
-    if par[P_SHAPE] == SHAPE_BOX:
-        cx = min(max(cx, -par[P_HALF_X]), par[P_HALF_X])
-        cy = min(max(cy, -par[P_HALF_Y]), par[P_HALF_Y])
-    else:
-        size = norm2(cx, cy)
-        if size > par[P_HALF_X]:
-            cx *= par[P_HALF_X] / size
-            cy *= par[P_HALF_X] / size
+    cx, cy = on_base(par, cx, cy)
     centre[0] = cx
     centre[1] = cy
     centre[2] = effective_twist_radius(par, FACE, 0, cx, cy)
