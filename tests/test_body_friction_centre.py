@@ -8,7 +8,8 @@ patch becomes the other; moving the friction centre keeps the friction's
 wrench; a body at rest needs no twist torque wherever its centre of gravity
 lies (so it slides at ``mu_0 (g - a_v)`` in every direction); a body sliding
 flat gets no twist from its friction; a sliding patch's rows settle at its
-centre of pressure.
+centre of pressure; a sliding, twisting face's solve obeys Newton and Euler
+with its friction at the centre of pressure of its own normal force.
 """
 
 from __future__ import annotations
