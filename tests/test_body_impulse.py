@@ -204,6 +204,20 @@ def test_an_edges_two_corners_with_one_sliding():
     assert np.allclose(impulses[1, :2], opposite, rtol=0.0, atol=1e-9 * par[0] * scale)
 
 
+def test_a_start_near_the_solution_is_polished_before_any_sweep():
+    """A stretch of the remedy starts each step from the step before's impulses: from a start
+    near the solution (here the sweeps' solution, 1 % larger) Newton's method meets the laws
+    at once, with no sweep, and gives the velocity the sweeps from zero give."""
+    velocity = [0.0, 0.71875, -0.59375, 0.875, 0.046875, 0.5]
+    par, inv, arms, after, impulses, scale = _impact("box", 0.828125, 0.015625, 0.0, velocity)
+    warm_after = np.array(velocity)
+    warm = impulses * 1.01  # a start 1 % off the solution, inside the cone
+    sweeps, how = point_impulses(par, inv, arms, len(arms), par[P_MU_KINETIC], warm_after, warm)
+    assert (sweeps, how) == (0, ENDED_POLISHED)
+    # the same velocity after, to the polish's tolerance (1e-10 of the speed)
+    assert np.allclose(warm_after, after, rtol=0.0, atol=10 * POLISH_TOLERANCE * scale)
+
+
 @pytest.mark.parametrize(
     "tilt, azimuth, velocity",
     [

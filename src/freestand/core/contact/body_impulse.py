@@ -28,7 +28,9 @@ and Jean (1999) do (the scheme of Siconos), which always has a solution:
   points without moving the body (an edge's two corners pushing along it):
   from the sweeps' impulses after 8, 16, 32, ... sweeps a semi-smooth
   Newton method (:mod:`freestand.core.contact.alart_curnier`) is tried,
-  and its solution taken where it meets every law to ``POLISH_TOLERANCE``.
+  and its solution taken where it meets every law to ``POLISH_TOLERANCE``;
+  from a start with impulses (the remedy's step before's) it is tried
+  first, before any sweep.
 
 With Coulomb's law met, a plastic impact never gains kinetic energy (the
 change is ``P . u_after - P.W.P / 2 <= 0``); sweeps stopped short of it
@@ -252,6 +254,15 @@ def polish(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale):
     return True
 
 
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _warm(impulses, count):
+    """Whether a start of the sweeps has a normal impulse at any of its ``count`` points."""
+    for p in range(count):
+        if impulses[p, 2] != 0.0:
+            return True
+    return False
+
+
 @nb.njit(cache=True, error_model="numpy", _nrt=True)
 def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses):
     """Plastic impulses at the points with Coulomb friction on the circular cone.
@@ -267,7 +278,14 @@ def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses):
     start, applied to the velocity first (zeros, or an admissible guess,
     ``P_n >= 0`` and ``|P_t| <= mu P_n``, such as the impulses of the step
     before: the sweeps then start near their end); on exit the impulses.
-    Returns the number of sweeps made and how they ended: ``ENDED_CONVERGED``
+    A start with a normal impulse is polished first, before any sweep: a
+    stretch of the remedy on an edge starts each step from the step before's
+    impulses, from which Newton's method mostly converges in one or two
+    iterations (a rocking cabinet's stretches under a record: 667 of 696
+    such starts), where the sweeps alone do not converge (the edge's
+    corners: a singular W) and eight of them came before every polish.
+    Returns the number of sweeps made (0: polished from the start) and how
+    they ended: ``ENDED_CONVERGED``
     (the sweeps' change fell below ``SWEEP_TOLERANCE``), ``ENDED_POLISHED``
     or ``ENDED_EXHAUSTED`` (``SWEEPS`` made: the laws are met only as far as
     the sweeps came).
@@ -283,6 +301,9 @@ def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses):
         stiffness[p] = largest_tangential_eigenvalue(delassus[p])
         _apply(par, inv_inertia, arms[p], impulses[p, 0], impulses[p, 1], impulses[p, 2],
                velocity)  # fmt: skip
+    if _warm(impulses, count) and polish(par, inv_inertia, arms, count, mu, start, impulses,
+                                          velocity, scale):  # fmt: skip
+        return 0, ENDED_POLISHED
     for sweep in range(SWEEPS):
         change = _sweep(par, inv_inertia, arms, count, mu, delassus, stiffness, velocity,
                         impulses, sweep % 2 == 1, scale)  # fmt: skip
