@@ -5,7 +5,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
@@ -211,6 +211,7 @@ def test_a_cask_landing_from_a_small_rock_rocks_on_without_free_flight():
     st.floats(-1.0, 1.0), st.floats(-1.0, 1.0), st.floats(-1.0, 1.0), st.floats(-1.0, 1.0),
     st.floats(-math.pi, math.pi), st.sampled_from([1.0, 1e-8, 0.0]),
 )  # fmt: skip
+@example(-1.0, 1.0, 1.635514116306358e-114, 0.0, 0.0, 1.0)  # a tie (below)
 def test_the_rim_point_a_cylinder_rolls_on_is_the_lowest_on_the_stored_side(
     q0, q1, q2, q3, stored, scale
 ):
@@ -238,5 +239,9 @@ def test_the_rim_point_a_cylinder_rolls_on_is_the_lowest_on_the_stored_side(
             if math.cos(psi - psi_stored) < 0.0:
                 psi += math.pi
         c, s = bk.pivot_direction(par, rot, bk.POINT, psi_stored, sc)
+        if abs(math.cos(psi - psi_stored)) < 1e-12 and math.cos(psi) * c + math.sin(psi) * s < 0:
+            # the pivot perpendicular to the stored angle (found: q = (-1, 1, 1.6e-114, 0),
+            # cos 6e-17 here, -1.6e-114 in the kernel): each side is as near, round-off picks
+            psi += math.pi
         assert (c, s) == pytest.approx((math.cos(psi), math.sin(psi)), abs=1e-12)
     assert bk.pivot_direction(par, rot, bk.FACE, stored, sc) == (1.0, 0.0)
