@@ -155,8 +155,9 @@ class BodyTimeHistory:
         [s].
     diagnostics : dict
         steps, events, impacts, remedies (where no contact mode was
-        admissible: a velocity-level impact or time stepping) and
-        stretch_steps (the time-stepping steps).
+        admissible: a velocity-level impact or time stepping),
+        stretch_steps (the time-stepping steps) and event_trials (the
+        RK4 trials of the events' searches).
     message : str
         Why the simulation failed (status ``"failed"``: the state stopped
         being finite, or a base point went deeper below the support than
@@ -525,6 +526,7 @@ def _result(
             "impacts": int(istate[engine.I_IMPACTS]),
             "remedies": int(istate[engine.I_REMEDIES]),
             "stretch_steps": int(istate[engine.I_STRETCH_STEPS]),
+            "event_trials": int(istate[engine.I_TRIALS]),
         },
         message=message,
     )
