@@ -212,13 +212,27 @@ def default_body_step(body: Body, gravity: float = GRAVITY) -> float:
 
 
 def _breaks(motion: SupportMotion3) -> np.ndarray:
-    values = motion.array()
-    kinks = np.zeros(values.shape[1], dtype=bool)
+    return _kinks(np.ascontiguousarray(motion.array(), dtype=float), float(motion.time_step))
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _kinks(values, dt):
+    """Times [s] of the samples where a component's slope changes, and of the last one.
+
+    A change above 1e-12 of the component's largest magnitude (a straight
+    run of samples is no break: a step may cross it).
+    """
+    count = values.shape[1]
+    kinks = np.zeros(count, dtype=np.bool_)
     for row in values:
-        scale = max(float(np.max(np.abs(row), initial=0.0)), 1e-300)
-        kinks[1:-1] |= np.abs(row[2:] - 2.0 * row[1:-1] + row[:-2]) > 1e-12 * scale
-    kinks[-1] = True
-    return np.array(np.flatnonzero(kinks) * motion.time_step, dtype=float)
+        scale = 1e-300
+        for i in range(count):
+            scale = max(scale, abs(row[i]))
+        for i in range(1, count - 1):
+            if abs(row[i + 1] - 2.0 * row[i] + row[i - 1]) > 1e-12 * scale:
+                kinks[i] = True
+    kinks[count - 1] = True
+    return np.flatnonzero(kinks) * dt
 
 
 def initial_state(body: Body, initial_tilt: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
@@ -315,8 +329,7 @@ def simulate_body(
     # a step ends at max_step, at every break of the record and at every event
     capacity = int(end / step * 1.1) + 2 * int(np.count_nonzero(breaks < end)) + 64
     buffers = _buffers(capacity)
-    # written by the engine before they are read: not zeroed
-    events = (np.empty(EVENT_ROWS),) + tuple(np.empty(EVENT_ROWS, dtype=np.int64) for _ in range(3))
+    events = _event_buffers(capacity, (np.empty(0),) * 4, 0)
     t = 0.0
     chunks = []
     while True:
@@ -329,18 +342,43 @@ def simulate_body(
         chunks.append(tuple(b.copy() for b in buffers))
         istate[engine.I_RECORDS] = 1
         buffers = _buffers(capacity)
+        events = _event_buffers(capacity, events, int(istate[engine.I_EVENTS]))
         for b, last in zip(buffers, chunks[-1], strict=True):
             b[0] = last[-1]
-    time, state, modes, forces = (
-        np.concatenate([c[k] if i == 0 else c[k][1:] for i, c in enumerate(chunks)])
-        for k in range(4)
-    )
+    if len(chunks) == 1:
+        time, state, modes, forces = chunks[0]
+    else:
+        time, state, modes, forces = (
+            np.concatenate([c[k] if i == 0 else c[k][1:] for i, c in enumerate(chunks)])
+            for k in range(4)
+        )
     return _result(body, par, istate, time, state, modes, forces, events, tolerances.gap)
 
 
 def _buffers(capacity: int):
+    # written by the engine before they are read: not zeroed
     return (np.empty(capacity), np.empty((capacity, STATE_SIZE)),
             np.empty((capacity, 3), dtype=np.int64), np.empty((capacity, 2)))  # fmt: skip
+
+
+def _event_buffers(capacity: int, events: tuple, count: int) -> tuple:
+    """The engine's event arrays (time, kind, patch before, after) for its next call.
+
+    A call of the engine writes at most ``capacity`` rows and an event per
+    row, with one more at the start and one at an overturn: the arrays hold
+    the ``count`` events so far and that many more (up to ``EVENT_ROWS``;
+    the engine counts the others). They grow as needed, keeping what they
+    hold: allocating ``EVENT_ROWS`` at once cost a sliding cask's 10 s run
+    a tenth of its time.
+    """
+    size = min(EVENT_ROWS, count + capacity + 2)
+    if events[0].shape[0] >= size:
+        return events
+    grown = (np.empty(size),) + tuple(np.empty(size, dtype=np.int64) for _ in range(3))
+    kept = min(count, events[0].shape[0])
+    for new, old in zip(grown, events, strict=True):
+        new[:kept] = old[:kept]
+    return grown
 
 
 @dataclass(frozen=True)
@@ -432,10 +470,11 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
             twist[i] = 0.0
         else:
             jump = angle - previous
-            turn = (jump + math.pi) % (2.0 * math.pi) - math.pi
-            if turn == -math.pi and jump > 0.0:
-                turn = math.pi
-            twist[i] = twist[i - 1] + (turn if abs(jump) >= math.pi else jump)
+            if abs(jump) >= math.pi:
+                jump = (jump + math.pi) % (2.0 * math.pi) - math.pi
+                if jump == -math.pi and angle > previous:
+                    jump = math.pi
+            twist[i] = twist[i - 1] + jump
         previous = angle
         if outline.shape[0] > 0:
             low, high = math.inf, -math.inf
@@ -467,20 +506,29 @@ def _valid_rows(time, state, lowest, depth) -> tuple[int, str]:
     (:func:`lost_contact_depth`) means the contact was lost; at least the
     first row is kept.
     """
-    finite = np.all(np.isfinite(state), axis=1)
-    below = lowest < -depth
-    bad = np.flatnonzero(~finite | below)
-    if bad.size == 0:
+    first = _first_invalid(np.ascontiguousarray(state, dtype=float), lowest, depth)
+    if first < 0:
         return time.size, ""
-    first = int(bad[0])
     rows = max(first, 1)
-    if not finite[first]:
+    if not np.all(np.isfinite(state[first])):
         why = f"the state stopped being finite at t = {time[first]:.6g} s"
     else:
         why = (f"a base point went {-lowest[first]:.3g} m below the support at "
                f"t = {time[first]:.6g} s: the contact was lost")  # fmt: skip
     return rows, (f"{why} (a defect of the 3-D engine); the histories and peaks stop at "
                   f"t = {time[rows - 1]:.6g} s")  # fmt: skip
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _first_invalid(state, lowest, depth):
+    """The first row whose state is not finite or whose ``lowest`` is below ``-depth``; -1."""
+    for i in range(state.shape[0]):
+        if not lowest[i] >= -depth:  # below, or NaN
+            return i
+        for j in range(state.shape[1]):
+            if not math.isfinite(state[i, j]):
+                return i
+    return -1
 
 
 def _result(
@@ -494,11 +542,13 @@ def _result(
     highest = motion.highest[:rows]
     count = int(istate[engine.I_EVENTS])
     names = ("free", "point", "edge", "face")
+    kept = min(count, events[0].shape[0])
+    last = float(time[-1])
     event_list = tuple(
-        (float(events[0][i]), engine.EVENT_KINDS[events[1][i]],
-         names[events[2][i]] if events[2][i] >= 0 else "", names[events[3][i]])
-        for i in range(min(count, events[0].shape[0])) if events[0][i] <= time[-1]
-    )  # fmt: skip
+        (t, engine.EVENT_KINDS[kind], names[before] if before >= 0 else "", names[after])
+        for t, kind, before, after in zip(*(e[:kept].tolist() for e in events), strict=True)
+        if t <= last
+    )
     overturned = not message and istate[engine.I_STATUS] == engine.STATUS_OVERTURNED
     return BodyTimeHistory(
         body=body.name,
