@@ -1,4 +1,5 @@
-"""Reading a 3-D body's motion from its states (issue #18): tilt, slide, twist, base heights."""
+"""Reading a 3-D body's motion from its states (issue #18): tilt, slide, twist, base heights;
+and the history's rows gathered from the engine's calls."""
 
 import math
 
@@ -6,11 +7,14 @@ import numpy as np
 import pytest
 
 from freestand.core.body import Body, Box, Cylinder
+from freestand.core.dynamics import body_history
 from freestand.core.dynamics.body_history import (
+    SupportMotion3,
     _valid_rows,
     body_motion,
     initial_state,
     lost_contact_depth,
+    simulate_body,
 )
 from freestand.core.model import Friction
 
@@ -75,3 +79,20 @@ def test_a_history_is_cut_before_a_state_below_the_support_or_not_finite():
     assert rows == 1
     assert "stopped being finite at t = 1 s" in message
     assert _valid_rows(time, np.tile(initial_state(BOX), (5, 1)), np.zeros(5), depth) == (5, "")
+
+
+def test_a_run_whose_buffers_fill_gives_the_run_in_one_call(monkeypatch):
+    """The engine returns where its output buffer is full and is called again; the rows and
+    the events (whose arrays grow with the calls) must be those of one call."""
+    body = Body("box", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.5, 0.5))
+    t = np.arange(0.0, 2.0001, 0.005)
+    a = 4.0 * np.sin(2.0 * np.pi * 2.0 * t) * (t < 1.5)
+    motion = SupportMotion3(0.005, 0.3 * a, a, 0.2 * a)
+    whole = simulate_body(body, motion, 2.0)
+    monkeypatch.setattr(body_history, "_capacity", lambda end, step, breaks: 40)
+    chunked = simulate_body(body, motion, 2.0)
+    assert len(whole.events) > 5 and len(whole.time) > 200  # several calls of 40 rows
+    assert chunked.events == whole.events
+    np.testing.assert_array_equal(chunked.time, whole.time)
+    np.testing.assert_array_equal(chunked.state, whole.state)
+    np.testing.assert_array_equal(chunked.patch, whole.patch)

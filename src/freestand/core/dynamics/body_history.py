@@ -326,8 +326,7 @@ def simulate_body(
     data = np.zeros(DATA_SIZE)
     istate = np.zeros(engine.I_SIZE, dtype=np.int64)
     scratch = np.zeros(1, dtype=SCRATCH_DTYPE)  # its record is the kernel's scratch
-    # a step ends at max_step, at every break of the record and at every event
-    capacity = int(end / step * 1.1) + 2 * int(np.count_nonzero(breaks < end)) + 64
+    capacity = _capacity(end, step, breaks)
     buffers = _buffers(capacity)
     events = _event_buffers(capacity, (np.empty(0),) * 4, 0)
     t = 0.0
@@ -353,6 +352,15 @@ def simulate_body(
             for k in range(4)
         )
     return _result(body, par, istate, time, state, modes, forces, events, tolerances.gap)
+
+
+def _capacity(end: float, step: float, breaks: np.ndarray) -> int:
+    """Rows of the output buffers of one call of the engine (more calls where they fill).
+
+    A step ends at ``step`` [s], at every break of the record and at every
+    event, up to ``end`` [s].
+    """
+    return int(end / step * 1.1) + 2 * int(np.count_nonzero(breaks < end)) + 64
 
 
 def _buffers(capacity: int):
