@@ -53,8 +53,8 @@ under the first 10 s of its record (best of several runs after compilation);
 of the suite's scale 0.1-2.5 each) on a pool of ``WORKERS`` processes.
 
 (c) Profile: steps, events and impacts per simulated second of each case, its
-remedies and time-stepping steps (no admissible mode), the time per step, and
-the share of the compiled loop (the rest is the Python front end: arrays in,
+remedies and time-stepping steps (no admissible mode), the RK4 trials of its
+event searches per event, the time per step, and the share of the compiled loop (the rest is the Python front end: arrays in,
 histories and peaks out).
 
 (d) Ensemble: the slender cylinder's response is chaotic (one run's peaks move
@@ -827,11 +827,12 @@ REST_SCALE = 0.3  # each case's record x 0.3: every body stays at rest
 def profile(records: list[SupportMotion3]) -> None:
     print(
         f"\n(c) profile, {SUITE_DURATION:g} s: each case's record, and x {REST_SCALE:g} (at rest"
-        " throughout); the compiled loop's share of the time from cProfile"
+        " throughout); RK4 trials per located event; the compiled loop's share of the time"
+        " from cProfile"
     )
     print(
         f"  {'body':18s} {'scale':>5s} {'steps/s':>8s} {'events/s':>8s} {'impacts/s':>9s}"
-        f" {'remedies':>8s} {'stretch steps':>13s}"
+        f" {'remedies':>8s} {'stretch steps':>13s} {'trials/event':>12s}"
         f" {'ms per run':>10s} {'us per step':>11s} {'compiled loop':>13s}"
     )
     for case in TIMED:
@@ -855,6 +856,7 @@ def profile(records: list[SupportMotion3]) -> None:
                 f"  {body.name:18s} {scale:5g} {d['steps'] / SUITE_DURATION:8.0f}"
                 f" {d['events'] / SUITE_DURATION:8.1f} {d['impacts'] / SUITE_DURATION:9.1f}"
                 f" {d['remedies']:8d} {d['stretch_steps']:13d}"
+                f" {d['event_trials'] / max(d['events'] - 1, 1):12.1f}"
                 f" {1e3 * seconds:10.2f} {1e6 * seconds / d['steps']:11.2f}"
                 f" {100 * loop / total:12.0f}%"
             )
