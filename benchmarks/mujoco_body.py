@@ -54,8 +54,8 @@ of the suite's scale 0.1-2.5 each) on a pool of ``WORKERS`` processes.
 
 (c) Profile: steps, events and impacts per simulated second of each case, its
 remedies and time-stepping steps (no admissible mode), the RK4 trials of its
-event searches per event, the time per step, and the share of the compiled loop (the rest is the Python front end: arrays in,
-histories and peaks out).
+event searches per event, the time per step, and the share of the compiled
+loop (the rest is the Python front end: arrays in, histories and peaks out).
 
 (d) Ensemble: the slender cylinder's response is chaotic (one run's peaks move
 with a 1e-3 change of the record), so it is also compared over all 20 records
