@@ -777,8 +777,11 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
     per trial), tried on RK4 states, and then a Newton step from there is
     tried just past it, from each side in turn (:func:`_seeded_trial`);
     where the seeds do not close the bracket, the regula falsi goes on from
-    it. A slip-stop is not seeded: past the stop the end's rate has the
-    friction turned, and the interpolant is not the slip's.
+    it. A slip-stop is not seeded: the friction's direction has kinks
+    within such a step (where the slip crosses its floor and turns against
+    the stored direction, :func:`~freestand.core.contact.body_kernel.slip_direction`),
+    and the cubic through the step's ends missed the cask's stops by up to
+    3e-5 s.
     ``bracket`` (3, ``MAX_EVENT_FUNCTIONS``) is work space: the functions'
     levels and their values at the bracket's ends.
     """
@@ -798,8 +801,7 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
     # the crossing on the step's cubic interpolant seeds the search on RK4 states
     first, rate_ = 0.0, math.nan
     if kinds[target] != FN_SLIP_STOP:
-        # (a slip that stopped within the step slides back at its end: the end's rate, with
-        # the friction turned, is not the slip's)
+        # (not a slip-stop: the friction's direction has kinks within its step, see above)
         state_rate(out, sc[SC_ACC], k[1])  # y' at the step's end (k[1] is free until a trial)
         first, rate_ = interpolated_crossing(par, record, dt, t, h, y, out, mode, data, sc, k, ref,
                                              values, kinds, levels[target], target, g_low,
