@@ -152,8 +152,9 @@ def _lowest_gap(par, y):
     st.floats(0.02, 0.3), st.floats(-3.0, 3.0), st.floats(0.0, 0.5),
     st.lists(st.floats(-1.0, 1.0), min_size=3, max_size=3), st.floats(1.05, 2.0),
 )  # fmt: skip
-def test_a_spinning_fall_s_landing_is_the_crossing_on_rk4_states(tilt, azimuth, speed, spin,
-                                                                  overshoot):
+def test_a_spinning_fall_s_landing_is_the_crossing_on_rk4_states(
+    tilt, azimuth, speed, spin, overshoot
+):
     """A box falling and spinning in free flight: its corners' gaps are no cubic in time, the
     interpolant's crossing is only near the landing, and the seeds and the regula falsi must
     still end on the crossing on RK4 states from the step's start (found here by bisection
