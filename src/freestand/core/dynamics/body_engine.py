@@ -112,7 +112,7 @@ from freestand.core.contact.body_modes import (
     select_mode,
     touching_points,
 )
-from freestand.core.contact.regula_falsi import retained_scale
+from freestand.core.contact.regula_falsi import narrowed
 
 EVENT_TIME = 1e-11  # [s] width of the bracket of a located event
 GAP_SLACK = 1e-12  # [m] a released point may sit this far below the support
@@ -709,18 +709,8 @@ def interpolated_crossing(par, record, dt, t, h, y, end, mode, data, sc, k, ref,
             return 0.0, math.nan
         previous, g_previous = last, g_last
         last, g_last = middle, g
-        if g < 0.0:
-            high = middle
-            if side == -1:
-                g_low *= retained_scale(g, g_high)
-            side = -1
-            g_high = g
-        else:
-            low = middle
-            if side == 1:
-                g_high *= retained_scale(g, g_low)
-            side = 1
-            g_low = g
+        low, high, g_low, g_high, side = narrowed(g < 0.0, middle, g, low, high, g_low, g_high,
+                                                  side)  # fmt: skip
     rate_ = (g_previous - g_last) / (last - previous) if last != previous else math.nan
     return 0.5 * (low + high), rate_ if rate_ > 0.0 else math.nan
 
@@ -837,30 +827,24 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
             last, g_last = middle, values[target] - levels[target]
             seeding = fired < 0 or fired == target  # another function fired: no more seeds
         if fired >= 0:
-            high = middle
             for i in range(n):
                 high_values[i] = values[i]
             for i in range(STATE_SIZE):
                 out[i] = trial[i]
-            g_trial = high_values[fired] - levels[fired]
-            if fired != target:
-                target = fired
-                side = 0
-                g_low = low_values[target] - levels[target]
-            elif side == -1:
-                g_low *= retained_scale(g_trial, g_high)
-            else:
-                side = -1
-            g_high = g_trial
         else:
-            low = middle
             for i in range(n):
                 low_values[i] = values[i]
-            g_trial = low_values[target] - levels[target]
-            if side == 1:
-                g_high *= retained_scale(g_trial, g_low)
-            side = 1
-            g_low = g_trial
+        if fired >= 0 and fired != target:
+            # another function fired first: it is followed, from the bracket's low end
+            target = fired
+            side = 0
+            high = middle
+            g_low = low_values[target] - levels[target]
+            g_high = high_values[target] - levels[target]
+        else:
+            g_trial = values[target] - levels[target]
+            low, high, g_low, g_high, side = narrowed(fired >= 0, middle, g_trial, low, high,
+                                                      g_low, g_high, side)  # fmt: skip
     # the solve at the event's state (the caller's next phase reads the scratch)
     event_functions(par, record, dt, t + high, out, mode, data, sc, ref, values, kinds)
     return high, kinds[target], trials
