@@ -23,6 +23,7 @@ from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact import body_kernel as bk
+from freestand.core.contact import face_friction as ff
 from freestand.core.dynamics.body_history import initial_state
 from freestand.core.model import Friction
 
@@ -208,7 +209,7 @@ def test_a_slow_twisting_slide_s_friction_acts_at_its_own_centre_of_pressure(
     A slip slower than the floor (``body_kernel.unit_slip``; the engine's
     ``slip_floor``) turns to the stored direction, so u(c) is no longer the
     slip's own direction: the friction centre is found on the same model by
-    Newton's method (``body_kernel._predicted_centre``). Speeds of 1e-5 to
+    Newton's method (``face_friction.model_centre``). Speeds of 1e-5 to
     1e-3 m/s with twists of up to 0.01 rad/s (``omega_z b`` up to 5e-3 m/s),
     as a cabinet's slide near its stop.
     """
@@ -382,7 +383,7 @@ def test_the_search_on_the_slip_s_pull_finds_the_slow_slide_s_centre(
 ):
     """The bracketed search on the pull beta alone settles, and a solve confirms it.
 
-    ``body_kernel.pulled_centre`` is the kernel's last resort for a slip
+    ``face_friction.pulled_centre`` is the kernel's last resort for a slip
     below its floor (after Newton's method on the same model, which settles
     all but some 1 in 1,000 of these): here it is run on its own from the
     first solve's model, and a solve with the friction at the centre it
@@ -390,7 +391,10 @@ def test_the_search_on_the_slip_s_pull_finds_the_slow_slide_s_centre(
     """
     _, par, y, data, sc, model, rows = _first_slide_solve(cylinder, gx, gy, yaw, speed, slide,
                                                           spin, floor)  # fmt: skip
-    cx, cy, settled = bk.pulled_centre(par, y, sc, data, model)
+    base = (not cylinder, 0.5, 0.5 if cylinder else 0.3, par[bk.P_RHO_FACE], 0.5 * bk.RHO_FLOOR)
+    floor_ = max(bk.SLIP_FLOOR, floor)
+    args = (model, base, sc[bk.SC_ROT], y[12], data, bk.D_SLIP, floor_, np.zeros(3), np.zeros(3))
+    cx, cy, settled = ff.pulled_centre(args)
     assert settled
     _place_centre(par, y, sc, data, rows, cx, cy)
     _solve_on_rows(par, y, sc, data, rows)

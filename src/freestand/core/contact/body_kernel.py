@@ -83,11 +83,12 @@ import numpy as np
 from freestand.core.body import Body, Box
 from freestand.core.contact.engine import solve_in_place
 from freestand.core.contact.face_friction import (
+    CENTRE_TOLERANCE,
     face_twist_radius,
+    model_centre,
     rectangle_twist_radius,
-    twisting_centre,
 )
-from freestand.core.contact.regula_falsi import narrowed
+from freestand.core.contact.slip_law import SLIP_FLOOR, pulled_unit
 from freestand.core.contact.vectors import norm2
 
 # --- the parameter vector -----------------------------------------------------------------------
@@ -138,10 +139,7 @@ TILT_EPSILON = 1e-9  # sin(tilt) below which a cylinder counts as flat for its r
 PIVOT_LEAN = 1e-6  # sin(tilt) below which a rocking cylinder keeps its rim point (pivot_direction)
 RHO_FLOOR = 1e-9  # smallest twist radius of a FACE or EDGE, relative to the base's half-width [-]
 CENTRE_ITERATIONS = 12  # most solves of a sliding FACE or EDGE to settle its friction centre
-CENTRE_TOLERANCE = 1e-12  # its settling: a move below this times the half-width [-]
 CENTRE_ROUNDOFF = 1e-9  # or a FACE's move below this that no longer shrinks (the solve's round-off)
-MODEL_ITERATIONS = 30  # most Newton steps on a sliding FACE's model of its centre (no solves)
-PULL_TRIALS = 80  # most trials of its search on the slip's pull to the stored direction
 EDGE_ITERATIONS = 60  # most trial centres of a sliding EDGE (each a 2 x 2 system, edge_share)
 
 
@@ -803,14 +801,6 @@ E_BX = 8  # (q_r's moment x d_b), x and y: at the second corner
 E_BY = 9
 # row 2: the corners' horizontal velocities (a x, a y, b x, b y) [m/s], then omega_z [rad/s]
 
-#: [m/s] below which a slip velocity has no direction of its own: a slip this slow keeps the
-#: direction it started with (or had at its step's start). Above the residue (some 1e-11
-#: m/s) that the drift projection leaves in the rows of a slip starting from rest, and above
-#: the micro-slips of an edge at its friction limit, whose direction swings within
-#: microseconds (the friction's direction moves the centre of pressure along the edge, and
-#: with it the slip velocity there); 1e-9 m/s let them turn it.
-SLIP_FLOOR = 1e-6
-
 
 #: the scratch's fields, in the order of the SC_* indices: one record, passed to a compiled
 #: function as one pointer (a tuple of its 19 arrays was passed as some 150 words, at every call)
@@ -970,8 +960,9 @@ def _slide_face(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_ta
     the same there (:func:`_face_friction_kept`): at once without twist. A
     twist turns the slip across the base (by about ``omega_z b / |s|``):
     where u is the slip velocity's own direction, c = F(c) is then one
-    equation in one unknown, and otherwise a small Newton's problem, solved
-    without a solve (:func:`_predicted_centre`); the next solve confirms it.
+    equation in one unknown, and otherwise a small problem in the plane,
+    solved without a solve (:func:`_predicted_centre`); the next solve
+    confirms it.
     Where the body's inertia couples twist and tilt (F is then not the
     affine map the prediction takes), or the prediction does not settle,
     c = F(c) is found by Anderson's mixing of the last three centres (D. G.
@@ -1036,37 +1027,22 @@ def _predicted_centre(par, y, sc, stored, ux, uy):
     ``sc[SC_SVEL]``). The centre of pressure is then ``a + mu h u(c)`` for
     any u, a = p - mu h u (body frame; ``face_friction``'s (1), exact where
     the body's principal axes include the vertical), and the slip velocity
-    at c is the base's rigid field's, ``w(p) + omega_z e_z x (c - p)``: c =
-    F(c) needs no further solve (:func:`_model_map`). u(c) is the direction
-    of ``s(c) + beta r`` (:func:`unit_slip`; r the stored direction, beta >=
-    0 its pull, 0 for the slip's own direction). First the closed form's
-    root for beta = 0 (:func:`face_friction.twisting_centre`); where u is not
-    the slip's own there (a slip slower than the step's floor, or turned
-    against r), Newton's method on the model (:func:`_model_newton`) from p,
-    then from ``a + mu h r``; then the bracketed search on beta
-    (:func:`pulled_centre`). Sets ``sc[SC_CENTRE]`` to the centre found,
-    and leaves it at p where none settles.
+    at c is the base's rigid field's: c = F(c) needs no further solve
+    (``face_friction.model_centre``: a closed form for the slip's own
+    direction, else Newton's method and a bracketed search on the pull
+    towards the stored direction). Sets ``sc[SC_CENTRE]`` to the centre
+    found, and leaves it at p where none settles.
     """
-    centre, rot = sc[SC_CENTRE], sc[SC_ROT]
-    model = face_model(par, sc, ux, uy)
-    px, py, lever = model[2], model[3], model[6]
-    cx, cy = _pulled_twisting_centre(par, y, sc, stored, model, 0.0)
-    tolerance = CENTRE_TOLERANCE * par[P_HALF_X]
-    fx, fy = _model_map(par, y, sc, stored, model, cx, cy)
-    if norm2(fx - cx, fy - cy) > tolerance:
-        cx, cy, settled = _model_newton(par, y, sc, stored, model, px, py)
-        if not settled:  # from where the stored direction r would put it (u = r)
-            r_x = rot[0, 0] * stored[D_SLIP] + rot[1, 0] * stored[D_SLIP + 1]
-            r_y = rot[0, 1] * stored[D_SLIP] + rot[1, 1] * stored[D_SLIP + 1]
-            cx, cy, settled = _model_newton(par, y, sc, stored, model, model[0] + lever * r_x,
-                                            model[1] + lever * r_y)  # fmt: skip
-        if not settled:
-            cx, cy, settled = pulled_centre(par, y, sc, stored, model)
-        if not settled:
-            cx, cy = px, py
-    centre[0] = cx
-    centre[1] = cy
-    centre[2] = effective_twist_radius(par, FACE, 0, cx, cy)
+    centre = sc[SC_CENTRE]
+    base = (par[P_SHAPE] == SHAPE_BOX, par[P_HALF_X], par[P_HALF_Y], par[P_RHO_FACE],
+            RHO_FLOOR * par[P_HALF_X])  # fmt: skip
+    floor = max(SLIP_FLOOR, stored[D_FLOOR])
+    cx, cy, settled = model_centre(face_model(par, sc, ux, uy), base, sc[SC_ROT], y[12], stored,
+                                   D_SLIP, floor, sc[SC_SVEL], sc[SC_DIR])  # fmt: skip
+    if settled:
+        centre[0] = cx
+        centre[1] = cy
+        centre[2] = effective_twist_radius(par, FACE, 0, cx, cy)
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -1076,7 +1052,7 @@ def face_model(par, sc, ux, uy):
     (a_x, a_y, p_x, p_y, w_x, w_y, mu h) [m, m/s] in the body frame: p the
     solve's centre of pressure (``sc[SC_CENTRE]``, the slip velocity there
     ``sc[SC_SVEL]``, w its horizontal part), its friction along (``ux``,
-    ``uy``) (world), ``a = p - mu h u``.
+    ``uy``) (world), ``a = p - mu h u``: ``face_friction``'s model.
     """
     centre, rot, svel = sc[SC_CENTRE], sc[SC_ROT], sc[SC_SVEL]
     lever = par[P_MU_KINETIC] * par[P_CENTRE + 2]
@@ -1086,141 +1062,6 @@ def face_model(par, sc, ux, uy):
     wx = rot[0, 0] * svel[0] + rot[1, 0] * svel[1]
     wy = rot[0, 1] * svel[0] + rot[1, 1] * svel[1]
     return (px - lever * u_x, py - lever * u_y, px, py, wx, wy, lever)
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _pulled_twisting_centre(par, y, sc, stored, model, beta):
-    """The centre c = a + mu h u(c) for u the direction of ``s(c) + beta r`` (a fixed beta).
-
-    A constant ``beta r`` added to the slip shifts w(a) by ``beta r_xy`` and
-    the twist by ``beta r_t``: :func:`face_friction.twisting_centre`'s
-    closed form (``model``: :func:`face_model`'s).
-    """
-    ax, ay, px, py, wx, wy, lever = model
-    rot, omega = sc[SC_ROT], y[12]
-    r_x = rot[0, 0] * stored[D_SLIP] + rot[1, 0] * stored[D_SLIP + 1]  # body frame
-    r_y = rot[0, 1] * stored[D_SLIP] + rot[1, 1] * stored[D_SLIP + 1]
-    # the slip velocity at a: w(p) + omega e_z x (a - p)
-    w_x = wx - omega * (ay - py) + beta * r_x
-    w_y = wy + omega * (ax - px) + beta * r_y
-    return twisting_centre(ax, ay, w_x, w_y, beta * stored[D_SLIP + 2], omega, lever,
-                           par[P_SHAPE] == SHAPE_BOX, par[P_HALF_X], par[P_HALF_Y],
-                           par[P_RHO_FACE], RHO_FLOOR * par[P_HALF_X])  # fmt: skip
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def pulled_centre(par, y, sc, stored, model):
-    """c = F(c) of :func:`_model_map` by a bracketed search on the pull beta; (cx, cy, settled).
-
-    :func:`unit_slip`'s u is the direction of ``s + beta(s) r``, ``beta(s)
-    = |s . r| - s . r + max(floor - |s|, 0)``. For a fixed beta the centre
-    is :func:`_pulled_twisting_centre`'s; the search is on ``beta -
-    beta(s(c(beta)))``, not positive at 0 and positive at ``2 s_max +
-    floor`` (s_max bounding |s| over the disc |c - a| <= mu h): regula falsi
-    with Anderson and Bjorck's scaling, to the bracket's round-off or the
-    model's residual below ``CENTRE_TOLERANCE``.
-    """
-    ax, ay, px, py, wx, wy, lever = model
-    omega = abs(y[12])
-    floor = max(SLIP_FLOOR, stored[D_FLOOR])
-    reach = norm2(wx - y[12] * (ay - py), wy + y[12] * (ax - px)) + omega * (
-        lever + par[P_RHO_FACE]
-    )
-    low, high = 0.0, 2.0 * reach + floor
-    g_low = -_slip_pull(par, y, sc, stored, model, floor, 0.0)[0]
-    g_high = high - _slip_pull(par, y, sc, stored, model, floor, high)[0]
-    side = 0
-    tolerance = CENTRE_TOLERANCE * par[P_HALF_X]
-    for _ in range(PULL_TRIALS):
-        middle = low - g_low * (high - low) / (g_high - g_low)
-        if not low < middle < high:
-            middle = 0.5 * (low + high)
-        if middle <= low or middle >= high:
-            break
-        pull, cx, cy = _slip_pull(par, y, sc, stored, model, floor, middle)
-        g = middle - pull
-        fx, fy = _model_map(par, y, sc, stored, model, cx, cy)
-        if norm2(fx - cx, fy - cy) <= tolerance:
-            return cx, cy, True
-        low, high, g_low, g_high, side = narrowed(g > 0.0, middle, g, low, high, g_low, g_high,
-                                                  side)  # fmt: skip
-    return px, py, False
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _slip_pull(par, y, sc, stored, model, floor, beta):
-    """(beta(s), cx, cy): :func:`unit_slip`'s pull at the centre c :func:`_pulled_twisting_centre`
-    gives for ``beta``, and c."""
-    ax, ay, px, py, wx, wy, lever = model
-    cx, cy = _pulled_twisting_centre(par, y, sc, stored, model, beta)
-    rot, omega = sc[SC_ROT], y[12]
-    bx, by = wx - omega * (cy - py), wy + omega * (cx - px)
-    s0 = rot[0, 0] * bx + rot[0, 1] * by
-    s1 = rot[1, 0] * bx + rot[1, 1] * by
-    s2 = omega * effective_twist_radius(par, FACE, 0, cx, cy)
-    along = s0 * stored[D_SLIP] + s1 * stored[D_SLIP + 1] + s2 * stored[D_SLIP + 2]
-    size = math.sqrt(s0 * s0 + s1 * s1 + s2 * s2)
-    return abs(along) - along + max(floor - size, 0.0), cx, cy
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _model_map(par, y, sc, stored, model, cx, cy):
-    """F(c) = a + mu h u(c) [m] (body frame) of :func:`_predicted_centre`'s model.
-
-    ``model``: :func:`face_model`'s a (x, y), p (x, y), the slip velocity
-    w(p) (body x, y) [m/s] and mu h [m]. u(c) by :func:`unit_slip` on the slip velocity at c
-    and its twist ``omega_z rho(c)``, with the stored direction ``stored``;
-    ``sc[SC_SVEL]`` and ``sc[SC_DIR]`` are its work.
-    """
-    ax, ay, px, py, wx, wy, lever = model
-    rot, omega = sc[SC_ROT], y[12]
-    bx, by = wx - omega * (cy - py), wy + omega * (cx - px)
-    s, u = sc[SC_SVEL], sc[SC_DIR]
-    s[0] = rot[0, 0] * bx + rot[0, 1] * by
-    s[1] = rot[1, 0] * bx + rot[1, 1] * by
-    s[2] = omega * effective_twist_radius(par, FACE, 0, cx, cy)
-    unit_slip(s, 3, stored, u)
-    return ax + lever * (rot[0, 0] * u[0] + rot[1, 0] * u[1]), ay + lever * (
-        rot[0, 1] * u[0] + rot[1, 1] * u[1]
-    )
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _model_newton(par, y, sc, stored, model, cx, cy):
-    """c = F(c) of :func:`_model_map` by Newton's method from (cx, cy); (cx, cy, settled).
-
-    The Jacobian by forward differences (a step of 1e-7 of the half-width),
-    the step halved until the residual |F(c) - c| falls (Armijo), at most
-    ``MODEL_ITERATIONS`` steps; settled where the residual is below
-    ``CENTRE_TOLERANCE`` of the half-width.
-    """
-    tolerance = CENTRE_TOLERANCE * par[P_HALF_X]
-    h = 1e-7 * par[P_HALF_X]
-    fx, fy = _model_map(par, y, sc, stored, model, cx, cy)
-    rx, ry = fx - cx, fy - cy
-    for _ in range(MODEL_ITERATIONS):
-        size = norm2(rx, ry)
-        if size <= tolerance:
-            return cx, cy, True
-        fx, fy = _model_map(par, y, sc, stored, model, cx + h, cy)
-        j00, j10 = (fx - cx - h - rx) / h, (fy - cy - ry) / h
-        fx, fy = _model_map(par, y, sc, stored, model, cx, cy + h)
-        j01, j11 = (fx - cx - rx) / h, (fy - cy - h - ry) / h
-        determinant = j00 * j11 - j01 * j10
-        if determinant == 0.0:
-            return cx, cy, False
-        dx = (j01 * ry - j11 * rx) / determinant
-        dy = (j10 * rx - j00 * ry) / determinant
-        t = 1.0
-        while True:
-            nx, ny = cx + t * dx, cy + t * dy
-            fx, fy = _model_map(par, y, sc, stored, model, nx, ny)
-            qx, qy = fx - nx, fy - ny
-            if norm2(qx, qy) < (1.0 - 1e-4 * t) * size or t < 1e-6:
-                break
-            t *= 0.5
-        cx, cy, rx, ry = nx, ny, qx, qy
-    return cx, cy, norm2(rx, ry) <= tolerance
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -1512,28 +1353,10 @@ def slip_direction(y, n_tangent, data, tangent, svel, direction):
 @nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
 def unit_slip(svel, n_tangent, data, direction):
     """u from the slip velocity s (``svel``) and the stored r (``data[D_SLIP:]``): see
-    :func:`slip_direction`, with the floor ``max(SLIP_FLOOR, data[D_FLOOR])``. Returns False
-    where u depends on r."""
+    :func:`slip_direction` and ``slip_law.pulled_unit``, with the floor ``max(SLIP_FLOOR,
+    data[D_FLOOR])``. Returns False where u depends on r."""
     floor = max(SLIP_FLOOR, data[D_FLOOR])
-    size = 0.0
-    along = 0.0
-    for k in range(n_tangent):
-        size += svel[k] ** 2
-        along += svel[k] * data[D_SLIP + k]
-    size = math.sqrt(size)
-    if size > floor and along > 0.0:
-        for k in range(n_tangent):
-            direction[k] = svel[k] / size
-        return True
-    extra = abs(along) - along + max(floor - size, 0.0)
-    length = 0.0
-    for k in range(n_tangent):
-        direction[k] = svel[k] + extra * data[D_SLIP + k]
-        length += direction[k] ** 2
-    length = math.sqrt(length)
-    for k in range(n_tangent):
-        direction[k] = direction[k] / length if length > 0.0 else data[D_SLIP + k]
-    return False
+    return pulled_unit(svel, n_tangent, data, D_SLIP, floor, direction)
 
 
 @nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
