@@ -236,6 +236,8 @@ def run(
             "neither": int((~in_3d & ~worse & pair).sum()),
         }
     twist = rows["cask.max_twist"].to_numpy(float)
+    flight = rows["cask.flight"].to_numpy(bool)
+    overturned = rows["cask.overturned"].to_numpy(bool)
     # the pair against its components: RotD50 and the peak of the resultant |(x, y)|
     rotd50 = np.array([fs.intensity_measure(m, "pga-rotd50") for m in suite.motions])
     larger = np.array([max(m.peak_horizontal, m.peak_horizontal_y) for m in suite.motions])
@@ -278,10 +280,10 @@ def run(
         "three_d_peaks": {
             "twist_above_5deg": int((twist > math.radians(5.0)).sum()),
             "twist_above_90deg": int((twist > math.radians(90.0)).sum()),
-            "flight": int(rows["cask.flight"].to_numpy(bool).sum()),
-            "overturned_with_friction_below_tan_alpha": int(
-                (rows["cask.overturned"].to_numpy(bool) & ~lifting).sum()
-            ),
+            "flight": int(flight.sum()),
+            "flight_overturned": int((flight & overturned).sum()),
+            "flight_with_friction_below_tan_alpha": int((flight & ~lifting).sum()),
+            "overturned_with_friction_below_tan_alpha": int((overturned & ~lifting).sum()),
         },
         "runtime": {
             "workers": workers,

@@ -91,6 +91,10 @@ def test_the_doc_table_agrees_with_the_json():
     overturned = paired["overturn"]["both"] + paired["overturn"]["3-D only"]
     assert f"overturned in {overturned} of its 1,200 simulations" in text
     assert f"In {document['three_d_peaks']['twist_above_90deg']} of the 1,200" in text
+    peaks = document["three_d_peaks"]
+    assert f"free flight in {peaks['flight']} of 1,200" in text
+    assert f"{peaks['flight_overturned']} of the {peaks['flight']} overturned" in text
+    assert peaks["flight_with_friction_below_tan_alpha"] == 0  # "all with ... above R/h"
 
 
 @pytest.fixture(scope="module")

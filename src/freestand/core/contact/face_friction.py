@@ -34,7 +34,7 @@ from freestand.core.contact.regula_falsi import narrowed
 from freestand.core.contact.slip_law import pulled_unit, slip_pull
 from freestand.core.contact.vectors import norm2
 
-#: most trials of :func:`twisting_centre`'s root search (Anderson-Bjorck; some 6-12 are used)
+#: most trials of :func:`twisting_centre`'s root search (Anderson-Bjorck; some 10-15 are used)
 CENTRE_TRIALS = 80
 #: most Newton steps of :func:`model_newton` (each three evaluations of the model, no solve)
 MODEL_ITERATIONS = 30
