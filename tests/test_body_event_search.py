@@ -22,7 +22,8 @@ from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box
 from freestand.core.contact import body_kernel as bk
-from freestand.core.dynamics import body_engine as engine
+from freestand.core.dynamics import body_events as events
+from freestand.core.dynamics import body_step as step
 from freestand.core.dynamics.body_history import SupportMotion3, initial_state, simulate_body
 from freestand.core.model import Friction
 
@@ -54,7 +55,7 @@ def test_the_interpolant_is_exact_for_a_cubic_and_meets_the_ends(coefficients, h
         return ydot
 
     out = np.zeros(bk.STATE_SIZE)
-    engine._hermite_state(h, s * h, state(0.0), rate(0.0), state(h), rate(h), out)
+    events._hermite_state(h, s * h, state(0.0), rate(0.0), state(h), rate(h), out)
     # tolerance: round-off of the cubic's terms
     np.testing.assert_allclose(out, state(s * h), rtol=1e-12, atol=1e-12)
 
@@ -79,29 +80,29 @@ def test_a_free_fall_s_landing_is_found_on_the_interpolant(tilt, speed, fraction
     data = np.zeros(bk.DATA_SIZE)
     sc = bk.new_scratch()
     ref = np.zeros(5)
-    values = np.zeros(engine.MAX_EVENT_FUNCTIONS)
-    kinds = np.zeros(engine.MAX_EVENT_FUNCTIONS, dtype=np.int64)
+    values = np.zeros(step.MAX_EVENT_FUNCTIONS)
+    kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
     k = np.zeros((5, bk.STATE_SIZE))
     # the landing: 1 mm = speed t + g t^2 / 2
     landing = (-speed + math.sqrt(speed**2 + 2.0 * G * 1e-3)) / G
     h = landing / fraction  # the step ends at or past the landing
-    count = engine.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
+    count = step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
     start = values[:count].copy()
     bk.state_rate(y, sc[bk.SC_ACC], k[0])
     end = np.zeros(bk.STATE_SIZE)
-    engine._rk4(par, record, 1.0, 0.0, h, y, mode, data, sc, k, end)
-    engine.event_functions(par, record, 1.0, h, end, mode, data, sc, ref, values, kinds)
+    step._rk4(par, record, 1.0, 0.0, h, y, mode, data, sc, k, end)
+    step.event_functions(par, record, 1.0, h, end, mode, data, sc, ref, values, kinds)
     bk.state_rate(end, sc[bk.SC_ACC], k[1])
     target = int(np.argmin(values[:count]))  # a lowest corner
-    assert kinds[target] == engine.FN_GAP
+    assert kinds[target] == step.FN_GAP
     trial = np.zeros(bk.STATE_SIZE)
-    crossing, fall = engine.interpolated_crossing(
+    crossing, fall = events.interpolated_crossing(
         par, record, 1.0, 0.0, h, y, end, mode, data, sc, k, ref, values, kinds,
-        -engine.GAP_SLACK, target, start[target] + engine.GAP_SLACK,
-        values[target] + engine.GAP_SLACK, trial,
+        -events.GAP_SLACK, target, start[target] + events.GAP_SLACK,
+        values[target] + events.GAP_SLACK, trial,
     )  # fmt: skip
     # tolerance: the search's bracket (1e-10 s) and the slack of the gap's level (1e-12 m)
-    assert abs(crossing - landing) <= engine.INTERPOLANT_TIME + 1e-12 / (speed + G * landing)
+    assert abs(crossing - landing) <= events.INTERPOLANT_TIME + 1e-12 / (speed + G * landing)
     # its rate of fall: the corner's speed at the landing; the secant of the last two trials
     # (within 2e-4 here, on a search's last steps), which a seed needs to 1e-2 or so
     assert fall == pytest.approx(speed + G * landing, rel=1e-3)
@@ -111,17 +112,17 @@ def test_a_seed_lies_just_past_the_newton_estimate_or_is_refused():
     # the function falls at 2 per second; at 1.0 it is 0.002 above its level: the crossing at
     # 1.001, tried 0.45 EVENT_TIME past it (from the last trial's side; to round-off)
     nan = math.nan
-    x = engine._seeded_trial(1.0, 0.002, nan, 0.0, 2.0, 0.0, 2.0)
-    assert x == pytest.approx(1.001 + engine.SEED_OFFSET * engine.EVENT_TIME, abs=1e-15)
+    x = events._seeded_trial(1.0, 0.002, nan, 0.0, 2.0, 0.0, 2.0)
+    assert x == pytest.approx(1.001 + events.SEED_OFFSET * events.EVENT_TIME, abs=1e-15)
     # from the other side (the function below its level: fired), before the crossing
-    x = engine._seeded_trial(1.002, -0.002, nan, 0.0, 2.0, 0.0, 2.0)
-    assert x == pytest.approx(1.001 - engine.SEED_OFFSET * engine.EVENT_TIME, abs=1e-15)
+    x = events._seeded_trial(1.002, -0.002, nan, 0.0, 2.0, 0.0, 2.0)
+    assert x == pytest.approx(1.001 - events.SEED_OFFSET * events.EVENT_TIME, abs=1e-15)
     # the secant of the last two trials replaces the interpolant's rate: 4 per second here
-    x = engine._seeded_trial(1.0, 0.004, 0.999, 0.008, 2.0, 0.0, 2.0)
-    assert x == pytest.approx(1.001 + engine.SEED_OFFSET * engine.EVENT_TIME, abs=1e-15)
+    x = events._seeded_trial(1.0, 0.004, 0.999, 0.008, 2.0, 0.0, 2.0)
+    assert x == pytest.approx(1.001 + events.SEED_OFFSET * events.EVENT_TIME, abs=1e-15)
     # no rate, or a trial outside the bracket: no seed
-    assert math.isnan(engine._seeded_trial(1.0, 0.002, nan, 0.0, nan, 0.0, 2.0))
-    assert math.isnan(engine._seeded_trial(1.0, 0.002, nan, 0.0, 2.0, 0.0, 1.0005))
+    assert math.isnan(events._seeded_trial(1.0, 0.002, nan, 0.0, nan, 0.0, 2.0))
+    assert math.isnan(events._seeded_trial(1.0, 0.002, nan, 0.0, 2.0, 0.0, 1.0005))
 
 
 def test_a_rocking_box_s_impacts_take_about_three_rk4_trials_each():
@@ -172,12 +173,12 @@ def test_a_spinning_fall_s_landing_is_the_crossing_on_rk4_states(
     state = np.zeros(bk.STATE_SIZE)
 
     def gap(tau):  # the lowest corner's gap on the RK4 state at tau (k[0]: the start's rate)
-        engine._rk4(par, record, 1.0, 0.0, tau, y, mode, data, sc, k, state)
-        return _lowest_gap(par, state) + engine.GAP_SLACK
+        step._rk4(par, record, 1.0, 0.0, tau, y, mode, data, sc, k, state)
+        return _lowest_gap(par, state) + events.GAP_SLACK
 
-    ref, values = np.zeros(5), np.zeros(engine.MAX_EVENT_FUNCTIONS)
-    kinds = np.zeros(engine.MAX_EVENT_FUNCTIONS, dtype=np.int64)
-    count = engine.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
+    ref, values = np.zeros(5), np.zeros(step.MAX_EVENT_FUNCTIONS)
+    kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
+    count = step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
     start = values.copy()
     bk.state_rate(y, sc[bk.SC_ACC], k[0])
     # the first crossing: scanned, then bisected on RK4 states
@@ -190,15 +191,15 @@ def test_a_spinning_fall_s_landing_is_the_crossing_on_rk4_states(
     h = min(overshoot * high, taus[first])  # the step ends past the landing, before another
     assume(gap(h) < 0.0)
     out = np.zeros(bk.STATE_SIZE)
-    engine._rk4(par, record, 1.0, 0.0, h, y, mode, data, sc, k, out)
-    located, kind, trials = engine.locate(
+    step._rk4(par, record, 1.0, 0.0, h, y, mode, data, sc, k, out)
+    located, kind, trials = events.locate(
         par, record, 1.0, 0.0, h, y, mode, data, sc, k, ref, start, count,
-        np.zeros(bk.STATE_SIZE), np.zeros(engine.MAX_EVENT_FUNCTIONS), kinds,
-        np.zeros((3, engine.MAX_EVENT_FUNCTIONS)), out,
+        np.zeros(bk.STATE_SIZE), np.zeros(step.MAX_EVENT_FUNCTIONS), kinds,
+        np.zeros((3, step.MAX_EVENT_FUNCTIONS)), out,
     )  # fmt: skip
-    assert kind == engine.FN_GAP
+    assert kind == step.FN_GAP
     # a crossing on RK4 states to the event's tolerance: fired at it, not a tolerance before,
     # and within a tolerance after the first crossing the scan found (bisected to 1e-15 s)
-    assert gap(located) < 0.0 <= gap(located - engine.EVENT_TIME)
-    assert located <= high + engine.EVENT_TIME
+    assert gap(located) < 0.0 <= gap(located - events.EVENT_TIME)
+    assert located <= high + events.EVENT_TIME
     assert 1 <= trials <= 12  # the seeds close most in 3; the regula falsi needs about 8

@@ -2,11 +2,11 @@
 
 A sliding flat base's friction follows its slip's direction, which turns
 quickly as a slip slows down under two horizontal components. Steps of the
-record's 5 ms missed those turns (``body_engine._slip_turn_time``): a squat
+record's 5 ms missed those turns (``body_step._slip_turn_time``): a squat
 cylinder's path strayed from a 0.1 ms run by 3.2 mm over 10 s of this
 two-component noise (a 0.32 m slide); with the turn bounded by
 ``FACE_TURN`` per step and a slow slip's steps by RK4's stability on its
-turn rate (``body_engine._slip_turn_time``), 0.14 mm.
+turn rate (``body_step._slip_turn_time``), 0.14 mm.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from freestand.core.body import Body, Cylinder
-from freestand.core.dynamics import body_engine
+from freestand.core.dynamics import body_step
 from freestand.core.dynamics.body_history import SupportMotion3, simulate_body
 from freestand.core.model import Friction
 
@@ -36,7 +36,7 @@ def motion() -> SupportMotion3:
 
 
 def test_the_turn_bound_is_a_fraction_of_a_radian():
-    assert 0.0 < body_engine.FACE_TURN <= 0.5
+    assert 0.0 < body_step.FACE_TURN <= 0.5
 
 
 def test_a_slow_two_dimensional_slide_follows_a_fine_step(motion):

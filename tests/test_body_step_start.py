@@ -22,6 +22,7 @@ from hypothesis import strategies as st
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact import body_kernel as bk
 from freestand.core.dynamics import body_engine as engine
+from freestand.core.dynamics import body_step as step
 from freestand.core.dynamics.body_history import initial_state
 from freestand.core.model import Friction
 
@@ -50,16 +51,16 @@ def _functions(body, y, record, start, solved=False):
     data[bk.D_SLIP] = 1.0  # a stored direction the slip's own one replaces
     sc = bk.new_scratch()
     ref = np.zeros(5)
-    values = np.zeros(engine.MAX_EVENT_FUNCTIONS)
-    kinds = np.zeros(engine.MAX_EVENT_FUNCTIONS, dtype=np.int64)
+    values = np.zeros(step.MAX_EVENT_FUNCTIONS)
+    kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
     if solved:  # the step's end: the event functions with the step's stored direction
-        engine.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
+        step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
     if start:
-        count = engine.start_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values,
+        count = step.start_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values,
                                        kinds, solved)  # fmt: skip
     else:  # the two solves the step's start made before
-        engine.references(par, record, 1.0, 0.0, y, mode, data, sc, ref)
-        count = engine.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values,
+        step.references(par, record, 1.0, 0.0, y, mode, data, sc, ref)
+        count = step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values,
                                        kinds)  # fmt: skip
     return values[:count].copy(), sc[bk.SC_ACC].copy(), data[bk.D_SLIP : bk.D_SLIP + 3].copy()
 

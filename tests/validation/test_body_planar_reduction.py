@@ -139,7 +139,7 @@ def test_a_slip_from_rest_slides_as_newmarks_block_in_every_direction(angle):
     # 9 m/s^2 at 1 Hz slides as the rigid block, whatever the motion's direction. Slow, a
     # slip turns at mu g / |s|: RK4's 5 ms steps were unstable on that rate, a sideways
     # slip grew from round-off to 4 mm/s at 1 rad, and the cylinder slid 1.8 % too far
-    # (body_engine.slip_stiffness). Tolerance 1e-6, as the cylinder's slide above.
+    # (body_step.slip_stiffness). Tolerance 1e-6, as the cylinder's slide above.
     dt = 0.005
     time = np.arange(0.0, 2.0, dt)
     pulse = np.where(time <= 1.0, 9.0 * np.sin(2.0 * np.pi * time), 0.0)

@@ -1,18 +1,20 @@
 """The compiled event-driven time history of one rigid body on the support (3-D).
 
 The loop has the shape of the planar engine (:mod:`freestand.core.dynamics.engine`):
-``run`` repeats four named phases until the end time:
+:func:`run` repeats four named phases until the end time, each in a module
+of its own where it is more than a few lines:
 
-- :func:`advance`: one RK4 step of the held contact mode (the contact forces
-  solved at every stage by :func:`freestand.core.contact.body_kernel.rate`),
-  or nothing while the body rests flat and sticks (its contact multipliers
-  are then affine in the support's accelerations, and a step is decided by
-  its ends: :func:`rest_step`);
-- :func:`locate`: the event functions at the step's end against its start;
-  when one changed sign, the earliest crossing by Anderson and Bjorck's
-  variant of regula falsi on RK4 states from the step's start, to
-  ``EVENT_TIME`` [s], its first trials seeded by the crossing on the step's
-  cubic interpolant (:func:`interpolated_crossing`);
+- ``advance`` (:mod:`freestand.core.dynamics.body_step`): one RK4 step of
+  the held contact mode (the contact forces solved at every stage by
+  :func:`freestand.core.contact.body_kernel.rate`), its references and
+  event functions, or nothing while the body rests flat and sticks (its
+  contact multipliers are then affine in the support's accelerations, and a
+  step is decided by its ends: :func:`rest_step`);
+- ``locate`` (:mod:`freestand.core.dynamics.body_events`): the event
+  functions at the step's end against its start; when one changed sign, the
+  earliest crossing by Anderson and Bjorck's variant of regula falsi on RK4
+  states from the step's start, to ``EVENT_TIME`` [s], its first trials
+  seeded by the crossing on the step's cubic interpolant;
 - :func:`resolve`: at an event, the impact law where a gap closed, then the
   contact mode of the new state (:func:`freestand.core.contact.body_modes.select_mode`),
   and the drift of the held rows projected out; where no mode exists, or an
@@ -46,7 +48,6 @@ from freestand.core.contact.body_kernel import (
     D_FLOOR,
     D_ONSET,
     D_PSI,
-    D_SLIP,
     EDGE,
     FACE,
     FREE,
@@ -63,7 +64,6 @@ from freestand.core.contact.body_kernel import (
     P_SHAPE,
     PIVOT_LEAN,
     POINT,
-    SC_ACC,
     SC_BASE,
     SC_CENTRE,
     SC_DIR,
@@ -73,9 +73,7 @@ from freestand.core.contact.body_kernel import (
     SC_ROT,
     SC_SVEL,
     SC_TANGENT,
-    SC_TBIAS,
     SHAPE_BOX,
-    SLIP_FLOOR,
     STATE_SIZE,
     arm,
     centre_stick_friction,
@@ -90,16 +88,11 @@ from freestand.core.contact.body_kernel import (
     point_velocity,
     prepare,
     prepare_held,
-    rate,
     reset_friction_centre,
     rotation_matrix,
-    row_acceleration,
-    row_counts,
-    sin_tilt,
     solve_at,
     solve_at_centre,
     solve_mode,
-    state_rate,
     support_acceleration,
     tangential_velocity,
 )
@@ -112,35 +105,31 @@ from freestand.core.contact.body_modes import (
     select_mode,
     touching_points,
 )
-from freestand.core.contact.regula_falsi import narrowed
+from freestand.core.dynamics.body_events import EVENT_TIME, locate
+from freestand.core.dynamics.body_step import (
+    FN_FRICTION,
+    FN_GAP,
+    FN_LANDING,
+    FN_NORMAL,
+    FN_SLIP_STOP,
+    FN_TILT,
+    MAX_EVENT_FUNCTIONS,
+    PLANAR_PASS,
+    _normalise,
+    advance,
+    closing_step,
+    resting,
+    slip_floor,
+    slip_velocity,
+    start_functions,
+)
 
-EVENT_TIME = 1e-11  # [s] width of the bracket of a located event
-GAP_SLACK = 1e-12  # [m] a released point may sit this far below the support
-LANDING_SLACK = 1e-12  # [-] a landed cylinder's lean may sit this far past its pivot's side
-MAX_EVENT_FUNCTIONS = 8
-INTERPOLANT_TRIALS = 40  # most trials of an event's search on the step's cubic interpolant
-INTERPOLANT_TIME = 1e-10  # [s] width of its bracket that ends that search
-SEED_TRIALS = 4  # most seeded trials of an event's search on RK4 states (locate)
-SEED_OFFSET = 0.45  # a seeded trial lies this part of EVENT_TIME beyond its estimated crossing
-CLOSING_OVERSHOOT = 1.25  # a step ends this far past a gap's predicted closing [-]
-WHIRL_ANGLE = 0.1  # [rad] largest turn of a rolling cylinder's lean in one step
-TILT_FRACTION = 0.5  # a whirling lean covers at most this part of its way to the vertical in a step
-RISE_LEAN = 2.0 * PIVOT_LEAN  # sin(tilt) a step from below PIVOT_LEAN rises to at most
-PLANAR_PASS = 0.1  # a lean predicted to pass within this part of PIVOT_LEAN lands as in a plane [-]
-LEAN_TRUST = 1e-4  # sin(tilt) below which the lean's predicted passing distance is trusted [-]
-ROUND_OFF_PASS = 1e-12  # a passing distance below this is a planar motion's round-off [-]
-SLIP_FRACTION = 0.5  # a step lasts at most this part of a slip's time scale |s| / |s'|
-FACE_TURN = 0.3  # [rad] a flat base's slip turns by about this much at most in a step
-SLIP_MIN_STEP = 1e-4  # [s] the slip's time scale bounds no step below this
-FACE_MIN_STEP = 3e-4  # [s] a flat base's turn bounds no step below this
-FLOOR_STABILITY = 2.0  # h lambda of a flat base's slip turning at its floor (RK4: stable to 2.78)
 STRETCH_STEP = 1e-4  # [s] step of the velocity-level time stepping (the remedy)
 STRETCH_CHECK = 16  # a stretch looks for a consistent mode at its steps 1, 2, 4, 8, 16, 32, 48, ...
 STRETCH_IMPACT = 10.0  # a stretch's point approaching faster than this times g h lands [-]
 CHATTER_WINDOW = 1e-3  # [s] slip restarts or remedies closer than this in time are a chatter
 CHATTER_COUNT = 3  # this many in a row start a chatter stretch of the remedy
 FACE_CHATTER_WINDOW = 1e-6  # [s] a FACE's slip restarts closer than this in time are a chatter
-MIN_STEP = 1e-9  # [s] the smallest step the closing prediction may ask for
 FLAT_ROUND_OFF = 1e-13  # [m, m/s, rad/s, -] a sliding flat base's drift left to round-off
 
 # event kinds
@@ -153,14 +142,6 @@ EV_OVERTURN = 5
 EV_REMEDY = 6
 EV_LANDING_MISS = 7
 EVENT_KINDS = ("start", "impact", "lift-off", "slip", "stick", "overturn", "remedy", "pass-over")
-
-# function kinds (what a crossing means)
-FN_NORMAL = 0
-FN_FRICTION = 1
-FN_SLIP_STOP = 2
-FN_GAP = 3
-FN_LANDING = 4
-FN_TILT = 5
 
 # istate
 I_RECORDS = 0
@@ -179,675 +160,6 @@ STATUS_RUNNING = 0
 STATUS_COMPLETED = 1
 STATUS_OVERTURNED = 2
 STATUS_BUFFER_FULL = 3
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _normalise(y):
-    size = math.sqrt(y[3] ** 2 + y[4] ** 2 + y[5] ** 2 + y[6] ** 2)
-    for i in range(3, 7):
-        y[i] /= size
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _rk4(par, record, dt, t, h, y, mode, data, sc, k, out):
-    """One RK4 step of the held mode over h from (t, y) into ``out``; False if singular.
-
-    ``k[0]`` holds y' at (t, y) already: the first stage does not depend on
-    h, and the step and the trials of :func:`locate` share it.
-    """
-    stage = k[4]
-    ok = True
-    for i in range(STATE_SIZE):
-        stage[i] = y[i] + 0.5 * h * k[0, i]
-    ok &= rate(par, record, dt, t + 0.5 * h, stage, mode, data, sc, k[1])
-    for i in range(STATE_SIZE):
-        stage[i] = y[i] + 0.5 * h * k[1, i]
-    ok &= rate(par, record, dt, t + 0.5 * h, stage, mode, data, sc, k[2])
-    for i in range(STATE_SIZE):
-        stage[i] = y[i] + h * k[2, i]
-    ok &= rate(par, record, dt, t + h, stage, mode, data, sc, k[3])
-    for i in range(STATE_SIZE):
-        out[i] = y[i] + h / 6.0 * (k[0, i] + 2.0 * k[1, i] + 2.0 * k[2, i] + k[3, i])
-    _normalise(out)
-    return ok
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def resting(mode, y, velocity_tol):
-    """True while the body sits flat, sticks and does not move (not integrated)."""
-    if mode[M_KIND] != FACE or mode[M_SLIP] != 0:
-        return False
-    for i in range(7, 13):
-        if abs(y[i]) > 1e-14:
-            return False
-    return True
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
-    """Phase 1: the state at t + h in ``out`` (RK4, or unchanged at rest); False if singular.
-
-    The scratch holds the held mode solved at (t, y) (:func:`start_functions`
-    at the step's start): the first stage is read from it.
-    """
-    if resting(mode, y, velocity_tol):
-        for i in range(STATE_SIZE):
-            out[i] = y[i]
-        return True
-    state_rate(y, sc[SC_ACC], k[0])
-    return _rk4(par, record, dt, t, h, y, mode, data, sc, k, out)
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def references(par, record, dt, t, y, mode, data, sc, ref, solved=False):
-    """The step's references: the slip direction (3) and the pivot's horizontal direction (2).
-
-    The slip direction is the slip velocity's at the held patch's centre of
-    pressure at (t, y), or the stored one while the slip is slower than
-    ``SLIP_FLOOR`` or the last step's floor (:func:`slip_floor`). Returns the
-    normal and tangential rows of the slip's solve where the scratch holds
-    the held mode solved at (t, y) as with the references stored: its solve
-    read no stored direction (:func:`slip_direction`), or the stored one is
-    kept; else (0, -1).
-    ``solved``: the scratch holds the held mode solved at (t, y) already (a
-    step's end left unprojected, :func:`drifted`, whose event functions left
-    the slip velocity in the scratch), and it is not solved again.
-    """
-    rot = sc[SC_ROT]
-    rotation_matrix(y, rot)
-    for i in range(5):
-        ref[i] = 0.0
-    if mode[M_KIND] == POINT and par[P_SHAPE] != SHAPE_BOX:
-        # the step's pivot: the lowest rim point (kept on its side within the step)
-        psi = lowest_rim_angle(rot, data[D_PSI])
-        data[D_PSI] = psi
-        probe = sc[SC_PROBE]
-        d, c = probe[0], probe[1]
-        radius = par[P_HALF_X]
-        # horizontal direction of the pivot from the base centre
-        arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
-        arm(par, rot, 0.0, 0.0, 0.0, c)
-        px = d[0] - c[0]
-        py = d[1] - c[1]
-        size = math.hypot(px, py)
-        ref[3] = px / size
-        ref[4] = py / size
-    if mode[M_SLIP] == 0:
-        return 0, -1
-    if solved:
-        n_normal, n_tangent = row_counts(mode[M_KIND])
-        size = _size(sc[SC_SVEL], n_tangent)
-    else:
-        size, n_normal, n_tangent = slip_velocity(par, record, dt, t, y, mode, data, sc)
-    svel = sc[SC_SVEL]
-    floor = max(SLIP_FLOOR, data[D_FLOOR])  # the last step's (slip_floor)
-    for i in range(n_tangent):
-        ref[i] = svel[i] / size if size > floor else data[D_SLIP + i]
-        data[D_SLIP + i] = ref[i]
-    return n_normal, n_tangent if size <= floor or sc[SC_CENTRE][5] == 0.0 else -1
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
-    """The event functions at (t, y) in the held mode (>= 0 while it holds); their count."""
-    ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
-    return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def start_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds, solved=False):
-    """A step's references (:func:`references`) and event functions at its start (t, y).
-
-    One solve where the slip's references made it (none where the scratch
-    holds it, ``solved``); returns the functions' count.
-    """
-    n_normal, n_tangent = references(par, record, dt, t, y, mode, data, sc, ref, solved)
-    if n_tangent < 0:
-        return event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds)
-    return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds):
-    """The event functions of the held mode solved in the scratch at (t, y); their count."""
-    rot = sc[SC_ROT]
-    lam = sc[SC_LAM]
-    kind = mode[M_KIND]
-    count = 0
-    if kind != FREE:
-        values[count] = normal_margin(par, rot, kind, lam)
-        kinds[count] = FN_NORMAL
-        count += 1
-        if mode[M_SLIP] == 0:
-            values[count] = friction_margin(par, n_normal, n_tangent, lam)
-            kinds[count] = FN_FRICTION
-            count += 1
-        else:
-            svel = sc[SC_SVEL]
-            tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
-            along = 0.0
-            for i in range(n_tangent):
-                along += svel[i] * ref[i]
-            values[count] = along
-            kinds[count] = FN_SLIP_STOP
-            count += 1
-    d = sc[SC_PROBE][0]
-    if par[P_SHAPE] == SHAPE_BOX:
-        for c in range(4):
-            if kind == FACE or (kind == POINT and mode[M_INDEX] == c):
-                continue
-            if kind == EDGE and (mode[M_INDEX] == c or (mode[M_INDEX] + 1) % 4 == c):
-                continue
-            g, _ = corner_gap(par, y, rot, c, d)
-            values[count] = g
-            kinds[count] = FN_GAP
-            count += 1
-    elif kind == POINT:
-        values[count] = rot[0, 2] * ref[3] + rot[1, 2] * ref[4]
-        kinds[count] = FN_LANDING
-        count += 1
-    elif kind == FREE:
-        radius = par[P_HALF_X]
-        s = sin_tilt(rot)
-        c0 = sc[SC_PROBE][1]
-        arm(par, rot, 0.0, 0.0, 0.0, c0)
-        values[count] = y[2] + c0[2] - radius * s
-        kinds[count] = FN_GAP
-        count += 1
-    values[count] = rot[2, 2]  # cos(tilt): overturned at pi/2
-    kinds[count] = FN_TILT
-    count += 1
-    return count
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _closing_time(value, rate_, acceleration):
-    """Earliest t > 0 with value + rate t + acceleration t^2 / 2 = 0 [s]; inf if none."""
-    if acceleration == 0.0:
-        return -value / rate_ if rate_ < 0.0 else math.inf
-    discriminant = rate_ * rate_ - 2.0 * acceleration * value
-    if discriminant < 0.0:
-        return math.inf
-    root = math.sqrt(discriminant)
-    best = math.inf
-    for t in ((-rate_ - root) / acceleration, (-rate_ + root) / acceleration):
-        if 0.0 < t < best:
-            best = t
-    return best
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def closing_step(par, y, mode, sc, ref):
-    """Largest step [s] that cannot step over the closing of a gap and its reopening.
-
-    A point that lifts by a little flies for a short time (a cylinder rocking
-    by 1e-4 rad lands again within some 10 ms): a step longer than the flight
-    would see the gap open at both its ends and miss the impact. Each gap (a
-    box corner not held) and a rolling cylinder's landing function f is
-    predicted by its Taylor polynomial f + f' t + f'' t^2 / 2 (f'' from the
-    held mode's accelerations in ``sc``, which :func:`start_functions` just
-    solved); the step ends ``CLOSING_OVERSHOOT`` past its earliest zero, so
-    that :func:`locate` brackets the crossing. A rolling cylinder's lean (the
-    horizontal projection of its axis) turns at ``|e_h x e_h'| / |e_h|^2``,
-    which grows as 1/tilt near flat: :func:`_whirl_step` bounds the step there.
-    Below ``PIVOT_LEAN`` the cylinder turns about its stored rim point, above
-    it about the lowest one
-    (:func:`~freestand.core.contact.body_kernel.pivot_direction`): a step
-    from below ends about where an upper bound of the lean,
-    ``|e_h| + |e_h'| t + |e_h''| t^2 / 2``,
-    reaches ``RISE_LEAN``, so that the rim point's change falls between steps,
-    not inside RK4's stages (a 5 ms step from 3e-7 to 2.7e-6 once set a
-    slender cylinder rolling that lands at fine steps).
-    """
-    rot = sc[SC_ROT]
-    x = sc[SC_ACC]
-    kind = mode[M_KIND]
-    wx, wy, wz = y[10], y[11], y[12]
-    earliest = math.inf
-    if mode[M_SLIP] == 1:
-        earliest = _slip_turn_time(par, mode, sc)
-    d = sc[SC_PROBE][0]
-    if par[P_SHAPE] == SHAPE_BOX:
-        if kind == FACE:
-            return max(earliest, MIN_STEP)
-        for c in range(4):
-            if kind == POINT and mode[M_INDEX] == c:
-                continue
-            if kind == EDGE and (mode[M_INDEX] == c or (mode[M_INDEX] + 1) % 4 == c):
-                continue
-            g, gv = corner_gap(par, y, rot, c, d)
-            ux, uy, uz = cross(wx, wy, wz, d[0], d[1], d[2])
-            _, _, cz = cross(wx, wy, wz, ux, uy, uz)
-            _, _, az = cross(x[3], x[4], x[5], d[0], d[1], d[2])
-            earliest = min(earliest, _closing_time(max(g, 0.0), gv, x[2] + az + cz))
-    elif kind == POINT:
-        ex, ey, ez = rot[0, 2], rot[1, 2], rot[2, 2]
-        ux, uy, uz = cross(wx, wy, wz, ex, ey, ez)
-        cx, cy, _ = cross(wx, wy, wz, ux, uy, uz)
-        ax, ay, _ = cross(x[3], x[4], x[5], ex, ey, ez)
-        value = ex * ref[3] + ey * ref[4]
-        slope = ux * ref[3] + uy * ref[4]
-        curvature = (ax + cx) * ref[3] + (ay + cy) * ref[4]
-        landing = _closing_time(max(value, 0.0), slope, curvature)
-        lean = math.sqrt(ex * ex + ey * ey)
-        areal = abs(ex * uy - ey * ux)
-        if lean <= PIVOT_LEAN:
-            # the rim point is the stored one up to PIVOT_LEAN, the lowest one above it: a
-            # step ends about where the lean rises past RISE_LEAN (an upper bound of |e_h|)
-            rise = _closing_time(lean - RISE_LEAN, math.hypot(ux, uy),
-                                 math.hypot(ax + cx, ay + cy))  # fmt: skip
-            earliest = min(earliest, rise)
-        if lean > PIVOT_LEAN and landing < math.inf:
-            landing_speed = abs(slope + curvature * landing)
-            # the lean's side component where it meets the vertical plane of the pivot
-            side = (-ex * ref[4] + ey * ref[3]) + (-ux * ref[4] + uy * ref[3]) * landing + 0.5 * (
-                -(ax + cx) * ref[4] + (ay + cy) * ref[3]) * landing * landing  # fmt: skip
-            limit = _whirl_step(lean, areal, landing, landing_speed, abs(side))
-            if limit < math.inf:
-                return max(min(limit, CLOSING_OVERSHOOT * earliest), MIN_STEP)
-        earliest = min(earliest, landing)
-        if lean > PIVOT_LEAN and areal > 0.0:
-            # a wobbling cylinder: its rim point swings by at most WHIRL_ANGLE in a step
-            return max(min(CLOSING_OVERSHOOT * earliest, WHIRL_ANGLE * lean * lean / areal),
-                       MIN_STEP)  # fmt: skip
-    return max(CLOSING_OVERSHOOT * earliest, MIN_STEP)
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _slip_turn_time(par, mode, sc):
-    """Time [s] in which a slip's velocity could stop or turn: |s| / |s'| times SLIP_FRACTION.
-
-    The kinetic friction follows the slip's direction, which turns quickly as
-    the slip slows down (with an edge's twist as one of its components): on a
-    rocking edge or point a step longer than the slip's own time scale makes
-    RK4 oscillate from step to step and gain energy. A flat base's direction
-    is not coupled to a rotation: its steps are bounded by the turn alone,
-    ``FACE_TURN |s| / |s'_perp|`` (s' across s; a slip slowing along its own
-    direction stops at the located slip-stop event; a slip from rest, slower
-    than ``SLIP_FLOOR``, grows along its onset's direction). Unbounded, a sliding
-    cask's 5 ms steps missed the quick turns of its slow slips: its path
-    strayed 2.5 mm from a 0.1 ms run over 20 s (a 65 mm slide); bounded, 0.5
-    mm, at 27 % more steps. ``sc`` holds the rows and accelerations that
-    :func:`start_functions` just solved. A flat base's step is also bounded
-    by RK4's stability on the rate at which friction turns a slow slip,
-    ``FLOOR_STABILITY |s| / slip_stiffness`` (:func:`slip_floor`): unbounded,
-    a slip across the force grew from round-off (a squat cylinder pushed at 1
-    rad from its axes slid 1.8 % too far); bounded, the cask's path stays
-    0.05 mm from a 0.1 ms run's, where the turn bound alone left 0.47 mm.
-    Not below ``SLIP_MIN_STEP``: a slip
-    that dies away without reversing would otherwise take ever shorter steps
-    (its energy is then negligible); a flat base's not below ``FACE_MIN_STEP``,
-    whose slow creeps (0.1 mm/s for 10 ms, the support driving across them)
-    took a quarter of the cask's steps at 0.1 ms; at that floor a slower slip
-    keeps its step's starting direction (:func:`slip_floor`).
-    """
-    kind = mode[M_KIND]
-    n_tangent = 2 if kind == POINT else 3
-    svel = sc[SC_SVEL]
-    speed = 0.0
-    change = 0.0
-    along = 0.0
-    for k in range(n_tangent):
-        rate_ = row_acceleration(sc[SC_TANGENT], sc[SC_TBIAS], k, sc[SC_ACC])
-        speed += svel[k] ** 2
-        change += rate_**2
-        along += rate_ * svel[k]
-    if kind == FACE:
-        # the turn only: s' across s; a slip from rest grows along its onset's direction
-        if speed <= SLIP_FLOOR * SLIP_FLOOR:
-            return math.inf
-        change = max(change - along * along / speed, 0.0)
-        limit = FLOOR_STABILITY * math.sqrt(speed) / slip_stiffness(par, sc)
-        if change > 0.0:
-            limit = min(limit, FACE_TURN * math.sqrt(speed / change))
-        return max(limit, FACE_MIN_STEP) / CLOSING_OVERSHOOT
-    if change == 0.0:
-        return math.inf
-    limit = SLIP_FRACTION * math.sqrt(speed / change)
-    return max(limit, SLIP_MIN_STEP) / CLOSING_OVERSHOOT
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def slip_floor(par, mode, sc, h):
-    """The speed [m/s] below which a flat base's slip keeps its step's starting direction.
-
-    A slip's direction u = s/|s| turns at ``slip_stiffness / |s|`` (the
-    kinetic friction pushes a slip's component across u back at that rate):
-    a stiff rate where the slip is slow, on which RK4's explicit stages are
-    unstable beyond ``h lambda = 2.78``. A slip across the force then grows
-    from round-off instead of dying out, step by step: a squat cylinder
-    pushed by one sine cycle at 1 rad from its axes slid 1.8 % further than
-    along them, with a sideways speed of 4 mm/s (0 along them, by symmetry).
-    A flat base's steps are bounded so that ``h lambda <= FLOOR_STABILITY``
-    (:func:`_slip_turn_time`) down to ``FACE_MIN_STEP``; below that, and on a
-    slip's first step from rest, the slip slower than this floor (the speed
-    at which ``h lambda = FLOOR_STABILITY``) is pulled to the step's starting
-    direction (:func:`~freestand.core.contact.body_kernel.unit_slip`), which
-    RK4 integrates stably, and the next step keeps that direction as its
-    reference while the slip stays below the floor (:func:`references`: the
-    step-by-step update to ``s/|s|`` is an explicit step on the same rate).
-    A FACE only (an edge's or point's slip steps are bounded by its time
-    scale, ``SLIP_FRACTION``); 0.0 (``SLIP_FLOOR``) otherwise. ``sc`` holds
-    the step's start solved (:func:`start_functions`). Returns [m/s].
-    """
-    if mode[M_KIND] != FACE or mode[M_SLIP] != 1:
-        return 0.0
-    return slip_stiffness(par, sc) * h / FLOOR_STABILITY
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def slip_stiffness(par, sc):
-    """``mu N max(1/m, rho^2 (I^-1)_zz)`` [m/s^2]: a flat base's slip of speed |s| turns at
-    this / |s|.
-
-    The friction's largest acceleration per unit of its direction, on the
-    FACE's rows and solution in the scratch (N its normal force, rho its
-    twist radius): a horizontal force moves G by 1/m (the held tilt takes
-    its moment), the twist row ``(0, rho e_z)`` by ``rho^2 (I^-1)_zz``.
-    """
-    rho = sc[SC_CENTRE][2]
-    largest = max(1.0 / par[P_MASS], rho * rho * sc[SC_INV][2, 2])
-    return par[P_MU_KINETIC] * max(sc[SC_LAM][0], 0.0) * largest + 1e-300
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _whirl_step(lean, areal, landing_time, landing_speed, distance):
-    """Largest step [s] of a rolling cylinder whose lean whirls; inf when it lands as in a plane.
-
-    The lean e_h (the horizontal projection of the axis, |e_h| = sin(tilt))
-    is predicted by its Taylor polynomial to reach the vertical plane of the
-    pivot in ``landing_time`` [s] at ``landing_speed`` [1/s], passing the
-    vertical at ``distance`` (its side component there). Where it passes,
-    the rolling point swings round the rim at ``landing_speed / distance``
-    [rad/s]. Within ``PIVOT_LEAN`` of flat the body lands as in a plane (the
-    contact point keeps its side,
-    :func:`~freestand.core.contact.body_kernel.pivot_direction`): the step may cross the
-    landing when the lean is predicted to pass within ``PLANAR_PASS`` of
-    ``PIVOT_LEAN`` (so that the rim point's jump to its stored angle there is
-    at most asin(PLANAR_PASS)) and the prediction is trusted: the motion is
-    planar to round-off, or the lean is below ``LEAN_TRUST`` (a prediction
-    from further away may be off by more than ``PIVOT_LEAN``: friction turns
-    the lean's sweep). Otherwise a step turns the lean by at most
-    ``WHIRL_ANGLE`` now (at ``areal / lean^2`` [rad/s], ``areal`` = |e_h x
-    e_h'| [1/s]) and covers at most ``TILT_FRACTION`` of the time left to the
-    approach plus ``WHIRL_ANGLE`` of the swing there: the steps shrink
-    geometrically to the approach and resolve it (the contact lifts off there,
-    the lean passes over, or it lands as in a plane once trusted).
-    """
-    if landing_speed == 0.0:
-        return math.inf
-    trusted = lean <= LEAN_TRUST or distance <= ROUND_OFF_PASS
-    if trusted and distance <= PLANAR_PASS * PIVOT_LEAN:
-        return math.inf
-    limit = TILT_FRACTION * landing_time + WHIRL_ANGLE * distance / landing_speed
-    if areal > 0.0:
-        limit = min(limit, WHIRL_ANGLE * lean * lean / areal)
-    return limit
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _levels(par, n, start_values, kinds, levels):
-    """Level below which each event function fires; NaN for a function that cannot fire.
-
-    A force margin fires when it falls below ``-slack`` having started above
-    it, the slack being the admissibility tolerance (a mode is chosen within
-    it); the tilt function likewise with no slack. A gap fires when it falls
-    ``GAP_SLACK`` below the lower of zero and its value at the step's start:
-    a point released at an event may sit the held rows' drift (some 1e-11 m)
-    below the support, and it must still be caught when it comes back down.
-    The landing function likewise, ``LANDING_SLACK`` below: a cylinder that
-    has just landed leans by round-off, to either side of its new pivot, and
-    may rock back within the step (a decaying sequence of landings), or
-    within ``PIVOT_LEAN`` of flat tilt away from the pivot it keeps there.
-    """
-    for i in range(n):
-        if kinds[i] == FN_GAP:
-            levels[i] = min(start_values[i], 0.0) - GAP_SLACK
-            continue
-        if kinds[i] == FN_LANDING:
-            levels[i] = min(start_values[i], 0.0) - LANDING_SLACK
-            continue
-        slack = 0.0
-        if kinds[i] == FN_NORMAL or kinds[i] == FN_FRICTION:
-            slack = 1e-9 * par[P_MASS] * par[P_GRAVITY]
-        levels[i] = -slack if start_values[i] >= -slack else math.nan
-    return n
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _fired(n, values, levels, prefer):
-    """Index of an event function below its level (``prefer`` if it is one), or -1."""
-    if prefer >= 0 and values[prefer] < levels[prefer]:
-        return prefer
-    for i in range(n):
-        if values[i] < levels[i]:
-            return i
-    return -1
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _trial_time(low, high, g_low, g_high):
-    """Next trial [s] of the search: the secant root, kept half a tolerance inside."""
-    if g_low > 0.0 and g_high < 0.0:
-        x = low + g_low * (high - low) / (g_low - g_high)
-    else:
-        x = 0.5 * (low + high)
-    return min(max(x, low + 0.5 * EVENT_TIME), high - 0.5 * EVENT_TIME)
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _hermite_state(h, tau, y, rate_start, end, rate_end, out):
-    """The step's cubic Hermite interpolant at t + tau in ``out`` (its quaternion normalised).
-
-    ``y(t + s h) = h00 y_0 + h10 h y'_0 + h01 y_1 + h11 h y'_1`` with
-    ``h00 = 2 s^3 - 3 s^2 + 1``, ``h10 = s^3 - 2 s^2 + s``, ``h01 = 3 s^2 - 2 s^3``,
-    ``h11 = s^3 - s^2`` (Hairer, Norsett and Wanner, Solving ODEs I, 1993,
-    II.6: the dense output of order 3 of a one-step method from its ends).
-    """
-    s = tau / h
-    s2 = s * s
-    s3 = s2 * s
-    a = 2.0 * s3 - 3.0 * s2 + 1.0
-    b = (s3 - 2.0 * s2 + s) * h
-    c = 3.0 * s2 - 2.0 * s3
-    d = (s3 - s2) * h
-    for i in range(STATE_SIZE):
-        out[i] = a * y[i] + b * rate_start[i] + c * end[i] + d * rate_end[i]
-    _normalise(out)
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _function_value(par, record, dt, t, y, mode, data, sc, ref, values, kinds, target):
-    """The event function ``target`` at (t, y).
-
-    A gap, a landing or the tilt depends on the state alone: it is taken
-    without a solve (the other entries of ``values`` are then the last
-    solve's and are not read). A force margin or a slip is solved for.
-    """
-    kind = kinds[target]
-    if kind == FN_GAP or kind == FN_LANDING or kind == FN_TILT:
-        rotation_matrix(y, sc[SC_ROT])
-        n_normal, n_tangent = row_counts(mode[M_KIND])
-        event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
-    else:
-        event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds)
-    return values[target]
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def interpolated_crossing(par, record, dt, t, h, y, end, mode, data, sc, k, ref, values, kinds,
-                          level, target, g_start, g_end, trial):  # fmt: skip
-    """The crossing of event function ``target`` on the step's cubic interpolant.
-
-    The search of :func:`locate` (Anderson and Bjorck's regula falsi) on
-    the function at :func:`_hermite_state`'s states (``k[0]`` and ``k[1]``
-    the rates at the step's ends), to ``INTERPOLANT_TIME``: one solve per
-    trial for a force margin, none for a gap, a landing or the tilt, where
-    a trial on true RK4 states costs four. ``g_start`` and ``g_end`` are the
-    function less its ``level`` at the step's ends (positive, negative).
-    Returns the crossing's time from t [s] and the function's rate of fall
-    there [units/s] (the secant of the last two trials; positive, or NaN
-    where the search found none). The interpolant is of third order where
-    RK4 is of fourth: its crossing starts the search on RK4 states, it is
-    not the event.
-    """
-    low = 0.0
-    high = h
-    g_low = g_start
-    g_high = g_end
-    last, g_last = h, g_end  # the last two trials, for the rate
-    previous, g_previous = 0.0, g_start
-    side = 0
-    for _ in range(INTERPOLANT_TRIALS):
-        if high - low <= INTERPOLANT_TIME:
-            break
-        middle = _trial_time(low, high, g_low, g_high)
-        _hermite_state(h, middle, y, k[0], end, k[1], trial)
-        g = _function_value(par, record, dt, t + middle, trial, mode, data, sc, ref, values,
-                            kinds, target) - level  # fmt: skip
-        if not math.isfinite(g):
-            return 0.0, math.nan
-        previous, g_previous = last, g_last
-        last, g_last = middle, g
-        low, high, g_low, g_high, side = narrowed(g < 0.0, middle, g, low, high, g_low, g_high,
-                                                  side)  # fmt: skip
-    rate_ = (g_previous - g_last) / (last - previous) if last != previous else math.nan
-    return 0.5 * (low + high), rate_ if rate_ > 0.0 else math.nan
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _seeded_trial(last, g_last, previous, g_previous, rate_, low, high):
-    """The next seeded trial of :func:`locate` [s from the step's start], or NaN.
-
-    From the last trial on RK4 states (at ``last``, the followed function
-    less its level ``g_last`` there) the crossing is estimated by a Newton
-    step, ``r = last + g_last / rate``, the rate of fall being the secant of
-    the last two trials (``previous``, NaN before the second) or else the
-    interpolant's ``rate_``; the trial lies ``SEED_OFFSET`` of an
-    ``EVENT_TIME`` beyond r, seen from the last trial. Where the estimates
-    are that close, each trial crosses over and the bracket closes in two
-    or three. NaN where no rate is known or the trial falls outside the
-    bracket (low, high).
-    """
-    if math.isfinite(previous) and previous != last:
-        secant = (g_previous - g_last) / (last - previous)
-        if secant > 0.0:
-            rate_ = secant
-    if not rate_ > 0.0:
-        return math.nan
-    direction = 1.0 if g_last >= 0.0 else -1.0
-    x = last + g_last / rate_ + SEED_OFFSET * direction * EVENT_TIME
-    return x if low < x < high else math.nan
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count, trial,
-           values, kinds, bracket, out):  # fmt: skip
-    """Phase 2: the earliest crossing of an event function within the step.
-
-    ``out`` holds the state at t + h; ``start_values`` the functions at t.
-    Returns (step taken [s], kind of the function that fired or -1, RK4
-    trials made). On an event, ``out`` holds the state just after the
-    crossing (within ``EVENT_TIME``).
-
-    The crossing is bracketed on true RK4 states from the step's start by
-    Anderson and Bjorck's variant of regula falsi on the function that fired
-    (:mod:`~freestand.core.contact.regula_falsi`; superlinear, each end of the
-    bracket moves; the Illinois variant of Dowell and Jarratt 1971 took 10.5
-    trials per event of a rocking cabinet, this 9.4), each trial kept
-    half a tolerance inside the bracket so that it closes to ``EVENT_TIME``
-    once the root is found; a trial at which another function has fired
-    becomes the bracket's end and that function the one followed. About eight
-    trials instead of the bisection's thirty; with the seeds below, three or
-    four for a gap (a rocking cabinet under a record: 4.6 per event, its
-    slip-stops' eight included).
-
-    The first trials are seeded: the crossing is found first on the step's
-    cubic interpolant (:func:`interpolated_crossing`, at one solve or none
-    per trial), tried on RK4 states, and then a Newton step from there is
-    tried just past it, from each side in turn (:func:`_seeded_trial`);
-    where the seeds do not close the bracket, the regula falsi goes on from
-    it. A slip-stop is not seeded: the friction's direction has kinks
-    within such a step (where the slip crosses its floor and turns against
-    the stored direction, :func:`~freestand.core.contact.body_kernel.slip_direction`),
-    and the cubic through the step's ends missed the cask's stops by up to
-    3e-5 s.
-    ``bracket`` (3, ``MAX_EVENT_FUNCTIONS``) is work space: the functions'
-    levels and their values at the bracket's ends.
-    """
-    n = event_functions(par, record, dt, t + h, out, mode, data, sc, ref, values, kinds)
-    levels, low_values, high_values = bracket[0], bracket[1], bracket[2]
-    _levels(par, n, start_values, kinds, levels)
-    target = _fired(n, values, levels, -1)
-    if target < 0:
-        return h, -1, 0
-    for i in range(n):
-        low_values[i] = start_values[i]
-        high_values[i] = values[i]
-    low = 0.0
-    high = h
-    g_low = low_values[target] - levels[target]
-    g_high = high_values[target] - levels[target]
-    # the crossing on the step's cubic interpolant seeds the search on RK4 states
-    first, rate_ = 0.0, math.nan
-    if kinds[target] != FN_SLIP_STOP:
-        # (not a slip-stop: the friction's direction has kinks within its step, see above)
-        state_rate(out, sc[SC_ACC], k[1])  # y' at the step's end (k[1] is free until a trial)
-        first, rate_ = interpolated_crossing(par, record, dt, t, h, y, out, mode, data, sc, k, ref,
-                                             values, kinds, levels[target], target, g_low,
-                                             g_high, trial)  # fmt: skip
-    seeding = math.isfinite(rate_) and 0.0 < first < h
-    seeded = 0
-    last, g_last, previous, g_previous = first, 0.0, math.nan, 0.0
-    side = 0
-    trials = 0
-    for _ in range(200):
-        if high - low <= EVENT_TIME:
-            break
-        trials += 1
-        middle = math.nan
-        if seeding and seeded == 0:
-            middle = min(max(first, 0.5 * EVENT_TIME), h - 0.5 * EVENT_TIME)
-        elif seeding and seeded < SEED_TRIALS:
-            middle = _seeded_trial(last, g_last, previous, g_previous, rate_, low, high)
-        if seeding and math.isnan(middle):
-            # the seeds are spent: the regula falsi from the bracket's ends, unscaled
-            seeding = False
-            side = 0
-            g_low = low_values[target] - levels[target]
-            g_high = high_values[target] - levels[target]
-        if math.isnan(middle):
-            middle = _trial_time(low, high, g_low, g_high)
-        _rk4(par, record, dt, t, middle, y, mode, data, sc, k, trial)
-        event_functions(par, record, dt, t + middle, trial, mode, data, sc, ref, values, kinds)
-        fired = _fired(n, values, levels, target)
-        if seeding:
-            seeded += 1
-            previous, g_previous = (last if seeded > 1 else math.nan), g_last
-            last, g_last = middle, values[target] - levels[target]
-            seeding = fired < 0 or fired == target  # another function fired: no more seeds
-        if fired >= 0:
-            for i in range(n):
-                high_values[i] = values[i]
-            for i in range(STATE_SIZE):
-                out[i] = trial[i]
-        else:
-            for i in range(n):
-                low_values[i] = values[i]
-        if fired >= 0 and fired != target:
-            # another function fired first: it is followed, from the bracket's low end
-            target = fired
-            side = 0
-            high = middle
-            g_low = low_values[target] - levels[target]
-            g_high = high_values[target] - levels[target]
-        else:
-            g_trial = values[target] - levels[target]
-            low, high, g_low, g_high, side = narrowed(fired >= 0, middle, g_trial, low, high,
-                                                      g_low, g_high, side)  # fmt: skip
-    # the solve at the event's state (the caller's next phase reads the scratch)
-    event_functions(par, record, dt, t + high, out, mode, data, sc, ref, values, kinds)
-    return high, kinds[target], trials
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
@@ -1452,28 +764,6 @@ def _start_chatter(mode, istate, event):
     istate[I_CHATTER] = 1
     _set_free(mode)
     return EV_REMEDY
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def slip_velocity(par, record, dt, t, y, mode, data, sc):
-    """The held patch's slip velocity at (t, y), at its centre of pressure, in ``sc[SC_SVEL]``.
-
-    The mode is solved there (:func:`solve_at`, its rows left in the
-    scratch). Returns (its speed [m/s], the patch's normal rows, its tangential rows).
-    """
-    ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
-    svel = sc[SC_SVEL]
-    tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
-    return _size(svel, n_tangent), n_normal, n_tangent
-
-
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
-def _size(vector, count):
-    """The length of the first ``count`` components of ``vector``."""
-    size = 0.0
-    for k in range(count):
-        size += vector[k] ** 2
-    return math.sqrt(size)
 
 
 @nb.njit(cache=True, error_model="numpy", _nrt=False)

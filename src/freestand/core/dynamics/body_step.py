@@ -1,0 +1,510 @@
+"""The 3-D engine's ``advance`` phase: one RK4 step of the held contact mode.
+
+:func:`advance` takes one RK4 step of the held mode (the contact forces
+solved at every stage by :func:`freestand.core.contact.body_kernel.rate`);
+:func:`start_functions` and :func:`event_functions` give a step's references
+(the slip's direction, the pivot's) and its event functions, each >= 0
+while the mode holds (:func:`event_values`); :func:`closing_step`,
+:func:`slip_floor` and the slip's and whirl's time scales bound the step's
+length. The loop that calls them is :func:`freestand.core.dynamics.body_engine.run`;
+the event search on these functions, :mod:`freestand.core.dynamics.body_events`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba as nb
+
+from freestand.core.contact.body_kernel import (
+    D_FLOOR,
+    D_PSI,
+    D_SLIP,
+    EDGE,
+    FACE,
+    FREE,
+    M_INDEX,
+    M_KIND,
+    M_SLIP,
+    P_HALF_X,
+    P_MASS,
+    P_MU_KINETIC,
+    P_SHAPE,
+    PIVOT_LEAN,
+    POINT,
+    SC_ACC,
+    SC_CENTRE,
+    SC_INV,
+    SC_LAM,
+    SC_PROBE,
+    SC_ROT,
+    SC_SVEL,
+    SC_TANGENT,
+    SC_TBIAS,
+    SHAPE_BOX,
+    SLIP_FLOOR,
+    STATE_SIZE,
+    arm,
+    corner_gap,
+    cross,
+    friction_margin,
+    lowest_rim_angle,
+    normal_margin,
+    rate,
+    rotation_matrix,
+    row_acceleration,
+    row_counts,
+    sin_tilt,
+    solve_at,
+    state_rate,
+    tangential_velocity,
+)
+
+MAX_EVENT_FUNCTIONS = 8
+CLOSING_OVERSHOOT = 1.25  # a step ends this far past a gap's predicted closing [-]
+WHIRL_ANGLE = 0.1  # [rad] largest turn of a rolling cylinder's lean in one step
+TILT_FRACTION = 0.5  # a whirling lean covers at most this part of its way to the vertical in a step
+RISE_LEAN = 2.0 * PIVOT_LEAN  # sin(tilt) a step from below PIVOT_LEAN rises to at most
+PLANAR_PASS = 0.1  # a lean predicted to pass within this part of PIVOT_LEAN lands as in a plane [-]
+LEAN_TRUST = 1e-4  # sin(tilt) below which the lean's predicted passing distance is trusted [-]
+ROUND_OFF_PASS = 1e-12  # a passing distance below this is a planar motion's round-off [-]
+SLIP_FRACTION = 0.5  # a step lasts at most this part of a slip's time scale |s| / |s'|
+FACE_TURN = 0.3  # [rad] a flat base's slip turns by about this much at most in a step
+SLIP_MIN_STEP = 1e-4  # [s] the slip's time scale bounds no step below this
+FACE_MIN_STEP = 3e-4  # [s] a flat base's turn bounds no step below this
+FLOOR_STABILITY = 2.0  # h lambda of a flat base's slip turning at its floor (RK4: stable to 2.78)
+MIN_STEP = 1e-9  # [s] the smallest step the closing prediction may ask for
+
+# function kinds (what a crossing means)
+FN_NORMAL = 0
+FN_FRICTION = 1
+FN_SLIP_STOP = 2
+FN_GAP = 3
+FN_LANDING = 4
+FN_TILT = 5
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _normalise(y):
+    size = math.sqrt(y[3] ** 2 + y[4] ** 2 + y[5] ** 2 + y[6] ** 2)
+    for i in range(3, 7):
+        y[i] /= size
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _rk4(par, record, dt, t, h, y, mode, data, sc, k, out):
+    """One RK4 step of the held mode over h from (t, y) into ``out``; False if singular.
+
+    ``k[0]`` holds y' at (t, y) already: the first stage does not depend on
+    h, and the step and the trials of :func:`~freestand.core.dynamics.body_events.locate` share it.
+    """
+    stage = k[4]
+    ok = True
+    for i in range(STATE_SIZE):
+        stage[i] = y[i] + 0.5 * h * k[0, i]
+    ok &= rate(par, record, dt, t + 0.5 * h, stage, mode, data, sc, k[1])
+    for i in range(STATE_SIZE):
+        stage[i] = y[i] + 0.5 * h * k[1, i]
+    ok &= rate(par, record, dt, t + 0.5 * h, stage, mode, data, sc, k[2])
+    for i in range(STATE_SIZE):
+        stage[i] = y[i] + h * k[2, i]
+    ok &= rate(par, record, dt, t + h, stage, mode, data, sc, k[3])
+    for i in range(STATE_SIZE):
+        out[i] = y[i] + h / 6.0 * (k[0, i] + 2.0 * k[1, i] + 2.0 * k[2, i] + k[3, i])
+    _normalise(out)
+    return ok
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def resting(mode, y, velocity_tol):
+    """True while the body sits flat, sticks and does not move (not integrated)."""
+    if mode[M_KIND] != FACE or mode[M_SLIP] != 0:
+        return False
+    for i in range(7, 13):
+        if abs(y[i]) > 1e-14:
+            return False
+    return True
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
+    """Phase 1: the state at t + h in ``out`` (RK4, or unchanged at rest); False if singular.
+
+    The scratch holds the held mode solved at (t, y) (:func:`start_functions`
+    at the step's start): the first stage is read from it.
+    """
+    if resting(mode, y, velocity_tol):
+        for i in range(STATE_SIZE):
+            out[i] = y[i]
+        return True
+    state_rate(y, sc[SC_ACC], k[0])
+    return _rk4(par, record, dt, t, h, y, mode, data, sc, k, out)
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def references(par, record, dt, t, y, mode, data, sc, ref, solved=False):
+    """The step's references: the slip direction (3) and the pivot's horizontal direction (2).
+
+    The slip direction is the slip velocity's at the held patch's centre of
+    pressure at (t, y), or the stored one while the slip is slower than
+    ``SLIP_FLOOR`` or the last step's floor (:func:`slip_floor`). Returns the
+    normal and tangential rows of the slip's solve where the scratch holds
+    the held mode solved at (t, y) as with the references stored: its solve
+    read no stored direction (:func:`~freestand.core.contact.body_kernel.slip_direction`), or the stored one is
+    kept; else (0, -1).
+    ``solved``: the scratch holds the held mode solved at (t, y) already (a
+    step's end left unprojected, :func:`~freestand.core.dynamics.body_engine.drifted`, whose event functions left
+    the slip velocity in the scratch), and it is not solved again.
+    """
+    rot = sc[SC_ROT]
+    rotation_matrix(y, rot)
+    for i in range(5):
+        ref[i] = 0.0
+    if mode[M_KIND] == POINT and par[P_SHAPE] != SHAPE_BOX:
+        # the step's pivot: the lowest rim point (kept on its side within the step)
+        psi = lowest_rim_angle(rot, data[D_PSI])
+        data[D_PSI] = psi
+        probe = sc[SC_PROBE]
+        d, c = probe[0], probe[1]
+        radius = par[P_HALF_X]
+        # horizontal direction of the pivot from the base centre
+        arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
+        arm(par, rot, 0.0, 0.0, 0.0, c)
+        px = d[0] - c[0]
+        py = d[1] - c[1]
+        size = math.hypot(px, py)
+        ref[3] = px / size
+        ref[4] = py / size
+    if mode[M_SLIP] == 0:
+        return 0, -1
+    if solved:
+        n_normal, n_tangent = row_counts(mode[M_KIND])
+        size = _size(sc[SC_SVEL], n_tangent)
+    else:
+        size, n_normal, n_tangent = slip_velocity(par, record, dt, t, y, mode, data, sc)
+    svel = sc[SC_SVEL]
+    floor = max(SLIP_FLOOR, data[D_FLOOR])  # the last step's (slip_floor)
+    for i in range(n_tangent):
+        ref[i] = svel[i] / size if size > floor else data[D_SLIP + i]
+        data[D_SLIP + i] = ref[i]
+    return n_normal, n_tangent if size <= floor or sc[SC_CENTRE][5] == 0.0 else -1
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
+    """The event functions at (t, y) in the held mode (>= 0 while it holds); their count."""
+    ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
+    return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def start_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds, solved=False):
+    """A step's references (:func:`references`) and event functions at its start (t, y).
+
+    One solve where the slip's references made it (none where the scratch
+    holds it, ``solved``); returns the functions' count.
+    """
+    n_normal, n_tangent = references(par, record, dt, t, y, mode, data, sc, ref, solved)
+    if n_tangent < 0:
+        return event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds)
+    return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds):
+    """The event functions of the held mode solved in the scratch at (t, y); their count."""
+    rot = sc[SC_ROT]
+    lam = sc[SC_LAM]
+    kind = mode[M_KIND]
+    count = 0
+    if kind != FREE:
+        values[count] = normal_margin(par, rot, kind, lam)
+        kinds[count] = FN_NORMAL
+        count += 1
+        if mode[M_SLIP] == 0:
+            values[count] = friction_margin(par, n_normal, n_tangent, lam)
+            kinds[count] = FN_FRICTION
+            count += 1
+        else:
+            svel = sc[SC_SVEL]
+            tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
+            along = 0.0
+            for i in range(n_tangent):
+                along += svel[i] * ref[i]
+            values[count] = along
+            kinds[count] = FN_SLIP_STOP
+            count += 1
+    d = sc[SC_PROBE][0]
+    if par[P_SHAPE] == SHAPE_BOX:
+        for c in range(4):
+            if kind == FACE or (kind == POINT and mode[M_INDEX] == c):
+                continue
+            if kind == EDGE and (mode[M_INDEX] == c or (mode[M_INDEX] + 1) % 4 == c):
+                continue
+            g, _ = corner_gap(par, y, rot, c, d)
+            values[count] = g
+            kinds[count] = FN_GAP
+            count += 1
+    elif kind == POINT:
+        values[count] = rot[0, 2] * ref[3] + rot[1, 2] * ref[4]
+        kinds[count] = FN_LANDING
+        count += 1
+    elif kind == FREE:
+        radius = par[P_HALF_X]
+        s = sin_tilt(rot)
+        c0 = sc[SC_PROBE][1]
+        arm(par, rot, 0.0, 0.0, 0.0, c0)
+        values[count] = y[2] + c0[2] - radius * s
+        kinds[count] = FN_GAP
+        count += 1
+    values[count] = rot[2, 2]  # cos(tilt): overturned at pi/2
+    kinds[count] = FN_TILT
+    count += 1
+    return count
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _closing_time(value, rate_, acceleration):
+    """Earliest t > 0 with value + rate t + acceleration t^2 / 2 = 0 [s]; inf if none."""
+    if acceleration == 0.0:
+        return -value / rate_ if rate_ < 0.0 else math.inf
+    discriminant = rate_ * rate_ - 2.0 * acceleration * value
+    if discriminant < 0.0:
+        return math.inf
+    root = math.sqrt(discriminant)
+    best = math.inf
+    for t in ((-rate_ - root) / acceleration, (-rate_ + root) / acceleration):
+        if 0.0 < t < best:
+            best = t
+    return best
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def closing_step(par, y, mode, sc, ref):
+    """Largest step [s] that cannot step over the closing of a gap and its reopening.
+
+    A point that lifts by a little flies for a short time (a cylinder rocking
+    by 1e-4 rad lands again within some 10 ms): a step longer than the flight
+    would see the gap open at both its ends and miss the impact. Each gap (a
+    box corner not held) and a rolling cylinder's landing function f is
+    predicted by its Taylor polynomial f + f' t + f'' t^2 / 2 (f'' from the
+    held mode's accelerations in ``sc``, which :func:`start_functions` just
+    solved); the step ends ``CLOSING_OVERSHOOT`` past its earliest zero, so
+    that :func:`~freestand.core.dynamics.body_events.locate` brackets the crossing. A rolling cylinder's lean (the
+    horizontal projection of its axis) turns at ``|e_h x e_h'| / |e_h|^2``,
+    which grows as 1/tilt near flat: :func:`_whirl_step` bounds the step there.
+    Below ``PIVOT_LEAN`` the cylinder turns about its stored rim point, above
+    it about the lowest one
+    (:func:`~freestand.core.contact.body_kernel.pivot_direction`): a step
+    from below ends about where an upper bound of the lean,
+    ``|e_h| + |e_h'| t + |e_h''| t^2 / 2``,
+    reaches ``RISE_LEAN``, so that the rim point's change falls between steps,
+    not inside RK4's stages (a 5 ms step from 3e-7 to 2.7e-6 once set a
+    slender cylinder rolling that lands at fine steps).
+    """
+    rot = sc[SC_ROT]
+    x = sc[SC_ACC]
+    kind = mode[M_KIND]
+    wx, wy, wz = y[10], y[11], y[12]
+    earliest = math.inf
+    if mode[M_SLIP] == 1:
+        earliest = _slip_turn_time(par, mode, sc)
+    d = sc[SC_PROBE][0]
+    if par[P_SHAPE] == SHAPE_BOX:
+        if kind == FACE:
+            return max(earliest, MIN_STEP)
+        for c in range(4):
+            if kind == POINT and mode[M_INDEX] == c:
+                continue
+            if kind == EDGE and (mode[M_INDEX] == c or (mode[M_INDEX] + 1) % 4 == c):
+                continue
+            g, gv = corner_gap(par, y, rot, c, d)
+            ux, uy, uz = cross(wx, wy, wz, d[0], d[1], d[2])
+            _, _, cz = cross(wx, wy, wz, ux, uy, uz)
+            _, _, az = cross(x[3], x[4], x[5], d[0], d[1], d[2])
+            earliest = min(earliest, _closing_time(max(g, 0.0), gv, x[2] + az + cz))
+    elif kind == POINT:
+        ex, ey, ez = rot[0, 2], rot[1, 2], rot[2, 2]
+        ux, uy, uz = cross(wx, wy, wz, ex, ey, ez)
+        cx, cy, _ = cross(wx, wy, wz, ux, uy, uz)
+        ax, ay, _ = cross(x[3], x[4], x[5], ex, ey, ez)
+        value = ex * ref[3] + ey * ref[4]
+        slope = ux * ref[3] + uy * ref[4]
+        curvature = (ax + cx) * ref[3] + (ay + cy) * ref[4]
+        landing = _closing_time(max(value, 0.0), slope, curvature)
+        lean = math.sqrt(ex * ex + ey * ey)
+        areal = abs(ex * uy - ey * ux)
+        if lean <= PIVOT_LEAN:
+            # the rim point is the stored one up to PIVOT_LEAN, the lowest one above it: a
+            # step ends about where the lean rises past RISE_LEAN (an upper bound of |e_h|)
+            rise = _closing_time(lean - RISE_LEAN, math.hypot(ux, uy),
+                                 math.hypot(ax + cx, ay + cy))  # fmt: skip
+            earliest = min(earliest, rise)
+        if lean > PIVOT_LEAN and landing < math.inf:
+            landing_speed = abs(slope + curvature * landing)
+            # the lean's side component where it meets the vertical plane of the pivot
+            side = (-ex * ref[4] + ey * ref[3]) + (-ux * ref[4] + uy * ref[3]) * landing + 0.5 * (
+                -(ax + cx) * ref[4] + (ay + cy) * ref[3]) * landing * landing  # fmt: skip
+            limit = _whirl_step(lean, areal, landing, landing_speed, abs(side))
+            if limit < math.inf:
+                return max(min(limit, CLOSING_OVERSHOOT * earliest), MIN_STEP)
+        earliest = min(earliest, landing)
+        if lean > PIVOT_LEAN and areal > 0.0:
+            # a wobbling cylinder: its rim point swings by at most WHIRL_ANGLE in a step
+            return max(min(CLOSING_OVERSHOOT * earliest, WHIRL_ANGLE * lean * lean / areal),
+                       MIN_STEP)  # fmt: skip
+    return max(CLOSING_OVERSHOOT * earliest, MIN_STEP)
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _slip_turn_time(par, mode, sc):
+    """Time [s] in which a slip's velocity could stop or turn: |s| / |s'| times SLIP_FRACTION.
+
+    The kinetic friction follows the slip's direction, which turns quickly as
+    the slip slows down (with an edge's twist as one of its components): on a
+    rocking edge or point a step longer than the slip's own time scale makes
+    RK4 oscillate from step to step and gain energy. A flat base's direction
+    is not coupled to a rotation: its steps are bounded by the turn alone,
+    ``FACE_TURN |s| / |s'_perp|`` (s' across s; a slip slowing along its own
+    direction stops at the located slip-stop event; a slip from rest, slower
+    than ``SLIP_FLOOR``, grows along its onset's direction). Unbounded, a sliding
+    cask's 5 ms steps missed the quick turns of its slow slips: its path
+    strayed 2.5 mm from a 0.1 ms run over 20 s (a 65 mm slide); bounded, 0.5
+    mm, at 27 % more steps. ``sc`` holds the rows and accelerations that
+    :func:`start_functions` just solved. A flat base's step is also bounded
+    by RK4's stability on the rate at which friction turns a slow slip,
+    ``FLOOR_STABILITY |s| / slip_stiffness`` (:func:`slip_floor`): unbounded,
+    a slip across the force grew from round-off (a squat cylinder pushed at 1
+    rad from its axes slid 1.8 % too far); bounded, the cask's path stays
+    0.05 mm from a 0.1 ms run's, where the turn bound alone left 0.47 mm.
+    Not below ``SLIP_MIN_STEP``: a slip
+    that dies away without reversing would otherwise take ever shorter steps
+    (its energy is then negligible); a flat base's not below ``FACE_MIN_STEP``,
+    whose slow creeps (0.1 mm/s for 10 ms, the support driving across them)
+    took a quarter of the cask's steps at 0.1 ms; at that floor a slower slip
+    keeps its step's starting direction (:func:`slip_floor`).
+    """
+    kind = mode[M_KIND]
+    n_tangent = 2 if kind == POINT else 3
+    svel = sc[SC_SVEL]
+    speed = 0.0
+    change = 0.0
+    along = 0.0
+    for k in range(n_tangent):
+        rate_ = row_acceleration(sc[SC_TANGENT], sc[SC_TBIAS], k, sc[SC_ACC])
+        speed += svel[k] ** 2
+        change += rate_**2
+        along += rate_ * svel[k]
+    if kind == FACE:
+        # the turn only: s' across s; a slip from rest grows along its onset's direction
+        if speed <= SLIP_FLOOR * SLIP_FLOOR:
+            return math.inf
+        change = max(change - along * along / speed, 0.0)
+        limit = FLOOR_STABILITY * math.sqrt(speed) / slip_stiffness(par, sc)
+        if change > 0.0:
+            limit = min(limit, FACE_TURN * math.sqrt(speed / change))
+        return max(limit, FACE_MIN_STEP) / CLOSING_OVERSHOOT
+    if change == 0.0:
+        return math.inf
+    limit = SLIP_FRACTION * math.sqrt(speed / change)
+    return max(limit, SLIP_MIN_STEP) / CLOSING_OVERSHOOT
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def slip_floor(par, mode, sc, h):
+    """The speed [m/s] below which a flat base's slip keeps its step's starting direction.
+
+    A slip's direction u = s/|s| turns at ``slip_stiffness / |s|`` (the
+    kinetic friction pushes a slip's component across u back at that rate):
+    a stiff rate where the slip is slow, on which RK4's explicit stages are
+    unstable beyond ``h lambda = 2.78``. A slip across the force then grows
+    from round-off instead of dying out, step by step: a squat cylinder
+    pushed by one sine cycle at 1 rad from its axes slid 1.8 % further than
+    along them, with a sideways speed of 4 mm/s (0 along them, by symmetry).
+    A flat base's steps are bounded so that ``h lambda <= FLOOR_STABILITY``
+    (:func:`_slip_turn_time`) down to ``FACE_MIN_STEP``; below that, and on a
+    slip's first step from rest, the slip slower than this floor (the speed
+    at which ``h lambda = FLOOR_STABILITY``) is pulled to the step's starting
+    direction (:func:`~freestand.core.contact.body_kernel.unit_slip`), which
+    RK4 integrates stably, and the next step keeps that direction as its
+    reference while the slip stays below the floor (:func:`references`: the
+    step-by-step update to ``s/|s|`` is an explicit step on the same rate).
+    A FACE only (an edge's or point's slip steps are bounded by its time
+    scale, ``SLIP_FRACTION``); 0.0 (``SLIP_FLOOR``) otherwise. ``sc`` holds
+    the step's start solved (:func:`start_functions`). Returns [m/s].
+    """
+    if mode[M_KIND] != FACE or mode[M_SLIP] != 1:
+        return 0.0
+    return slip_stiffness(par, sc) * h / FLOOR_STABILITY
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def slip_stiffness(par, sc):
+    """``mu N max(1/m, rho^2 (I^-1)_zz)`` [m/s^2]: a flat base's slip of speed |s| turns at
+    this / |s|.
+
+    The friction's largest acceleration per unit of its direction, on the
+    FACE's rows and solution in the scratch (N its normal force, rho its
+    twist radius): a horizontal force moves G by 1/m (the held tilt takes
+    its moment), the twist row ``(0, rho e_z)`` by ``rho^2 (I^-1)_zz``.
+    """
+    rho = sc[SC_CENTRE][2]
+    largest = max(1.0 / par[P_MASS], rho * rho * sc[SC_INV][2, 2])
+    return par[P_MU_KINETIC] * max(sc[SC_LAM][0], 0.0) * largest + 1e-300
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _whirl_step(lean, areal, landing_time, landing_speed, distance):
+    """Largest step [s] of a rolling cylinder whose lean whirls; inf when it lands as in a plane.
+
+    The lean e_h (the horizontal projection of the axis, |e_h| = sin(tilt))
+    is predicted by its Taylor polynomial to reach the vertical plane of the
+    pivot in ``landing_time`` [s] at ``landing_speed`` [1/s], passing the
+    vertical at ``distance`` (its side component there). Where it passes,
+    the rolling point swings round the rim at ``landing_speed / distance``
+    [rad/s]. Within ``PIVOT_LEAN`` of flat the body lands as in a plane (the
+    contact point keeps its side,
+    :func:`~freestand.core.contact.body_kernel.pivot_direction`): the step may cross the
+    landing when the lean is predicted to pass within ``PLANAR_PASS`` of
+    ``PIVOT_LEAN`` (so that the rim point's jump to its stored angle there is
+    at most asin(PLANAR_PASS)) and the prediction is trusted: the motion is
+    planar to round-off, or the lean is below ``LEAN_TRUST`` (a prediction
+    from further away may be off by more than ``PIVOT_LEAN``: friction turns
+    the lean's sweep). Otherwise a step turns the lean by at most
+    ``WHIRL_ANGLE`` now (at ``areal / lean^2`` [rad/s], ``areal`` = |e_h x
+    e_h'| [1/s]) and covers at most ``TILT_FRACTION`` of the time left to the
+    approach plus ``WHIRL_ANGLE`` of the swing there: the steps shrink
+    geometrically to the approach and resolve it (the contact lifts off there,
+    the lean passes over, or it lands as in a plane once trusted).
+    """
+    if landing_speed == 0.0:
+        return math.inf
+    trusted = lean <= LEAN_TRUST or distance <= ROUND_OFF_PASS
+    if trusted and distance <= PLANAR_PASS * PIVOT_LEAN:
+        return math.inf
+    limit = TILT_FRACTION * landing_time + WHIRL_ANGLE * distance / landing_speed
+    if areal > 0.0:
+        limit = min(limit, WHIRL_ANGLE * lean * lean / areal)
+    return limit
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def slip_velocity(par, record, dt, t, y, mode, data, sc):
+    """The held patch's slip velocity at (t, y), at its centre of pressure, in ``sc[SC_SVEL]``.
+
+    The mode is solved there (:func:`~freestand.core.contact.body_kernel.solve_at`, its rows left in the
+    scratch). Returns (its speed [m/s], the patch's normal rows, its tangential rows).
+    """
+    ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
+    svel = sc[SC_SVEL]
+    tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
+    return _size(svel, n_tangent), n_normal, n_tangent
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
+def _size(vector, count):
+    """The length of the first ``count`` components of ``vector``."""
+    size = 0.0
+    for k in range(count):
+        size += vector[k] ** 2
+    return math.sqrt(size)
