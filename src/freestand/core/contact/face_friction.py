@@ -278,7 +278,8 @@ def _pull_at(args, beta):
 
 @nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
 def _slip_at(args, cx, cy):
-    """The slip at c into ``s``: world w(p) + omega e_z x (c - p), then omega rho(c)."""
+    """The slip at c into ``s`` (world): w(p) + omega e_z x (c - p) turned from the body
+    frame, then omega rho(c)."""
     model, base, rot, omega, stored, start, floor, s, u = args
     ax, ay, px, py, wx, wy, lever = model
     bx, by = wx - omega * (cy - py), wy + omega * (cx - px)

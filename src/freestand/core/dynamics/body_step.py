@@ -150,11 +150,14 @@ def references(par, record, dt, t, y, mode, data, sc, ref, solved=False):
     ``SLIP_FLOOR`` or the last step's floor (:func:`slip_floor`). Returns the
     normal and tangential rows of the slip's solve where the scratch holds
     the held mode solved at (t, y) as with the references stored: its solve
-    read no stored direction (:func:`~freestand.core.contact.body_kernel.slip_direction`), or the stored one is
-    kept; else (0, -1).
+    read no stored direction
+    (:func:`~freestand.core.contact.body_kernel.slip_direction`), or the
+    stored one is kept; else (0, -1).
     ``solved``: the scratch holds the held mode solved at (t, y) already (a
-    step's end left unprojected, :func:`~freestand.core.dynamics.body_engine.drifted`, whose event functions left
-    the slip velocity in the scratch), and it is not solved again.
+    step's end left unprojected,
+    :func:`~freestand.core.dynamics.body_engine.drifted`, whose event
+    functions left the slip velocity in the scratch), and it is not solved
+    again.
     """
     rot = sc[SC_ROT]
     rotation_matrix(y, rot)
@@ -290,7 +293,8 @@ def closing_step(par, y, mode, sc, ref):
     predicted by its Taylor polynomial f + f' t + f'' t^2 / 2 (f'' from the
     held mode's accelerations in ``sc``, which :func:`start_functions` just
     solved); the step ends ``CLOSING_OVERSHOOT`` past its earliest zero, so
-    that :func:`~freestand.core.dynamics.body_events.locate` brackets the crossing. A rolling cylinder's lean (the
+    that :func:`~freestand.core.dynamics.body_events.locate` brackets the
+    crossing. A rolling cylinder's lean (the
     horizontal projection of its axis) turns at ``|e_h x e_h'| / |e_h|^2``,
     which grows as 1/tilt near flat: :func:`_whirl_step` bounds the step there.
     Below ``PIVOT_LEAN`` the cylinder turns about its stored rim point, above
@@ -492,8 +496,10 @@ def _whirl_step(lean, areal, landing_time, landing_speed, distance):
 def slip_velocity(par, record, dt, t, y, mode, data, sc):
     """The held patch's slip velocity at (t, y), at its centre of pressure, in ``sc[SC_SVEL]``.
 
-    The mode is solved there (:func:`~freestand.core.contact.body_kernel.solve_at`, its rows left in the
-    scratch). Returns (its speed [m/s], the patch's normal rows, its tangential rows).
+    The mode is solved there
+    (:func:`~freestand.core.contact.body_kernel.solve_at`, its rows left in
+    the scratch). Returns (its speed [m/s], the patch's normal rows, its
+    tangential rows).
     """
     ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
     svel = sc[SC_SVEL]
