@@ -84,6 +84,7 @@ from freestand.core.body import Body, Box
 from freestand.core.contact.engine import solve_in_place
 from freestand.core.contact.face_friction import (
     CENTRE_TOLERANCE,
+    body_horizontal,
     face_twist_radius,
     model_centre,
     rectangle_twist_radius,
@@ -1057,10 +1058,8 @@ def face_model(par, sc, ux, uy):
     centre, rot, svel = sc[SC_CENTRE], sc[SC_ROT], sc[SC_SVEL]
     lever = par[P_MU_KINETIC] * par[P_CENTRE + 2]
     px, py = centre[0], centre[1]
-    u_x = rot[0, 0] * ux + rot[1, 0] * uy  # body frame
-    u_y = rot[0, 1] * ux + rot[1, 1] * uy
-    wx = rot[0, 0] * svel[0] + rot[1, 0] * svel[1]
-    wy = rot[0, 1] * svel[0] + rot[1, 1] * svel[1]
+    u_x, u_y = body_horizontal(rot, ux, uy)
+    wx, wy = body_horizontal(rot, svel[0], svel[1])
     return (px - lever * u_x, py - lever * u_y, px, py, wx, wy, lever)
 
 

@@ -190,7 +190,7 @@ def model_centre(model, base, rot, omega, stored, start, floor, s, u):
     cx, cy, settled = model_newton(args, px, py)
     if settled:
         return cx, cy, True
-    r_x, r_y = _body_horizontal(rot, stored[start], stored[start + 1])
+    r_x, r_y = body_horizontal(rot, stored[start], stored[start + 1])
     cx, cy, settled = model_newton(args, ax + lever * r_x, ay + lever * r_y)
     if settled:
         return cx, cy, True
@@ -198,7 +198,7 @@ def model_centre(model, base, rot, omega, stored, start, floor, s, u):
 
 
 @nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
-def _body_horizontal(rot, x, y):
+def body_horizontal(rot, x, y):
     """A world horizontal vector's body-frame (x, y), the body turned about the vertical."""
     return rot[0, 0] * x + rot[1, 0] * y, rot[0, 1] * x + rot[1, 1] * y
 
@@ -219,7 +219,7 @@ def pulled_twisting_centre(model, base, rot, omega, stored, start, beta):
     """
     ax, ay, px, py, wx, wy, lever = model
     box, half_x, half_y, rho_face, rho_floor = base
-    r_x, r_y = _body_horizontal(rot, stored[start], stored[start + 1])
+    r_x, r_y = body_horizontal(rot, stored[start], stored[start + 1])
     # the slip velocity at a: w(p) + omega e_z x (a - p)
     w_x = wx - omega * (ay - py) + beta * r_x
     w_y = wy + omega * (ax - px) + beta * r_y
@@ -295,7 +295,7 @@ def model_map(args, cx, cy):
     ax, ay, px, py, wx, wy, lever = model
     _slip_at(args, cx, cy)
     pulled_unit(s, 3, stored, start, floor, u)
-    u_x, u_y = _body_horizontal(rot, u[0], u[1])
+    u_x, u_y = body_horizontal(rot, u[0], u[1])
     return ax + lever * u_x, ay + lever * u_y
 
 
