@@ -81,7 +81,7 @@ import numba as nb
 import numpy as np
 
 from freestand.core.body import Body, Box
-from freestand.core.contact.engine import solve_in_place
+from freestand.core.contact.engine import solve_in_place, solve_symmetric_in_place
 from freestand.core.contact.face_friction import (
     CENTRE_TOLERANCE,
     body_horizontal,
@@ -141,6 +141,7 @@ PIVOT_LEAN = 1e-6  # sin(tilt) below which a rocking cylinder keeps its rim poin
 RHO_FLOOR = 1e-9  # smallest twist radius of a FACE or EDGE, relative to the base's half-width [-]
 CENTRE_ITERATIONS = 12  # most solves of a sliding FACE or EDGE to settle its friction centre
 CENTRE_ROUNDOFF = 1e-9  # or a FACE's move below this that no longer shrinks (the solve's round-off)
+CRAMER_CONDITION = 1e-8  # |det| / Hadamard's bound above which solve_small uses Cramer's rule
 EDGE_ITERATIONS = 60  # most trial centres of a sliding EDGE (each a 2 x 2 system, edge_share)
 
 
@@ -654,15 +655,9 @@ def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, ac
         twist = col[5] + (torques[j] if face_slide else 0.0)
         for i in range(3):
             out[3 + i] = inv[i, 0] * col[3] + inv[i, 1] * col[4] + inv[i, 2] * twist
-    for r in range(held):
-        for j in range(held):
-            entry = 0.0
-            for i in range(6):
-                entry += work[r, i] * work[7 + j, i]
-            matrix[r, j] = entry
-    minv = base
-    if held > 0 and not solve_in_place(matrix, rhs, held):
+    if held > 0 and not _solve_held(work, matrix, rhs, held, slip == 0):
         return False
+    minv = base
     for i in range(6):
         acc[i] = minv[i]
     for j in range(held):
@@ -674,6 +669,85 @@ def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, ac
         for k in range(n_tangent):
             lam[n_normal + k] = -mu * total * direction[k]
     return True
+
+
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _solve_held(work, matrix, rhs, held, symmetric):
+    """The held rows' system ``(w_r . M^-1 g_j) x = rhs`` solved in place; False if singular.
+
+    ``work[r]`` holds row r, ``work[7 + j]`` M^-1 times multiplier j's
+    generalised force (:func:`solve_mode`). Symmetric (no sliding patch:
+    ``g_j = w_j``) and larger than 3 x 3 (a sticking EDGE or FACE): its
+    lower triangle by ``L D L^T``
+    (:func:`freestand.core.contact.engine.solve_symmetric_in_place`), as the
+    planar engine's held modes; where that finds it not positive definite,
+    and otherwise, the whole matrix by :func:`solve_small`.
+    """
+    if symmetric and held > 3:
+        for r in range(held):
+            for j in range(r + 1):
+                entry = 0.0
+                for i in range(6):
+                    entry += work[r, i] * work[7 + j, i]
+                matrix[r, j] = entry
+        if solve_symmetric_in_place(matrix, rhs, held):
+            return True
+    for r in range(held):
+        for j in range(held):
+            entry = 0.0
+            for i in range(6):
+                entry += work[r, i] * work[7 + j, i]
+            matrix[r, j] = entry
+    return solve_small(matrix, rhs, held)
+
+
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+def solve_small(matrix, rhs, k):
+    """Solve the leading k x k system ``matrix x = rhs`` in place (x in ``rhs``); False if singular.
+
+    Up to three unknowns (a POINT's, an EDGE's normal rows, a FACE's, a
+    sliding patch's) by Cramer's rule, ``x_i = det(A_i) / det(A)`` with the
+    cofactors of A, where ``|det(A)|`` is at least ``CRAMER_CONDITION``
+    times Hadamard's bound, the product of the rows' lengths (the rows are
+    far from dependent: the closed form's error is then round-off times a
+    moderate condition number); otherwise, and for larger systems, Gaussian
+    elimination with partial pivoting
+    (:func:`freestand.core.contact.engine.solve_in_place`, which the planar
+    engine shares). A 3 x 3 system took half of a solve's arithmetic in the
+    pivoting loop. ``matrix`` is overwritten only by the elimination.
+    """
+    if k == 1:
+        if matrix[0, 0] == 0.0:
+            return False
+        rhs[0] /= matrix[0, 0]
+        return True
+    if k == 2:
+        a, b, c, d = matrix[0, 0], matrix[0, 1], matrix[1, 0], matrix[1, 1]
+        det = a * d - b * c
+        if abs(det) > CRAMER_CONDITION * math.hypot(a, b) * math.hypot(c, d):
+            x0 = (d * rhs[0] - b * rhs[1]) / det
+            rhs[1] = (a * rhs[1] - c * rhs[0]) / det
+            rhs[0] = x0
+            return True
+    elif k == 3:
+        a00, a01, a02 = matrix[0, 0], matrix[0, 1], matrix[0, 2]
+        a10, a11, a12 = matrix[1, 0], matrix[1, 1], matrix[1, 2]
+        a20, a21, a22 = matrix[2, 0], matrix[2, 1], matrix[2, 2]
+        c00 = a11 * a22 - a12 * a21
+        c01 = a12 * a20 - a10 * a22
+        c02 = a10 * a21 - a11 * a20
+        det = a00 * c00 + a01 * c01 + a02 * c02
+        bound = (math.sqrt(a00 * a00 + a01 * a01 + a02 * a02)
+                 * math.sqrt(a10 * a10 + a11 * a11 + a12 * a12)
+                 * math.sqrt(a20 * a20 + a21 * a21 + a22 * a22))  # fmt: skip
+        if abs(det) > CRAMER_CONDITION * bound:
+            b0, b1, b2 = rhs[0], rhs[1], rhs[2]
+            # x = adj(A) b / det, adj(A) the transposed cofactors
+            rhs[0] = (c00 * b0 + (a02 * a21 - a01 * a22) * b1 + (a01 * a12 - a02 * a11) * b2) / det
+            rhs[1] = (c01 * b0 + (a00 * a22 - a02 * a20) * b1 + (a02 * a10 - a00 * a12) * b2) / det
+            rhs[2] = (c02 * b0 + (a01 * a20 - a00 * a21) * b1 + (a00 * a11 - a01 * a10) * b2) / det
+            return True
+    return solve_in_place(matrix, rhs, k)
 
 
 @nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)

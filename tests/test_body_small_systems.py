@@ -1,0 +1,84 @@
+"""The 3-D kernel's small linear systems: Cramer's rule up to 3 x 3, elimination beyond (#18).
+
+``solve_small`` must give what Gaussian elimination with partial pivoting
+gives, to round-off, on any system it may meet, fall back to the
+elimination where the rows are nearly dependent, and say so where the
+system is singular. ``_solve_held`` solves a sticking patch's symmetric
+system by ``L D L^T`` and must agree too.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from freestand.core.contact import body_kernel as bk
+
+
+def _solved(matrix, rhs, eliminated=None):
+    """(ok, x) of ``solve_small`` on copies of the leading block; ``eliminated``: assert
+    whether the elimination ran (it overwrites the matrix, Cramer's rule does not)."""
+    k = rhs.size
+    m = np.zeros((6, 6))
+    m[:k, :k] = matrix
+    b = np.zeros(6)
+    b[:k] = rhs
+    ok = bk.solve_small(m, b, k)
+    if eliminated is not None:
+        assert (not np.array_equal(m[:k, :k], matrix)) is eliminated
+    return ok, b[:k]
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.integers(1, 6), st.integers(0, 2**32 - 1), st.floats(-6.0, 6.0))
+def test_small_systems_are_solved_as_by_elimination(k, seed, scale_exponent):
+    rng = np.random.default_rng(seed)
+    matrix = rng.normal(size=(k, k)) * 10.0**scale_exponent + np.eye(k) * 10.0**scale_exponent
+    rhs = rng.normal(size=k)
+    ok, x = _solved(matrix, rhs)
+    assert ok
+    # tolerance: the residual of a backward-stable solve, eps times the condition number
+    condition = np.linalg.cond(matrix)
+    expected = np.linalg.solve(matrix, rhs)
+    np.testing.assert_allclose(x, expected, rtol=1e-13 * condition, atol=1e-13 * condition
+                               * np.max(np.abs(expected)))  # fmt: skip
+
+
+@pytest.mark.parametrize("k", [2, 3])
+def test_nearly_dependent_rows_fall_back_to_elimination(k):
+    # rows dependent to 1e-12 (below the 1e-8 of Hadamard's bound): pivoting, not Cramer
+    matrix = np.ones((k, k)) + np.diag(np.full(k, 1e-12))
+    matrix[0, 0] += 1e-12
+    rhs = np.arange(1.0, k + 1.0)
+    ok, x = _solved(matrix, rhs, eliminated=True)
+    assert ok
+    # tolerance: pivoting's residual, eps |A| |x| with |x| ~ 1e12
+    np.testing.assert_allclose(matrix @ x, rhs, rtol=0.0, atol=1e-3)
+    # well-conditioned, the closed form
+    _solved(np.eye(k) + 0.1, rhs, eliminated=False)
+
+
+@pytest.mark.parametrize("k", [1, 2, 3, 5])
+def test_singular_systems_are_refused(k):
+    ok, _ = _solved(np.zeros((k, k)), np.ones(k))
+    assert not ok
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.integers(1, 6), st.integers(0, 2**32 - 1), st.booleans())
+def test_held_rows_are_solved_alike_whether_symmetric_or_not(held, seed, symmetric):
+    # the kernel's layout: rows in work[0:held], M^-1 times them in work[7 + j]
+    rng = np.random.default_rng(seed)
+    rows = rng.normal(size=(held, 6))
+    weights = np.diag(rng.uniform(0.1, 2.0, size=6))
+    work = np.zeros((14, 6))
+    work[:held] = rows
+    work[7 : 7 + held] = rows @ weights  # M^-1 diagonal: W = rows M^-1 rows^T, symmetric
+    rhs = rng.normal(size=6)
+    matrix = np.zeros((6, 6))
+    b = rhs.copy()
+    assert bk._solve_held(work, matrix, b, held, symmetric)
+    delassus = rows @ weights @ rows.T
+    np.testing.assert_allclose(delassus @ b[:held], rhs[:held], rtol=1e-9, atol=1e-9)
