@@ -7,7 +7,9 @@ centre (the stored one is what the reference replaces), and must give what
 the two solves gave: the same event functions and the same accelerations,
 to round-off; so must a step's end left unprojected, whose solve the next
 start reuses. A sliding flat base is not projected while its held rows
-have drifted by round-off only (``drifted``).
+have drifted by round-off only, a rocking or rolling one while they drift
+by less than a thousandth of the contact tolerances (``drifted``); a
+sticking or rolling step's end left unprojected is its next start.
 """
 
 from __future__ import annotations
@@ -24,9 +26,11 @@ from freestand.core.contact import body_kernel as bk
 from freestand.core.dynamics import body_engine as engine
 from freestand.core.dynamics import body_step as step
 from freestand.core.dynamics.body_history import initial_state
+from freestand.core.dynamics.results import ContactTolerances
 from freestand.core.model import Friction
 
 G = 9.81
+TOL = ContactTolerances()
 BODIES = (
     Body("box", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.4, 0.3), centre=(0.05, -0.02, 0.9)),
     Body("cylinder", Cylinder(0.8, 2.5), 5000.0, Friction(0.4, 0.3)),
@@ -104,14 +108,112 @@ def test_a_sliding_flat_base_is_projected_only_past_round_off(body):
     sc = bk.new_scratch()
     sliding = np.array([bk.FACE, 0, 1], dtype=np.int64)
     flat = _sliding(body, 0.3, 0.4, 0.1)
-    assert not engine.drifted(par, flat, sliding, sc)
-    assert engine.drifted(par, _sliding(body, 0.3, 0.4, 0.1, tilt=1e-9), sliding, sc)
+    gates = (TOL.gap, TOL.velocity)
+    assert not engine.drifted(par, flat, sliding, sc, *gates)
+    assert engine.drifted(par, _sliding(body, 0.3, 0.4, 0.1, tilt=1e-9), sliding, sc, *gates)
     rising = flat.copy()
     rising[9] = 1e-9  # [m/s]
-    assert engine.drifted(par, rising, sliding, sc)
+    assert engine.drifted(par, rising, sliding, sc, *gates)
     sunk = flat.copy()
     sunk[2] -= 1e-9  # [m]
-    assert engine.drifted(par, sunk, sliding, sc)
-    # other modes are always projected: their rows drift with the step's truncation error
-    assert engine.drifted(par, flat, np.array([bk.FACE, 0, 0], dtype=np.int64), sc)
-    assert engine.drifted(par, flat, np.array([bk.EDGE, 0, 1], dtype=np.int64), sc)
+    assert engine.drifted(par, sunk, sliding, sc, *gates)
+    # a sticking flat base that moves is always projected
+    assert engine.drifted(par, flat, np.array([bk.FACE, 0, 0], dtype=np.int64), sc, *gates)
+
+
+def _pivoting(body, tilt, omega, edge):
+    """A body on its base edge 0 (box, ``edge``) or lowest rim point (cylinder), the
+    material point(s) there still: (state, mode, data). ``omega`` [rad/s]: about the edge
+    (box), or any (cylinder)."""
+    if edge:  # tilted about the x axis, the corners 0 and 1 (+b_y) lift: on the edge 2 to 3
+        y = initial_state(body, (tilt, 0.0))
+        omega = (omega[0], 0.0, 0.0)
+        mode = np.array([bk.EDGE, 2, 0], dtype=np.int64)
+    else:
+        y = initial_state(body, (tilt * math.cos(omega[2]), tilt * math.sin(omega[2])))
+        mode = np.array([bk.POINT, 0, 0], dtype=np.int64)
+    par = bk.body_parameters(body, G)
+    rot = np.empty((3, 3))
+    bk.rotation_matrix(y, rot)
+    data = np.zeros(bk.DATA_SIZE)
+    d = np.empty(3)
+    if edge:
+        bk.corner_gap(par, y, rot, 2, d)
+    else:
+        data[bk.D_PSI] = bk.lowest_rim_angle(rot, 0.0)
+        radius = body.shape.radius
+        bk.arm(par, rot, radius * math.cos(data[bk.D_PSI]), radius * math.sin(data[bk.D_PSI]),
+               0.0, d)  # fmt: skip
+    y[2] = -d[2]  # on the support (initial_state finds the lowest rim point to 1e-10 m)
+    y[10:13] = omega
+    y[7:10] = -np.cross(omega, d)  # the pivot's material point is still
+    return y, mode, data
+
+
+def _solve_end(body, y, mode, data, record):
+    """(parameters, scratch): the held mode solved at (0, y), as at a step's end."""
+    par = bk.body_parameters(body, G)
+    sc = bk.new_scratch()
+    step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, np.zeros(5),
+                         np.zeros(step.MAX_EVENT_FUNCTIONS),
+                         np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64))  # fmt: skip
+    return par, sc
+
+
+@pytest.mark.parametrize("edge", [True, False], ids=["box on an edge", "cylinder on its rim"])
+def test_a_rocking_or_rolling_body_is_projected_only_past_its_drift_gate(edge):
+    body = BODIES[0] if edge else BODIES[1]
+    y, mode, data = _pivoting(body, 0.05, (0.4, -0.3, 0.7), edge)
+    record = np.zeros((3, 2))
+    par, sc = _solve_end(body, y, mode, data, record)
+    gates = (TOL.gap, TOL.velocity)
+    assert not engine.drifted(par, y, mode, sc, *gates)
+    # a gap or a held row's velocity past a thousandth of its tolerance is projected
+    for index, size in ((2, TOL.gap), (9, TOL.velocity), (7, TOL.velocity), (8, TOL.velocity)):
+        for fraction, projected in ((0.5e-3, False), (2e-3, True)):
+            moved = y.copy()
+            moved[index] += fraction * size
+            assert engine.drifted(par, moved, mode, sc, *gates) is projected, (index, fraction)
+    # sliding, the tangential rows are not held: their velocity is the slip
+    sliding = mode.copy()
+    sliding[bk.M_SLIP] = 1
+    moved = y.copy()
+    moved[7] += 0.1
+    assert not engine.drifted(par, moved, sliding, sc, *gates)
+    # a FREE body holds no row
+    free = np.array([bk.FREE, 0, 0], dtype=np.int64)
+    assert not engine.drifted(par, moved, free, sc, *gates)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.booleans(), st.floats(0.01, 0.5), st.floats(-2.0, 2.0), st.floats(-2.0, 2.0),
+    st.floats(-math.pi, math.pi), st.floats(-4.0, 4.0), st.floats(-4.0, 4.0), st.booleans(),
+)  # fmt: skip
+def test_a_sticking_step_end_left_unprojected_is_its_next_start(edge, tilt, w0, w1, w2, ax, ay,
+                                                                 flipped):  # fmt: skip
+    # the start at a step's end whose solve the scratch holds gives what a fresh start gives;
+    # ``flipped``: a rolling cylinder's stored rim angle on the other side (its pivot past a
+    # landing is the highest rim point): the start's pivot is the lowest, solved again
+    body = BODIES[0] if edge else BODIES[1]
+    y, mode, data = _pivoting(body, tilt, (w0, w1, w2), edge)
+    if flipped and not edge:
+        data[bk.D_PSI] += math.pi
+    record = np.array([[ax, ax], [ay, ay], [0.0, 0.0]])
+    results = []
+    for solved in (False, True):
+        work = data.copy()
+        par, sc = _solve_end(body, y, mode, work, record) if solved else (
+            bk.body_parameters(body, G), bk.new_scratch())  # fmt: skip
+        ref = np.zeros(5)
+        values = np.zeros(step.MAX_EVENT_FUNCTIONS)
+        kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
+        count = step.start_functions(par, record, 1.0, 0.0, y, mode, work, sc, ref, values,
+                                     kinds, solved)  # fmt: skip
+        results.append((values[:count].copy(), sc[bk.SC_ACC].copy(), ref.copy(), work.copy()))
+    (v0, a0, r0, d0), (v1, a1, r1, d1) = results
+    # the same solve at the same state: equal to round-off
+    np.testing.assert_allclose(v1, v0, rtol=1e-12, atol=1e-9 * body.mass * G)
+    np.testing.assert_allclose(a1, a0, rtol=1e-12, atol=1e-12)
+    np.testing.assert_array_equal(r1, r0)
+    np.testing.assert_array_equal(d1, d0)

@@ -50,6 +50,7 @@ from freestand.core.contact.body_kernel import (
     friction_margin,
     lowest_rim_angle,
     normal_margin,
+    pivot_direction,
     rate,
     rotation_matrix,
     row_acceleration,
@@ -157,7 +158,9 @@ def references(par, record, dt, t, y, mode, data, sc, ref, solved=False):
     step's end left unprojected,
     :func:`~freestand.core.dynamics.body_engine.drifted`, whose event
     functions left the slip velocity in the scratch), and it is not solved
-    again.
+    again; a sticking mode's rows are then returned too, unless a rolling
+    cylinder's pivot, moved to the lowest rim point, is not the one solved
+    for (the lowest point's opposite, past a landing).
     """
     rot = sc[SC_ROT]
     rotation_matrix(y, rot)
@@ -165,8 +168,11 @@ def references(par, record, dt, t, y, mode, data, sc, ref, solved=False):
         ref[i] = 0.0
     if mode[M_KIND] == POINT and par[P_SHAPE] != SHAPE_BOX:
         # the step's pivot: the lowest rim point (kept on its side within the step)
+        held_cos, held_sin = pivot_direction(par, rot, POINT, data[D_PSI], sc)  # the solve's
         psi = lowest_rim_angle(rot, data[D_PSI])
         data[D_PSI] = psi
+        cos_psi, sin_psi = pivot_direction(par, rot, POINT, psi, sc)
+        solved = solved and cos_psi == held_cos and sin_psi == held_sin
         probe = sc[SC_PROBE]
         d, c = probe[0], probe[1]
         radius = par[P_HALF_X]
@@ -179,7 +185,7 @@ def references(par, record, dt, t, y, mode, data, sc, ref, solved=False):
         ref[3] = px / size
         ref[4] = py / size
     if mode[M_SLIP] == 0:
-        return 0, -1
+        return row_counts(mode[M_KIND]) if solved else (0, -1)
     if solved:
         n_normal, n_tangent = row_counts(mode[M_KIND])
         size = _size(sc[SC_SVEL], n_tangent)
