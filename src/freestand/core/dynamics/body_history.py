@@ -28,6 +28,7 @@ from freestand.core.contact.body_kernel import (
 from freestand.core.dynamics import body_engine as engine
 from freestand.core.dynamics.results import ContactTolerances
 from freestand.core.dynamics.single_block import UPLIFT_GAP_FRACTION
+from freestand.core.dynamics.timehistory import record_breaks
 from freestand.errors import FreestandError
 
 GRAVITY = 9.81
@@ -211,30 +212,6 @@ def default_body_step(body: Body, gravity: float = GRAVITY) -> float:
     return min(0.05 / largest, 0.02)
 
 
-def _breaks(motion: SupportMotion3) -> np.ndarray:
-    return _kinks(np.ascontiguousarray(motion.array(), dtype=float), float(motion.time_step))
-
-
-@nb.njit(cache=True, error_model="numpy")
-def _kinks(values, dt):
-    """Times [s] of the samples where a component's slope changes, and of the last one.
-
-    A change above 1e-12 of the component's largest magnitude (a straight
-    run of samples is no break: a step may cross it).
-    """
-    count = values.shape[1]
-    kinks = np.zeros(count, dtype=np.bool_)
-    for row in values:
-        scale = 1e-300
-        for i in range(count):
-            scale = max(scale, abs(row[i]))
-        for i in range(1, count - 1):
-            if abs(row[i + 1] - 2.0 * row[i] + row[i - 1]) > 1e-12 * scale:
-                kinks[i] = True
-    kinks[count - 1] = True
-    return np.flatnonzero(kinks) * dt
-
-
 def initial_state(body: Body, initial_tilt: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
     """The state at rest on the support, optionally tilted (rotation vector (x, y) [rad]) about
     the base point that stays on the support: the base edge / rim point on the tilt's side."""
@@ -320,7 +297,7 @@ def simulate_body(
         )
     par = body_parameters(body, gravity, float(restitution))
     record = np.ascontiguousarray(motion.array())
-    breaks = _breaks(motion)
+    breaks = record_breaks(motion.time_step, motion.x, motion.y, motion.vertical)
     y = initial_state(body) if initial is None else np.array(initial, dtype=float)
     mode = np.zeros(3, dtype=np.int64)
     data = np.zeros(DATA_SIZE)
@@ -558,6 +535,7 @@ def _result(
         if t <= last
     )
     overturned = not message and istate[engine.I_STATUS] == engine.STATUS_OVERTURNED
+    peaks = _peaks(tilt, slide, twist, highest, modes)
     return BodyTimeHistory(
         body=body.name,
         status="failed" if message else "overturned" if overturned else "completed",
@@ -571,11 +549,11 @@ def _result(
         slide=slide,
         twist=twist,
         events=event_list,
-        max_rotation=float(np.max(tilt)),
-        max_slide=float(np.max(np.hypot(slide[:, 0], slide[:, 1]))),
-        max_twist=float(np.max(np.abs(twist))),
-        uplift=bool(np.max(highest) > UPLIFT_GAP_FRACTION * width),
-        free_flight=bool(np.any(modes[:, 0] == FREE)),
+        max_rotation=peaks[0],
+        max_slide=peaks[1],
+        max_twist=peaks[2],
+        uplift=bool(peaks[3] > UPLIFT_GAP_FRACTION * width),
+        free_flight=bool(peaks[4]),
         overturned=bool(overturned),
         overturn_time=float(time[-1]) if overturned else None,
         diagnostics={
@@ -588,6 +566,21 @@ def _result(
         },
         message=message,
     )
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _peaks(tilt, slide, twist, highest, modes):
+    """(largest tilt [rad], slide [m], |twist| [rad], highest base point [m], 1.0 if a row
+    is FREE else 0.0) over the rows, in one pass (the result's peaks)."""
+    top_tilt, top_slide, top_twist, top_high, free = 0.0, 0.0, 0.0, -math.inf, 0.0
+    for i in range(tilt.shape[0]):
+        top_tilt = max(top_tilt, tilt[i])
+        top_slide = max(top_slide, math.hypot(slide[i, 0], slide[i, 1]))
+        top_twist = max(top_twist, abs(twist[i]))
+        top_high = max(top_high, highest[i])
+        if modes[i, 0] == FREE:
+            free = 1.0
+    return top_tilt, top_slide, top_twist, top_high, free
 
 
 def rotation_matrices(quaternions: np.ndarray) -> np.ndarray:

@@ -787,18 +787,19 @@ def default_step(stack: Stack, gravity: float = GRAVITY) -> float:
     return min(0.05 / largest, 0.02) if largest > 0.0 else 0.02
 
 
-def record_breaks(time_step: float, horizontal: np.ndarray, vertical: np.ndarray) -> np.ndarray:
+def record_breaks(time_step: float, *components: np.ndarray) -> np.ndarray:
     """Times [s] at which the piecewise-linear record changes slope, and its end.
 
-    A sample is a break point when the second difference of either component
-    is not zero (beyond 1e-12 of the component's peak). Steps end there, so
-    that RK4 never steps across a kink: sliding under a piecewise-linear record
-    is then integrated exactly, and a record resampled finely from a coarser
-    one costs no more steps than the coarse one.
+    A sample is a break point when the second difference of any component
+    (horizontal and vertical; x, y and vertical in 3-D) is not zero (beyond
+    1e-12 of the component's peak). Steps end there, so that RK4 never steps
+    across a kink: sliding under a piecewise-linear record is then integrated
+    exactly, and a record resampled finely from a coarser one costs no more
+    steps than the coarse one.
     """
-    count = horizontal.size
+    count = components[0].size
     kinks = np.zeros(count, dtype=bool)
-    for values in (horizontal, vertical):
+    for values in components:
         scale = max(float(np.max(np.abs(values), initial=0.0)), 1e-300)
         second = np.abs(values[2:] - 2.0 * values[1:-1] + values[:-2])
         kinks[1:-1] |= second > 1e-12 * scale
