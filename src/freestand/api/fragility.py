@@ -404,7 +404,7 @@ def fragility(
     A 3-D body: the cabinet of ``examples/bodies.toml`` under a record with x
     and y, scaled by its PGA RotD50 (the default IM of a 3-D configuration),
     at four incidence angles every 90 deg (it lifts from 4 m/s^2 and twists
-    by 0.7 to 1 deg there, by more than 5 deg at 6 m/s^2):
+    by 0.5 to 1.5 deg there, by more than 5 deg at 6 m/s^2):
 
     >>> bodies = fs.load_model("examples/bodies.toml")
     >>> record = fs.load_record("examples/records/synthetic_H.AT2",
