@@ -81,7 +81,11 @@ import numba as nb
 import numpy as np
 
 from freestand.core.body import Body, Box
-from freestand.core.contact.engine import solve_in_place, solve_symmetric_in_place
+from freestand.core.contact.engine import (
+    held_products,
+    solve_in_place,
+    solve_symmetric_in_place,
+)
 from freestand.core.contact.face_friction import (
     CENTRE_TOLERANCE,
     body_horizontal,
@@ -683,21 +687,12 @@ def _solve_held(work, matrix, rhs, held, symmetric):
     planar engine's held modes; where that finds it not positive definite,
     and otherwise, the whole matrix by :func:`solve_small`.
     """
+    rows, forces = work[:held], work[7 : 7 + held]
     if symmetric and held > 3:
-        for r in range(held):
-            for j in range(r + 1):
-                entry = 0.0
-                for i in range(6):
-                    entry += work[r, i] * work[7 + j, i]
-                matrix[r, j] = entry
+        held_products(rows, forces, matrix, held, 0, 6, True)
         if solve_symmetric_in_place(matrix, rhs, held):
             return True
-    for r in range(held):
-        for j in range(held):
-            entry = 0.0
-            for i in range(6):
-                entry += work[r, i] * work[7 + j, i]
-            matrix[r, j] = entry
+    held_products(rows, forces, matrix, held, 0, 6, False)
     return solve_small(matrix, rhs, held)
 
 

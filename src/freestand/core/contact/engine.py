@@ -126,6 +126,22 @@ def solve_in_place(matrix, rhs, k):
 
 
 @nb.njit(cache=True, inline="always")
+def held_products(rows, forces, matrix, k, c0, n, lower):
+    """``matrix[r, j] = rows[r] . forces[j]`` over the columns c0..n-1, for r, j < k.
+
+    The held mode's matrix ``J_r M^-1 G_j^T`` of a contact problem (``forces``
+    holding ``M^-1 G_j^T``); ``lower``: only its lower triangle (j <= r), for
+    :func:`solve_symmetric_in_place`.
+    """
+    for r in range(k):
+        for j in range(r + 1 if lower else k):
+            total = 0.0
+            for col in range(c0, n):
+                total += rows[r, col] * forces[j, col]
+            matrix[r, j] = total
+
+
+@nb.njit(cache=True, inline="always")
 def solve_symmetric_in_place(matrix, rhs, k):
     """Solve ``matrix x = rhs`` for a symmetric positive definite leading k x k block.
 

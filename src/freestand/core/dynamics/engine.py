@@ -67,6 +67,7 @@ from freestand.core.contact.engine import (  # noqa: F401  (re-exported for the 
     contact_accelerations,
     contact_work,
     delassus,
+    held_products,
     solve_contact_problem,
     solve_contact_states,
     solve_in_place,
@@ -2498,20 +2499,10 @@ def _solve_held(row_j, force_g, matrix, rhs, k, c0, n, symmetric):
     Gaussian elimination with partial pivoting. False when singular.
     """
     if symmetric:
-        for r in range(k):
-            for j in range(r + 1):
-                total = 0.0
-                for col in range(c0, n):
-                    total += row_j[r, col] * force_g[j, col]
-                matrix[r, j] = total
+        held_products(row_j, force_g, matrix, k, c0, n, True)
         if solve_symmetric_in_place(matrix, rhs, k):
             return True
-    for r in range(k):
-        for j in range(k):
-            total = 0.0
-            for col in range(c0, n):
-                total += row_j[r, col] * force_g[j, col]
-            matrix[r, j] = total
+    held_products(row_j, force_g, matrix, k, c0, n, False)
     return solve_in_place(matrix, rhs, k)
 
 
