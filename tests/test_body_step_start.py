@@ -104,10 +104,11 @@ def test_a_slip_turned_against_the_stored_direction_is_solved_again():
 
 @pytest.mark.parametrize("body", BODIES, ids=lambda b: b.name)
 def test_a_sliding_flat_base_is_projected_only_past_round_off(body):
-    par = bk.body_parameters(body, G)
-    sc = bk.new_scratch()
     sliding = np.array([bk.FACE, 0, 1], dtype=np.int64)
     flat = _sliding(body, 0.3, 0.4, 0.1)
+    data = np.zeros(bk.DATA_SIZE)
+    data[bk.D_SLIP] = 1.0
+    par, sc = _solve_end(body, flat, sliding, data, np.zeros((3, 2)))  # as at a step's end
     gates = (TOL.gap, TOL.velocity)
     assert not engine.drifted(par, flat, sliding, sc, *gates)
     assert engine.drifted(par, _sliding(body, 0.3, 0.4, 0.1, tilt=1e-9), sliding, sc, *gates)

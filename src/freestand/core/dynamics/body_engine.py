@@ -295,18 +295,15 @@ def drifted(par, y, mode, sc, gap_tol, velocity_tol):
     kind = mode[M_KIND]
     if kind == FREE:
         return False
+    arms = sc[SC_ARMS]  # the held points' arms at (t, y); a FACE's first is its base centre
     if kind == FACE:
         if mode[M_SLIP] != 1:
             return True
         if max(abs(y[4]), abs(y[5]), abs(y[9]), abs(y[10]), abs(y[11])) > FLAT_ROUND_OFF:
             return True
-        rot = sc[SC_ROT]
-        rotation_matrix(y, rot)
-        d = sc[SC_PROBE][0]
-        arm(par, rot, 0.0, 0.0, 0.0, d)
-        return abs(y[2] + d[2]) > FLAT_ROUND_OFF
+        return abs(y[2] + arms[0, 2]) > FLAT_ROUND_OFF
     n_normal, n_tangent = row_counts(kind)
-    arms, speeds = sc[SC_ARMS], sc[SC_PROBE][1]
+    speeds = sc[SC_PROBE][1]
     for r in range(n_normal):
         if abs(y[2] + arms[r, 2]) > DRIFT_FRACTION * gap_tol:
             return True
