@@ -67,3 +67,33 @@ def crane_report(crane_model):
 
     content = collect_report(crane_model, date=datetime.date(2024, 5, 31))
     return content, render_html(content)
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_sessionstart(session):
+    """On several workers, compile the engines once, before the workers start.
+
+    Every worker would otherwise compile the same numba functions into the same
+    on-disk cache, side by side (the 3-D engine takes about three minutes): two
+    processes, one per engine family, compile them first (``tests/compile_engines.py``),
+    and the workers load them. A failure here is only reported: the tests that use the
+    engine then show it.
+    """
+    config = session.config
+    workers = getattr(config.option, "numprocesses", None) or 0
+    if hasattr(config, "workerinput") or not isinstance(workers, int) or workers < 2:
+        return
+    script = Path(__file__).with_name("compile_engines.py")
+    runs = [
+        subprocess.Popen(
+            [sys.executable, str(script), part],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+        )
+        for part in ("body", "planar")
+    ]
+    for part, run in zip(("body", "planar"), runs, strict=True):
+        output, _ = run.communicate()
+        if run.returncode != 0:
+            sys.stderr.write(f"compiling the {part} engines first failed:\n{output}\n")
