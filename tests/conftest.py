@@ -79,9 +79,9 @@ def pytest_sessionstart(session):
     Every worker would otherwise compile the same numba functions into the same
     on-disk cache, side by side (the 3-D engine takes about three minutes): two
     processes, one per engine family, compile them first (``tests/compile_engines.py``),
-    and the workers load them: on a fresh clone ``make test`` took 745-782 s, and 452 s
-    with this. Once the cache is warm this takes seconds. A failure here is only
-    reported: the tests that use the engine then show it.
+    and the workers load them. Once the cache is warm this takes seconds. A failure
+    here is only reported: the tests that use the engine then show it. (pytest's own
+    time of the session starts after this hook: it leaves the compilation out.)
     """
     config = session.config
     workers = getattr(config.option, "numprocesses", None) or 0

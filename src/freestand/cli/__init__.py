@@ -122,13 +122,16 @@ def main(argv: list[str] | None = None) -> int:
 
     import numpy as np
 
+    from freestand.cli.common import compile_notice
+
     args = list(sys.argv[1:] if argv is None else argv)
     try:
         with warnings.catch_warnings(), np.errstate(all="ignore"):
             # numerical warnings (overflow in a record of absurd values...) are not
             # for the user: the inputs are checked, and the results carry a status
             warnings.simplefilter("ignore", RuntimeWarning)
-            result = app(args=args, prog_name="freestand", standalone_mode=False)
+            with compile_notice():
+                result = app(args=args, prog_name="freestand", standalone_mode=False)
     except FreestandError as error:
         _print_error(str(error))
         return 2

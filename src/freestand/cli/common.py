@@ -41,6 +41,37 @@ def warn(message: str) -> None:
     error_console().print(f"[bold yellow]warning:[/] {escape(message)}")
 
 
+COMPILE_NOTICE = (
+    "compiling freestand's engines for this machine: the first run of an analysis takes "
+    "minutes (the 3-D engine about three), later runs load them from numba's cache"
+)
+
+
+@contextlib.contextmanager
+def compile_notice() -> Iterator[None]:
+    """Say once on stderr when numba compiles an engine (its first run on this machine).
+
+    The engines are compiled on first use and cached on disk: without a word the
+    first 3-D run would sit at 0 % for some three minutes. numba's event API
+    reports a compilation (``numba:compile``), not a load from its cache.
+    """
+    from numba.core import event
+
+    class _Notice(event.Listener):
+        said = False
+
+        def on_start(self, _event) -> None:
+            if not self.said:
+                self.said = True
+                error_console().print(escape(COMPILE_NOTICE) + " ...")
+
+        def on_end(self, _event) -> None:
+            pass
+
+    with event.install_listener("numba:compile", _Notice()):
+        yield
+
+
 def load(path: Path) -> ModelFile:
     """Load a model file and warn on stderr about what it allows but should not."""
     model = load_model(path)
