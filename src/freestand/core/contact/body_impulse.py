@@ -46,7 +46,6 @@ from __future__ import annotations
 
 import math
 
-import numba as nb
 import numpy as np
 
 from freestand.core.contact.alart_curnier import largest_tangential_eigenvalue, solve_alart_curnier
@@ -60,6 +59,7 @@ from freestand.core.contact.body_kernel import (
     cross,
     lowest_rim_angle,
 )
+from freestand.core.contact.compiled import kernel
 from freestand.core.contact.vectors import norm2
 
 MAX_POINTS = 8
@@ -75,7 +75,7 @@ ENDED_CONVERGED, ENDED_POLISHED, ENDED_EXHAUSTED = 0, 1, 2  # how point_impulses
 POLISH_TOLERANCE = 1e-10  # the polish's laws, relative to the speed (and to m times it)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def base_points(par, y, rot, psi_stored, gap_limit, arms):
     """The base points within ``gap_limit`` [m] of the support: their arms from G in ``arms``.
 
@@ -105,7 +105,7 @@ def base_points(par, y, rot, psi_stored, gap_limit, arms):
     return count
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _apply(par, inv_inertia, d, px, py, pz, velocity):
     """velocity += M^-1 J^T P for the impulse P at arm d."""
     m = par[P_MASS]
@@ -117,14 +117,14 @@ def _apply(par, inv_inertia, d, px, py, pz, velocity):
         velocity[3 + i] += inv_inertia[i, 0] * tx + inv_inertia[i, 1] * ty + inv_inertia[i, 2] * tz
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _point_speed(velocity, d):
     """(u_x, u_y, u_n) of the point at arm d."""
     cx, cy, cz = cross(velocity[3], velocity[4], velocity[5], d[0], d[1], d[2])
     return velocity[0] + cx, velocity[1] + cy, velocity[2] + cz
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def _delassus(par, inv_inertia, d, out):
     """The point's 3 x 3 Delassus matrix W = J M^-1 J^T (columns: unit impulses x, y, n)."""
     probe = np.zeros(6)
@@ -139,7 +139,7 @@ def _delassus(par, inv_inertia, d, out):
         out[2, k] = un
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def kinetic_energy(par, inv_inertia, velocity):
     """(1/2) m |v|^2 + (1/2) omega . I_w omega [J] (I_w from its inverse).
 
@@ -168,7 +168,7 @@ def kinetic_energy(par, inv_inertia, velocity):
     return 0.5 * m * (velocity[0] ** 2 + velocity[1] ** 2 + velocity[2] ** 2) + 0.5 * rotational
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _sweep(par, inv_inertia, arms, count, mu, delassus, stiffness, velocity, impulses, backwards,
            scale):  # fmt: skip
     """One Gauss-Seidel sweep over the points; returns the largest change of velocity / scale.
@@ -208,7 +208,7 @@ def _sweep(par, inv_inertia, arms, count, mu, delassus, stiffness, velocity, imp
     return change
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def polish(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale):
     """The exact impulses from the sweeps', taken where they obey the laws.
 
@@ -254,7 +254,7 @@ def polish(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale):
     return True
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _warm(impulses, count):
     """Whether a start of the sweeps has a normal impulse at any of its ``count`` points."""
     for p in range(count):
@@ -263,7 +263,7 @@ def _warm(impulses, count):
     return False
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses):
     """Plastic impulses at the points with Coulomb friction on the circular cone.
 
@@ -315,7 +315,7 @@ def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses):
     return SWEEPS, ENDED_EXHAUSTED
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def velocity_impact(par, inv_inertia, arms, count, mu, velocity, impulses):
     """The velocity after a plastic impact at the points; it never gains energy.
 

@@ -77,10 +77,10 @@ from __future__ import annotations
 
 import math
 
-import numba as nb
 import numpy as np
 
 from freestand.core.body import Body, Box
+from freestand.core.contact.compiled import kernel
 from freestand.core.contact.engine import (
     held_products,
     solve_in_place,
@@ -188,13 +188,13 @@ def body_parameters(body: Body, gravity: float, restitution: float = 1.0) -> np.
 # --- small vector algebra ------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def cross(a0, a1, a2, b0, b1, b2):
     """a x b as a tuple."""
     return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def rotation_matrix(y, out):
     """The rotation matrix R (3, 3) of the unit quaternion ``y[3:7]`` (w, x, y, z)."""
     w, x, yy, z = y[3], y[4], y[5], y[6]
@@ -209,7 +209,7 @@ def rotation_matrix(y, out):
     out[2, 2] = 1.0 - 2.0 * (x * x + yy * yy)
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def world_inverse_inertia(par, rot, out):
     """I_w^-1 = R I^-1 R^T (3, 3) [1/(kg m^2)]: T = R I^-1, then T R^T (symmetric)."""
     for i in range(3):
@@ -223,7 +223,7 @@ def world_inverse_inertia(par, rot, out):
             out[j, i] = total
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def arm(par, rot, sx, sy, sz, out):
     """d = R (s - c) [m]: from G to the body-frame point s, in the support frame."""
     px = sx - par[P_CENTRE]
@@ -233,13 +233,13 @@ def arm(par, rot, sx, sy, sz, out):
         out[i] = rot[i, 0] * px + rot[i, 1] * py + rot[i, 2] * pz
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def sin_tilt(rot):
     """sin of the tilt (angle of the body's z axis from the vertical) [-]."""
     return math.sqrt(rot[2, 0] ** 2 + rot[2, 1] ** 2)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def box_corner(par, k):
     """Base corner k (0..3, counter-clockwise from (+b_x, +b_y)) in the body frame."""
     sx = par[P_HALF_X] if k == 0 or k == 3 else -par[P_HALF_X]
@@ -247,7 +247,7 @@ def box_corner(par, k):
     return sx, sy
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def lowest_rim_angle(rot, psi_stored):
     """Body-frame angle [rad] of the cylinder's lowest rim point (the stored one when flat)."""
     if sin_tilt(rot) <= PIVOT_LEAN:
@@ -258,7 +258,7 @@ def lowest_rim_angle(rot, psi_stored):
 # --- support motion -----------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def support_acceleration(record, dt, t):
     """(a_x, a_y, a_v) [m/s^2] at ``t`` [s]: linear between samples, zero outside.
 
@@ -276,7 +276,7 @@ def support_acceleration(record, dt, t):
     return a_x, a_y, a_v
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def applied_wrench(par, y, inv_inertia, rot, a_x, a_y, a_v, out):
     """f_0 = (m g_e, -omega x I_w omega) (6,) [N, N m]."""
     m = par[P_MASS]
@@ -300,7 +300,7 @@ def applied_wrench(par, y, inv_inertia, rot, a_x, a_y, a_v, out):
     out[5] = -gz
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def apply_inverse_mass(par, inv_inertia, w, out):
     """M^-1 w (6,)."""
     inv_m = 1.0 / par[P_MASS]
@@ -314,14 +314,14 @@ def apply_inverse_mass(par, inv_inertia, w, out):
 # --- rows of a patch ----------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def point_velocity(y, d, e0, e1, e2):
     """e . (v + omega x d) [m/s]: the velocity of the material point at arm d along e."""
     cx, cy, cz = cross(y[10], y[11], y[12], d[0], d[1], d[2])
     return e0 * (y[7] + cx) + e1 * (y[8] + cy) + e2 * (y[9] + cz)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _point_row(y, d, e0, e1, e2, column, rows, bias, k):
     """Row k: the point at arm d along the unit e.
 
@@ -340,7 +340,7 @@ def _point_row(y, d, e0, e1, e2, column, rows, bias, k):
     bias[k] = e0 * cx + e1 * cy + e2 * cz + column
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _angular_row(e0, e1, e2, rows, bias, k):
     """Row k: the angular velocity about the unit e, ``w = (0, e)``, no bias."""
     for i in range(3):
@@ -351,7 +351,7 @@ def _angular_row(e0, e1, e2, rows, bias, k):
     bias[k] = 0.0
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def rim_terms(par, y, rot, cos_psi, sin_psi):
     """The moving rim point's extra acceleration terms (z, x, y) [m/s^2] (rim angle psi).
 
@@ -377,7 +377,7 @@ def rim_terms(par, y, rot, cos_psi, sin_psi):
     return ez, ex, ey
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def patch_rows(par, y, sc, kind, index, cos_psi, sin_psi):
     """Fill the rows of a patch in the scratch ``sc``; returns (normal rows, tangential rows).
 
@@ -429,7 +429,7 @@ def patch_rows(par, y, sc, kind, index, cos_psi, sin_psi):
     return row_counts(kind)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def row_counts(kind):
     """(normal rows, tangential rows) of a patch of ``kind`` (the module's table)."""
     if kind == FREE:
@@ -439,7 +439,7 @@ def row_counts(kind):
     return (2, 3) if kind == EDGE else (3, 3)
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def tangent_rows(par, y, sc):
     """A FACE's or EDGE's tangential rows at its friction centre, in the scratch ``sc``.
 
@@ -457,7 +457,7 @@ def tangent_rows(par, y, sc):
 # --- the friction centre of a FACE or EDGE ---------------------------------------------------
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def effective_twist_radius(par, kind, index, cx, cy):
     """Twist radius rho [m] of a FACE or EDGE whose centre of pressure is (cx, cy).
 
@@ -488,7 +488,7 @@ def effective_twist_radius(par, kind, index, cx, cy):
     return 0.0
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def reset_friction_centre(par, kind, index, centre):
     """The friction centre at the patch's geometric centre (the base centre, an edge's midpoint).
 
@@ -507,7 +507,7 @@ def reset_friction_centre(par, kind, index, centre):
     centre[2] = effective_twist_radius(par, kind, index, centre[0], centre[1])
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def on_base(par, cx, cy):
     """A body-frame base point (cx, cy) [m] kept on the base (a box's rectangle, a disc)."""
     if par[P_SHAPE] == SHAPE_BOX:
@@ -519,7 +519,7 @@ def on_base(par, cx, cy):
     return cx, cy
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def move_friction_centre(par, rot, kind, index, lam, centre):
     """Move the friction centre to the patch's centre of pressure; returns how far [m].
 
@@ -551,7 +551,7 @@ def move_friction_centre(par, rot, kind, index, lam, centre):
     return moved
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def centre_stick_friction(par, rot, kind, index, n_normal, lam, centre):
     """A sticking FACE's or EDGE's friction, solved on rows at ``centre``, about its CoP.
 
@@ -571,7 +571,7 @@ def centre_stick_friction(par, rot, kind, index, n_normal, lam, centre):
     lam[n_normal + 2] = torque / centre[2]
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def normal_total(kind, lam):
     """The patch's total normal force N [N] from its normal multipliers."""
     if kind == POINT:
@@ -583,7 +583,7 @@ def normal_total(kind, lam):
     return 0.0
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def tangential_velocity(y, tangent, n_tangent, out):
     """The tangential rows' velocities s (scaled slip velocity) [m/s]."""
     for k in range(n_tangent):
@@ -597,7 +597,7 @@ def tangential_velocity(y, tangent, n_tangent, out):
 # --- the solve of one mode ----------------------------------------------------------------------
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, acc, lam):
     """Solve the contact problem of one mode on the scratch's rows; False when singular.
 
@@ -675,7 +675,7 @@ def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, ac
     return True
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def _solve_held(work, matrix, rhs, held, symmetric):
     """The held rows' system ``(w_r . M^-1 g_j) x = rhs`` solved in place; False if singular.
 
@@ -696,7 +696,7 @@ def _solve_held(work, matrix, rhs, held, symmetric):
     return solve_small(matrix, rhs, held)
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def solve_small(matrix, rhs, k):
     """Solve the leading k x k system ``matrix x = rhs`` in place (x in ``rhs``); False if singular.
 
@@ -745,7 +745,7 @@ def solve_small(matrix, rhs, k):
     return solve_in_place(matrix, rhs, k)
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def face_offset_torques(sc, mu, direction):
     """A sliding FACE's twist [N m] per unit of its multipliers N, M_x, M_y from its CoP's offset.
 
@@ -765,7 +765,7 @@ def face_offset_torques(sc, mu, direction):
     return -mu * (ux * cy - uy * cx), mu * ux, mu * uy
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def normal_total_rows(n_normal, lam):
     """Total normal force of a patch from its row count (3 rows: FACE, lam[0])."""
     if n_normal == 2:
@@ -775,7 +775,7 @@ def normal_total_rows(n_normal, lam):
     return 0.0
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def row_acceleration(rows, bias, k, acc):
     """w_k . x'' + b_k [m/s^2]."""
     total = bias[k]
@@ -787,7 +787,7 @@ def row_acceleration(rows, bias, k, acc):
 # --- admissibility -------------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def face_centre_of_pressure(rot, lam):
     """Centre of pressure (body frame x, y) [m] of a FACE from (N, M_x, M_y)."""
     n = lam[0]
@@ -799,7 +799,7 @@ def face_centre_of_pressure(rot, lam):
     return rot[0, 0] * px + rot[1, 0] * py, rot[0, 1] * px + rot[1, 1] * py
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def normal_margin(par, rot, kind, lam):
     """The smallest normal admissibility margin of a patch [N] (>= 0 admissible).
 
@@ -822,7 +822,7 @@ def normal_margin(par, rot, kind, lam):
     return 0.0
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def friction_margin(par, n_normal, n_tangent, lam):
     """mu_0 N - |f_t| [N] of a sticking patch (>= 0 holds)."""
     total = normal_total_rows(n_normal, lam)
@@ -896,7 +896,7 @@ def new_scratch() -> np.void:
     return np.zeros(1, dtype=SCRATCH_DTYPE)[0]
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def pivot_direction(par, rot, kind, psi_stored, sc):
     """(cos psi, sin psi) of the rim point a cylinder's POINT rolls on; (1, 0) for other patches.
 
@@ -928,7 +928,7 @@ def pivot_direction(par, rot, kind, psi_stored, sc):
     return c, n
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def stored_direction(psi, sc):
     """(cos psi, sin psi) of a stored rim angle, kept in ``sc[SC_RIM]`` for the next call."""
     rim = sc[SC_RIM]
@@ -940,7 +940,7 @@ def stored_direction(psi, sc):
     return rim[2], rim[3]
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def prepare(par, record, dt, t, y, kind, index, psi, sc):
     """Rotation, inverse inertia, applied wrench, M^-1 f_0 and the patch's rows at ``t``.
 
@@ -955,7 +955,7 @@ def prepare(par, record, dt, t, y, kind, index, psi, sc):
     return scratch_rows(par, y, kind, index, cos_psi, sin_psi, sc)
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def prepare_load(par, record, dt, t, y, sc):
     """Inverse inertia, applied wrench and M^-1 f_0 at ``t``, at the rotation ``sc`` holds."""
     rot, inv, f0 = sc[SC_ROT], sc[SC_INV], sc[SC_F0]
@@ -965,7 +965,7 @@ def prepare_load(par, record, dt, t, y, sc):
     apply_inverse_mass(par, inv, f0, sc[SC_BASE])
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def scratch_rows(par, y, kind, index, cos_psi, sin_psi, sc):
     """The patch's rows (:func:`patch_rows`) in the scratch, at the rotation it holds.
 
@@ -977,7 +977,7 @@ def scratch_rows(par, y, kind, index, cos_psi, sin_psi, sc):
     return patch_rows(par, y, sc, kind, index, cos_psi, sin_psi)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal, n_tangent):
     """Solve a mode on the rows in the scratch, its friction about the centre of pressure.
 
@@ -1019,7 +1019,7 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     return True
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _slide_face(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent):
     """A sliding FACE solved with its friction at its centre of pressure (:func:`solve_patch`).
 
@@ -1072,7 +1072,7 @@ def _slide_face(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_ta
     return True
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _move_to_pressure_centre(par, rot, lam, centre):
     """A sliding FACE's friction centre to its centre of pressure, on or off the base; how far [m].
 
@@ -1088,7 +1088,7 @@ def _move_to_pressure_centre(par, rot, lam, centre):
     return moved
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _predicted_centre(par, y, sc, stored, ux, uy):
     """A sliding, twisting FACE's consistent friction centre, predicted from one solve.
 
@@ -1115,7 +1115,7 @@ def _predicted_centre(par, y, sc, stored, ux, uy):
         centre[2] = effective_twist_radius(par, FACE, 0, cx, cy)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def face_model(par, sc, ux, uy):
     """The model of a sliding FACE's centre of pressure from one solve (:func:`_predicted_centre`).
 
@@ -1132,7 +1132,7 @@ def face_model(par, sc, ux, uy):
     return (px - lever * u_x, py - lever * u_y, px, py, wx, wy, lever)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _anderson_centre(par, history, iteration, centre):
     """The next trial centre of c = F(c) by Anderson's mixing of the last iterates.
 
@@ -1168,7 +1168,7 @@ def _anderson_centre(par, history, iteration, centre):
     centre[2] = effective_twist_radius(par, FACE, 0, cx, cy)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _face_friction_kept(par, y, sc, kinetic, stored, n_tangent, ux, uy, twist, direction):
     """Whether a sliding FACE's solve holds at its moved friction centre (:func:`solve_patch`).
 
@@ -1192,7 +1192,7 @@ def _face_friction_kept(par, y, sc, kinetic, stored, n_tangent, ux, uy, twist, d
     )
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def _face_friction(sc, kinetic, direction):
     """A sliding FACE's u_x, u_y and u_t rho at its friction centre (kinetic: sc[SC_DIR])."""
     rho = sc[SC_CENTRE][2]
@@ -1202,7 +1202,7 @@ def _face_friction(sc, kinetic, direction):
     return direction[0], direction[1], direction[2] * rho
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _solve_at_rows(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal, n_tangent):
     """One solve on the scratch's rows (:func:`solve_patch`'s u); flags a stored direction read."""
     if kinetic:
@@ -1213,7 +1213,7 @@ def _solve_at_rows(par, y, sc, use_bias, slip, direction, kinetic, stored, n_nor
     return _solve_scratch(par, sc, use_bias, slip, direction, n_normal, n_tangent)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _slide_edge(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent):
     """A sliding EDGE solved with its friction at its centre of pressure (:func:`solve_patch`).
 
@@ -1268,7 +1268,7 @@ def _slide_edge(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_ta
                           n_tangent)  # fmt: skip
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def edge_slide_terms(par, y, sc, use_bias):
     """The terms of a sliding EDGE's systems at any centre, in ``sc[SC_EDGE]`` (see E_*).
 
@@ -1314,7 +1314,7 @@ def edge_slide_terms(par, y, sc, use_bias):
     velocity[4] = y[12]
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def edge_share(par, sc, index, share, direction, kinetic, stored):
     """F(sigma): the centre of pressure's share along a sliding EDGE with its friction at sigma.
 
@@ -1342,7 +1342,7 @@ def edge_share(par, sc, index, share, direction, kinetic, stored):
     return _edge_share_along(par, edge, share, rho, direction)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _edge_share_along(par, edge, share, rho, u):
     """:func:`edge_share` with the friction along the unit ``u`` (tangential rows)."""
     mu = par[P_MU_KINETIC]
@@ -1361,7 +1361,7 @@ def _edge_share_along(par, edge, share, rho, u):
     return min(max(second / (first + second), 0.0), 1.0)
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def _friction_term(row, share, rho, u):
     """``q_r . G``: corner r's normal row's response to the friction's unit force u at sigma."""
     mx = row[E_AX] + share * (row[E_BX] - row[E_AX])
@@ -1369,7 +1369,7 @@ def _friction_term(row, share, rho, u):
     return u[0] * (row[E_QX] + mx) + u[1] * (row[E_QY] + my) + u[2] * rho * row[E_QT]
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _edge_centre(par, index, share, ax, ay, bx, by, centre):
     """The friction centre at ``share`` along the edge from (ax, ay) to (bx, by), with its rho."""
     centre[0] = ax + share * (bx - ax)
@@ -1377,14 +1377,14 @@ def _edge_centre(par, index, share, ax, ay, bx, by, centre):
     centre[2] = effective_twist_radius(par, EDGE, index, centre[0], centre[1])
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def _solve_scratch(par, sc, use_bias, slip, direction, n_normal, n_tangent):
     """:func:`solve_mode` on the scratch's rows and work arrays, sliding along ``direction``."""
     return solve_mode(par, sc, sc[SC_BASE], use_bias, slip, direction, n_normal, n_tangent,
                       sc[SC_ACC], sc[SC_LAM])  # fmt: skip
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def slip_direction(y, n_tangent, data, tangent, svel, direction):
     """The sliding direction u: the slip velocity's while it points on the stored one's side.
 
@@ -1418,7 +1418,7 @@ def slip_direction(y, n_tangent, data, tangent, svel, direction):
     return unit_slip(svel, n_tangent, data, direction)
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def unit_slip(svel, n_tangent, data, direction):
     """u from the slip velocity s (``svel``) and the stored r (``data[D_SLIP:]``): see
     :func:`slip_direction` and ``slip_law.pulled_unit``, with the floor ``max(SLIP_FLOOR,
@@ -1427,7 +1427,7 @@ def unit_slip(svel, n_tangent, data, direction):
     return pulled_unit(svel, n_tangent, data, D_SLIP, floor, direction)
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def prepare_held(par, record, dt, t, y, mode, data, sc):
     """:func:`prepare` for the held mode at (t, y), its pivot at the stored rim angle's point."""
     kind = mode[M_KIND]
@@ -1438,7 +1438,7 @@ def prepare_held(par, record, dt, t, y, mode, data, sc):
     return scratch_rows(par, y, kind, mode[M_INDEX], cos_psi, sin_psi, sc)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def solve_at(par, record, dt, t, y, mode, data, sc):
     """Solve the held mode at (t, y): fills sc[SC_ACC] and sc[SC_LAM]; False if singular.
 
@@ -1452,7 +1452,7 @@ def solve_at(par, record, dt, t, y, mode, data, sc):
     return ok, n_normal, n_tangent
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def solve_at_centre(par, record, dt, t, y, mode, data, sc):
     """A sticking mode solved with its rows at the patch's geometric centre.
 
@@ -1466,7 +1466,7 @@ def solve_at_centre(par, record, dt, t, y, mode, data, sc):
     return ok, n_normal, n_tangent
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def rate(par, record, dt, t, y, mode, data, sc, ydot):
     """y' of the held mode at (t, y); False when the mode's system is singular.
 
@@ -1478,7 +1478,7 @@ def rate(par, record, dt, t, y, mode, data, sc, ydot):
     return ok
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def state_rate(y, acc, ydot):
     """y' from the state and the accelerations ``acc`` = (v', omega') of a solve (:func:`rate`)."""
     for i in range(3):
@@ -1497,7 +1497,7 @@ def state_rate(y, acc, ydot):
 # --- gaps of the base ---------------------------------------------------------------------------
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def corner_gap(par, y, rot, k, d):
     """(gap [m], gap velocity [m/s]) of the box's base corner k; its arm in ``d``."""
     sx, sy = box_corner(par, k)
@@ -1505,7 +1505,7 @@ def corner_gap(par, y, rot, k, d):
     return y[2] + d[2], point_velocity(y, d, 0.0, 0.0, 1.0)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def slowest_rim_angle(y, rot):
     """Body-frame angle [rad] of the rim point of a flat base with the smallest normal velocity.
 
@@ -1521,7 +1521,7 @@ def slowest_rim_angle(y, rot):
     return phi - math.atan2(rot[1, 0], rot[0, 0])
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def rim_gap(par, y, rot, d):
     """(gap [m], gap velocity [m/s], psi) of the cylinder's lowest rim point; arm in ``d``.
 
@@ -1538,7 +1538,7 @@ def rim_gap(par, y, rot, d):
     return y[2] + d[2], point_velocity(y, d, 0.0, 0.0, 1.0), psi
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def rim_contact(par, y, rot, gap_tol, d):
     """(gap [m], gap velocity [m/s], psi) of the rim point that touches; arm in ``d``.
 
@@ -1558,7 +1558,7 @@ def rim_contact(par, y, rot, gap_tol, d):
     return g, gv, psi
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def flat_gap(par, y, rot):
     """Largest gap [m] of the base's outline.
 
@@ -1576,7 +1576,7 @@ def flat_gap(par, y, rot):
     return g + 2.0 * par[P_HALF_X] * sin_tilt(rot)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def energy(par, y):
     """Kinetic plus potential energy m g z_G [J] in the support's frame (no excitation)."""
     rot = np.empty((3, 3))

@@ -34,7 +34,6 @@ from __future__ import annotations
 
 import math
 
-import numba as nb
 import numpy as np
 
 from freestand.core.contact.body_kernel import (
@@ -76,6 +75,7 @@ from freestand.core.contact.body_kernel import (
     solve_patch,
     tangential_velocity,
 )
+from freestand.core.contact.compiled import kernel
 from freestand.core.contact.regula_falsi import retained_scale
 
 ACCELERATION = 0
@@ -93,7 +93,7 @@ MAX_CANDIDATES = 9
 NONE_ADMISSIBLE = -1
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _row_rate(rows, bias, k, x, use_bias):
     total = bias[k] if use_bias else 0.0
     for i in range(6):
@@ -101,7 +101,7 @@ def _row_rate(rows, bias, k, x, use_bias):
     return total
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _point_normal_rate(y, d, x, level):
     """Normal acceleration (level 0) or velocity after (level 1) of the point at arm d."""
     if level == VELOCITY:
@@ -114,7 +114,7 @@ def _point_normal_rate(y, d, x, level):
     return x[2] + az + cz
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def _others_separate(par, y, sc, kind, index, psi, touching, level, tolerance):
     """True when every touching point the patch does not hold moves away (>= -tolerance)."""
     rot = sc[SC_ROT]
@@ -157,14 +157,14 @@ def _others_separate(par, y, sc, kind, index, psi, touching, level, tolerance):
     return True
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _solve(par, y, sc, level, slip, direction, n_normal, n_tangent):
     """The mode on the scratch's rows, sliding along ``direction`` (friction about the CoP)."""
     return solve_patch(par, y, sc, level == ACCELERATION, slip, direction, False, sc[SC_CENTRE],
                        n_normal, n_tangent)  # fmt: skip
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _tangential_rate(sc, n_tangent, level, out):
     """Slip acceleration (level 0) or slip velocity after (level 1) of the tangential rows."""
     size = 0.0
@@ -174,7 +174,7 @@ def _tangential_rate(sc, n_tangent, level, out):
     return math.sqrt(size)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _onset_rate(par, y, sc, level, n_normal, n_tangent, direction):
     """Slip rate under the kinetic friction along ``-direction``: (along, across, size).
 
@@ -195,12 +195,12 @@ def _onset_rate(par, y, sc, level, n_normal, n_tangent, direction):
     return along, math.sqrt(across), size
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _onset_consistent(along, across, size, rate_tol):
     return size >= 0.0 and across <= rate_tol + 1e-10 * size and along >= -rate_tol
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol):
     """Two tangential rows (a point): the onset angle by a scan and regula falsi.
 
@@ -234,7 +234,7 @@ def _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol):
     return True
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _onset_sign(par, y, sc, level, n_normal, theta, direction):
     direction[0] = math.cos(theta)
     direction[1] = math.sin(theta)
@@ -245,7 +245,7 @@ def _onset_sign(par, y, sc, level, n_normal, theta, direction):
     return -direction[1] * rate[0] + direction[0] * rate[1]
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _onset_root(par, y, sc, level, n_normal, low, high, f_low, f_high, direction):
     """The root of :func:`_onset_sign` in [low, high] (its values there f_low, f_high, of
     opposite signs or zero) to 1e-14 rad.
@@ -284,7 +284,7 @@ def _onset_root(par, y, sc, level, n_normal, low, high, f_low, f_high, direction
     return 0.5 * (low + high)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _tangent_basis(u, e1, e2):
     """Two unit vectors completing the unit 3-vector ``u`` to an orthonormal basis."""
     ax, ay, az = (1.0, 0.0, 0.0) if abs(u[0]) < 0.9 else (0.0, 1.0, 0.0)
@@ -296,7 +296,7 @@ def _tangent_basis(u, e1, e2):
     e2[0], e2[1], e2[2] = cross(u[0], u[1], u[2], e1[0], e1[1], e1[2])
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol, iterations):
     """Three tangential rows: Newton on the rate's components across u, from ``direction``.
 
@@ -355,21 +355,21 @@ def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol, iterations):
     return _onset_consistent(along, across, size, rate_tol)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _onset_across(sc, e1, e2):
     rate = sc[SC_SACC]
     return (rate[0] * e1[0] + rate[1] * e1[1] + rate[2] * e1[2],
             rate[0] * e2[0] + rate[1] * e2[1] + rate[2] * e2[2])  # fmt: skip
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _normalise3(u):
     size = math.sqrt(u[0] ** 2 + u[1] ** 2 + u[2] ** 2)
     for k in range(3):
         u[k] /= size
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def _onset_on_sphere(par, y, sc, level, n_normal, start, direction, rate_tol):
     """Three tangential rows (an edge or face with twist): Newton from the best sampled u.
 
@@ -404,7 +404,7 @@ def _onset_on_sphere(par, y, sc, level, n_normal, start, direction, rate_tol):
     return False
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _slip_onset(par, y, sc, level, n_normal, n_tangent, start, direction, rate_tol):
     """Direction u of a slip starting from rest; True when consistent.
 
@@ -437,14 +437,14 @@ def _slip_onset(par, y, sc, level, n_normal, n_tangent, start, direction, rate_t
     return _onset_on_sphere(par, y, sc, level, n_normal, start, direction, rate_tol)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _restart(start, direction):
     for k in range(3):
         direction[k] = start[k]
     return direction
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, scales, data):
     """Solve a candidate mode and test it; True when admissible (its u and psi in ``data``).
 
@@ -517,7 +517,7 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
     return True
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def touching_points(par, y, rot, gap_tol, velocity_tol, level, touching):
     """Flags of the touching points: box corners 0-3; cylinder: 4 = the rim's lowest point,
     0 = the whole base flat. Returns the rim angle of the lowest point (cylinder)."""
@@ -539,7 +539,7 @@ def touching_points(par, y, rot, gap_tol, velocity_tol, level, touching):
     return psi
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def candidates(par, touching, psi, kinds, indices, angles):
     """The candidate patches, most closed first; returns their count."""
     count = 0
@@ -568,7 +568,7 @@ def candidates(par, touching, psi, kinds, indices, angles):
     return count
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _face_pivot(par, y, sc):
     """Rim angle towards which a FACE solution's centre of pressure leaves the disc."""
     rot = sc[SC_ROT]
@@ -585,7 +585,7 @@ def _face_pivot(par, y, sc):
     return math.atan2(by, bx), True
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def select_mode(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, excluded):
     """Choose the contact mode at (t, y) (acceleration level); fills ``mode`` and ``data``.
 
@@ -633,7 +633,7 @@ def select_mode(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, ex
     return NONE_ADMISSIBLE
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _landing_pivot(par, y, sc, touching, scales, psi0, data):
     """Rim angle about which a landed cylinder turns after the impact (1-D root search).
 
@@ -676,7 +676,7 @@ def _landing_pivot(par, y, sc, touching, scales, psi0, data):
     return psi0
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def impact(par, y, sc, gap_tol, psi_before, mode, data, out_velocity):
     """The impact law at (t, y): the velocity after in ``out_velocity`` (6,).
 

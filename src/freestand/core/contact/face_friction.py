@@ -28,8 +28,7 @@ from __future__ import annotations
 
 import math
 
-import numba as nb
-
+from freestand.core.contact.compiled import kernel
 from freestand.core.contact.regula_falsi import narrowed
 from freestand.core.contact.slip_law import pulled_unit, slip_pull
 from freestand.core.contact.vectors import norm2
@@ -44,7 +43,7 @@ PULL_TRIALS = 80
 CENTRE_TOLERANCE = 1e-12
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def rectangle_twist_radius(half_x: float, half_y: float) -> float:
     """Mean distance [m] from the centre of the rectangle |x| <= p, |y| <= q.
 
@@ -65,7 +64,7 @@ def rectangle_twist_radius(half_x: float, half_y: float) -> float:
     return integral / (6.0 * p * q)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def face_twist_radius(box, half_x, half_y, rho_face, floor, cx, cy):
     """Twist radius rho [m] of a flat base whose centre of pressure is (cx, cy) [m].
 
@@ -88,7 +87,7 @@ def face_twist_radius(box, half_x, half_y, rho_face, floor, cx, cy):
     return max(rho_face * (1.0 - norm2(cx, cy) / half_x), floor)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def twisting_centre(ax, ay, wx, wy, twist, omega, lever, box, half_x, half_y, rho_face, floor):
     """The consistent friction centre (cx, cy) [m] of a base sliding and twisting, from (1).
 
@@ -145,7 +144,7 @@ def twisting_centre(ax, ay, wx, wy, twist, omega, lever, box, half_x, half_y, rh
     return _circle_point(best, ax, ay, wx, wy, size, turn)
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def _circle_point(psi, ax, ay, wx, wy, size, turn):
     """c(psi) = a + (sin(psi) / |omega|) R(turn psi) w(a) (:func:`twisting_centre`)."""
     s, c = math.sin(psi), math.cos(psi)
@@ -153,7 +152,7 @@ def _circle_point(psi, ax, ay, wx, wy, size, turn):
     return ax + reach * (c * wx - turn * s * wy), ay + reach * (turn * s * wx + c * wy)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _centre_residual(psi, ax, ay, wx, wy, twist, omega, turn, lever, box, half_x, half_y,
                      rho_face, floor):  # fmt: skip
     """g(psi) of :func:`twisting_centre` [m/s]."""
@@ -165,7 +164,7 @@ def _centre_residual(psi, ax, ay, wx, wy, twist, omega, turn, lever, box, half_x
     return s * math.sqrt(c * c * (wx * wx + wy * wy) + spin * spin) - lever * size * c
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def model_centre(model, base, rot, omega, stored, start, floor, s, u):
     """c = F(c) = a + mu h u(c) on the model; (cx, cy, settled) [m], body frame.
 
@@ -197,20 +196,20 @@ def model_centre(model, base, rot, omega, stored, start, floor, s, u):
     return pulled_centre(args)
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def body_horizontal(rot, x, y):
     """A world horizontal vector's body-frame (x, y), the body turned about the vertical."""
     return rot[0, 0] * x + rot[1, 0] * y, rot[0, 1] * x + rot[1, 1] * y
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def _base_twist_radius(base, cx, cy):
     """:func:`face_twist_radius` of the base tuple at (cx, cy)."""
     box, half_x, half_y, rho_face, rho_floor = base
     return face_twist_radius(box, half_x, half_y, rho_face, rho_floor, cx, cy)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def pulled_twisting_centre(model, base, rot, omega, stored, start, beta):
     """The centre c = a + mu h u(c) for u the direction of ``s(c) + beta r`` (a fixed beta).
 
@@ -227,7 +226,7 @@ def pulled_twisting_centre(model, base, rot, omega, stored, start, beta):
                            half_y, rho_face, rho_floor)  # fmt: skip
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def pulled_centre(args):
     """c = F(c) by a bracketed search on the pull beta; (cx, cy, settled) (:func:`model_centre`).
 
@@ -264,7 +263,7 @@ def pulled_centre(args):
     return px, py, False
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _pull_at(args, beta):
     """(beta(s(c)), cx, cy): the pull at the centre c of a fixed ``beta``, and c."""
     model, base, rot, omega, stored, start, floor, s, u = args
@@ -276,7 +275,7 @@ def _pull_at(args, beta):
     return slip_pull(along, size, floor), cx, cy
 
 
-@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def _slip_at(args, cx, cy):
     """The slip at c into ``s`` (world): w(p) + omega e_z x (c - p) turned from the body
     frame, then omega rho(c)."""
@@ -288,7 +287,7 @@ def _slip_at(args, cx, cy):
     s[2] = omega * _base_twist_radius(base, cx, cy)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def model_map(args, cx, cy):
     """F(c) = a + mu h u(c) [m] (body frame); ``args`` :func:`model_centre`'s."""
     model, base, rot, omega, stored, start, floor, s, u = args
@@ -299,7 +298,7 @@ def model_map(args, cx, cy):
     return ax + lever * u_x, ay + lever * u_y
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def model_newton(args, cx, cy):
     """c = F(c) of :func:`model_map` by Newton's method from (cx, cy); (cx, cy, settled).
 

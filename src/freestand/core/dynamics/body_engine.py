@@ -40,7 +40,6 @@ from __future__ import annotations
 
 import math
 
-import numba as nb
 import numpy as np
 
 from freestand.core.contact.body_impulse import MAX_POINTS, base_points, velocity_impact
@@ -108,6 +107,7 @@ from freestand.core.contact.body_modes import (
     select_mode,
     touching_points,
 )
+from freestand.core.contact.compiled import kernel
 from freestand.core.dynamics.body_events import EVENT_TIME, locate
 from freestand.core.dynamics.body_step import (
     FN_FRICTION,
@@ -166,7 +166,7 @@ STATUS_OVERTURNED = 2
 STATUS_BUFFER_FULL = 3
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _lean_comes_flat(par, y, mode, sc):
     """True when a rolling cylinder's lean whirls within ``PIVOT_LEAN`` of flat, closing.
 
@@ -194,7 +194,7 @@ def _lean_comes_flat(par, y, mode, sc):
     return abs(ex * uy - ey * ux) > PLANAR_PASS * PIVOT_LEAN * math.hypot(ux, uy)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _flatten(par, y, rot, d):
     """The base flat on the support: the tilt removed (a pure yaw), the base centre at z = 0.
 
@@ -210,7 +210,7 @@ def _flatten(par, y, rot, d):
     y[2] -= y[2] + d[2]
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     """Remove the drift of the held rows: positions on the support, their velocities zero.
 
@@ -271,7 +271,7 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
             y[7 + i] = after[i]
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def drifted(par, y, mode, sc, gap_tol, velocity_tol):
     """True where the held rows have drifted enough to be projected (:func:`project`).
 
@@ -316,7 +316,7 @@ def drifted(par, y, mode, sc, gap_tol, velocity_tol):
     return False
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _post_record_fall(par, y, mode, sc):
     """True when, without excitation, a pivoting body is past its top: tilting and falling."""
     if mode[M_KIND] != POINT and mode[M_KIND] != EDGE:
@@ -328,7 +328,7 @@ def _post_record_fall(par, y, mode, sc):
     return rate_cos < 0.0 and y[9] < 0.0
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which, istate):
     """Phase 3: the impact (a gap closed) and the next contact mode; the event kind."""
     event = EV_LIFT_OFF
@@ -389,7 +389,7 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
     return event
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _set_free(mode):
     """The mode FREE (a stretch of the remedy runs with it: no contact held)."""
     mode[M_KIND] = FREE
@@ -397,7 +397,7 @@ def _set_free(mode):
     mode[M_SLIP] = 0
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force, impulses):
     """The remedy's step: one Moreau-Jean step of length h (Jean 1999), in place on ``y``.
 
@@ -448,7 +448,7 @@ def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force, impulses
     force[2] = reach
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _fall_speed(velocity, par):
     """A bound of the speed [m/s] at which a base point approaches the support.
 
@@ -463,7 +463,7 @@ def _fall_speed(velocity, par):
         velocity[3] ** 2 + velocity[4] ** 2 + velocity[5] ** 2)  # fmt: skip
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _turn(y, ax, ay, az):
     """Turn the orientation quaternion y[3:7] by the rotation vector (ax, ay, az) [rad] (world)."""
     angle = math.sqrt(ax * ax + ay * ay + az * az)
@@ -480,7 +480,7 @@ def _turn(y, ax, ay, az):
     _normalise(y)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def record(t, y, mode, sc, count, out_t, out_y, out_mode, out_force):
     """Phase 4: write the state, the mode and the contact force (N, |f_t|) at row ``count``."""
     out_t[count] = t
@@ -499,7 +499,7 @@ def record(t, y, mode, sc, count, out_t, out_y, out_mode, out_force):
     out_force[count, 1] = math.sqrt(size)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def held_row(par, y, sc, reach, velocity_tol, force, patch, row, out_mode, out_force):
     """Row ``row`` of a stretch of the remedy: the patch it holds and its contact force.
 
@@ -515,7 +515,7 @@ def held_row(par, y, sc, reach, velocity_tol, force, patch, row, out_mode, out_f
     out_force[row, 1] = force[1]
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _stretch_start_row(par, y, sc, gap_tol, velocity_tol, istate, force, patch,
                        out_mode, out_force):  # fmt: skip
     """The row just recorded, where a stretch of the remedy begins: the patch touched.
@@ -530,7 +530,7 @@ def _stretch_start_row(par, y, sc, gap_tol, velocity_tol, istate, force, patch,
     held_row(par, y, sc, gap_tol, velocity_tol, force, patch, row, out_mode, out_force)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _event(t, kind, before, after, count, ev_time, ev_kind, ev_before, ev_after):
     if count < ev_time.shape[0]:
         ev_time[count] = t
@@ -540,7 +540,7 @@ def _event(t, kind, before, after, count, ev_time, ev_kind, ev_before, ev_after)
     return count + 1
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def rest_prepare(par, y, mode, data, sc, rest):
     """Unit solutions of the resting mode: its multipliers are affine in (a_x, a_y, a_v).
 
@@ -565,7 +565,7 @@ def rest_prepare(par, y, mode, data, sc, rest):
             rest[j, i] -= rest[0, i]
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def rest_margins(par, record, dt, t, rest, rot, lam, centre):
     """The resting mode's multipliers at t in ``lam``; (normal margin, friction margin).
 
@@ -582,7 +582,7 @@ def rest_margins(par, record, dt, t, rest, rot, lam, centre):
     return normal_margin(par, rot, FACE, lam), friction_margin(par, 3, 3, lam)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def rest_step(par, record, dt, t, h, rest, rot, lam, centre):
     """A step of the resting mode over h (within one segment of the record).
 
@@ -608,7 +608,7 @@ def rest_step(par, record, dt, t, h, rest, rot, lam, centre):
     return high, FN_NORMAL if normal < -slack else FN_FRICTION
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _next_end(t, breaks, h_max, t_end):
     """End of the next step: at most h_max, never across a break of the record."""
     end = min(t + h_max, t_end)
@@ -625,7 +625,7 @@ def _next_end(t, breaks, h_max, t_end):
     return end
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, istate, force,
              impulses):  # fmt: skip
     """One step of the remedy; it ends where a consistent mode exists again. Returns t + h.
@@ -668,13 +668,13 @@ def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, is
     return t + h
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _horizontal_speed(y, d):
     """Horizontal speed [m/s] of the material point at arm d."""
     return math.hypot(point_velocity(y, d, 1.0, 0.0, 0.0), point_velocity(y, d, 0.0, 1.0, 0.0))
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def touched_patch(par, y, rot, reach, velocity_tol, patch):
     """The patch a time-stepped state touches, as (kind, index, slip) in ``patch``.
 
@@ -709,7 +709,7 @@ def touched_patch(par, y, rot, reach, velocity_tol, patch):
     return patch[0]
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def _settle(par, y, sc, data, reach, gap_tol, velocity_tol):
     """Lower the body onto the base points a stretch holds above the support; True if any stay.
 
@@ -746,7 +746,7 @@ def _settle(par, y, sc, data, reach, gap_tol, velocity_tol):
     return held - max(shift, 0.0) > gap_tol
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def watch_chatter(t, before, event, mode, istate, chatter):
     """Count an EDGE's or FACE's slip restarts and remedies; start a chatter's stretch at the third.
 
@@ -772,7 +772,7 @@ def watch_chatter(t, before, event, mode, istate, chatter):
     return _start_chatter(mode, istate, event)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _start_chatter(mode, istate, event):
     """Start a chatter's stretch of the remedy; returns the event's kind (a remedy).
 
@@ -794,7 +794,7 @@ def _start_chatter(mode, istate, event):
     return EV_REMEDY
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mode, data, sc,
           rest, istate, ev_time, ev_kind, ev_before, ev_after):  # fmt: skip
     """One step of the resting body (:func:`rest_step`) and, where a margin fired, its event.
@@ -815,7 +815,7 @@ def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mo
     return t
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol, t, y, mode,
         data, scratch, istate, out_t, out_y, out_mode, out_force, ev_time, ev_kind, ev_before,
         ev_after):  # fmt: skip

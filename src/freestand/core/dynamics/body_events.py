@@ -13,8 +13,6 @@ from __future__ import annotations
 
 import math
 
-import numba as nb
-
 from freestand.core.contact.body_kernel import (
     M_KIND,
     P_GRAVITY,
@@ -26,6 +24,7 @@ from freestand.core.contact.body_kernel import (
     row_counts,
     state_rate,
 )
+from freestand.core.contact.compiled import kernel
 from freestand.core.contact.regula_falsi import narrowed
 from freestand.core.dynamics.body_step import (
     FN_FRICTION,
@@ -49,7 +48,7 @@ SEED_TRIALS = 4  # most seeded trials of an event's search on RK4 states (locate
 SEED_OFFSET = 0.45  # a seeded trial lies this part of EVENT_TIME beyond its estimated crossing
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _levels(par, n, start_values, kinds, levels):
     """Level below which each event function fires; NaN for a function that cannot fire.
 
@@ -78,7 +77,7 @@ def _levels(par, n, start_values, kinds, levels):
     return n
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _fired(n, values, levels, prefer):
     """Index of an event function below its level (``prefer`` if it is one), or -1."""
     if prefer >= 0 and values[prefer] < levels[prefer]:
@@ -89,7 +88,7 @@ def _fired(n, values, levels, prefer):
     return -1
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _trial_time(low, high, g_low, g_high):
     """Next trial [s] of the search: the secant root, kept half a tolerance inside."""
     if g_low > 0.0 and g_high < 0.0:
@@ -99,7 +98,7 @@ def _trial_time(low, high, g_low, g_high):
     return min(max(x, low + 0.5 * EVENT_TIME), high - 0.5 * EVENT_TIME)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _hermite_state(h, tau, y, rate_start, end, rate_end, out):
     """The step's cubic Hermite interpolant at t + tau in ``out`` (its quaternion normalised).
 
@@ -120,7 +119,7 @@ def _hermite_state(h, tau, y, rate_start, end, rate_end, out):
     _normalise(out)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _function_value(par, record, dt, t, y, mode, data, sc, ref, values, kinds, target):
     """The event function ``target`` at (t, y).
 
@@ -138,7 +137,7 @@ def _function_value(par, record, dt, t, y, mode, data, sc, ref, values, kinds, t
     return values[target]
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def interpolated_crossing(par, record, dt, t, h, y, end, mode, data, sc, k, ref, values, kinds,
                           level, target, g_start, g_end, trial):  # fmt: skip
     """The crossing of event function ``target`` on the step's cubic interpolant.
@@ -179,7 +178,7 @@ def interpolated_crossing(par, record, dt, t, h, y, end, mode, data, sc, k, ref,
     return 0.5 * (low + high), rate_ if rate_ > 0.0 else math.nan
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _seeded_trial(last, g_last, previous, g_previous, rate_, low, high):
     """The next seeded trial of :func:`locate` [s from the step's start], or NaN.
 
@@ -204,7 +203,7 @@ def _seeded_trial(last, g_last, previous, g_previous, rate_, low, high):
     return x if low < x < high else math.nan
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count, trial,
            values, kinds, bracket, out):  # fmt: skip
     """Phase 2: the earliest crossing of an event function within the step.

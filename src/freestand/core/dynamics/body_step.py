@@ -14,8 +14,6 @@ from __future__ import annotations
 
 import math
 
-import numba as nb
-
 from freestand.core.contact.body_kernel import (
     D_FLOOR,
     D_PSI,
@@ -60,6 +58,7 @@ from freestand.core.contact.body_kernel import (
     state_rate,
     tangential_velocity,
 )
+from freestand.core.contact.compiled import kernel
 
 MAX_EVENT_FUNCTIONS = 8
 CLOSING_OVERSHOOT = 1.25  # a step ends this far past a gap's predicted closing [-]
@@ -85,14 +84,14 @@ FN_LANDING = 4
 FN_TILT = 5
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _normalise(y):
     size = math.sqrt(y[3] ** 2 + y[4] ** 2 + y[5] ** 2 + y[6] ** 2)
     for i in range(3, 7):
         y[i] /= size
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _rk4(par, record, dt, t, h, y, mode, data, sc, k, out):
     """One RK4 step of the held mode over h from (t, y) into ``out``; False if singular.
 
@@ -116,7 +115,7 @@ def _rk4(par, record, dt, t, h, y, mode, data, sc, k, out):
     return ok
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def resting(mode, y, velocity_tol):
     """True while the body sits flat, sticks and does not move (not integrated)."""
     if mode[M_KIND] != FACE or mode[M_SLIP] != 0:
@@ -127,7 +126,7 @@ def resting(mode, y, velocity_tol):
     return True
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
     """Phase 1: the state at t + h in ``out`` (RK4, or unchanged at rest); False if singular.
 
@@ -142,7 +141,7 @@ def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
     return _rk4(par, record, dt, t, h, y, mode, data, sc, k, out)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def references(par, record, dt, t, y, mode, data, sc, ref, solved=False):
     """The step's references: the slip direction (3) and the pivot's horizontal direction (2).
 
@@ -199,14 +198,14 @@ def references(par, record, dt, t, y, mode, data, sc, ref, solved=False):
     return n_normal, n_tangent if size <= floor or sc[SC_CENTRE][5] == 0.0 else -1
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
     """The event functions at (t, y) in the held mode (>= 0 while it holds); their count."""
     ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
     return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def start_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds, solved=False):
     """A step's references (:func:`references`) and event functions at its start (t, y).
 
@@ -219,7 +218,7 @@ def start_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds, s
     return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds):
     """The event functions of the held mode solved in the scratch at (t, y); their count."""
     rot = sc[SC_ROT]
@@ -272,7 +271,7 @@ def event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds):
     return count
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _closing_time(value, rate_, acceleration):
     """Earliest t > 0 with value + rate t + acceleration t^2 / 2 = 0 [s]; inf if none."""
     if acceleration == 0.0:
@@ -288,7 +287,7 @@ def _closing_time(value, rate_, acceleration):
     return best
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def closing_step(par, y, mode, sc, ref):
     """Largest step [s] that cannot step over the closing of a gap and its reopening.
 
@@ -366,7 +365,7 @@ def closing_step(par, y, mode, sc, ref):
     return max(CLOSING_OVERSHOOT * earliest, MIN_STEP)
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _slip_turn_time(par, mode, sc):
     """Time [s] in which a slip's velocity could stop or turn: |s| / |s'| times SLIP_FRACTION.
 
@@ -420,7 +419,7 @@ def _slip_turn_time(par, mode, sc):
     return max(limit, SLIP_MIN_STEP) / CLOSING_OVERSHOOT
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def slip_floor(par, mode, sc, h):
     """The speed [m/s] below which a flat base's slip keeps its step's starting direction.
 
@@ -448,7 +447,7 @@ def slip_floor(par, mode, sc, h):
     return slip_stiffness(par, sc) * h / FLOOR_STABILITY
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def slip_stiffness(par, sc):
     """``mu N max(1/m, rho^2 (I^-1)_zz)`` [m/s^2]: a flat base's slip of speed |s| turns at
     this / |s|.
@@ -463,7 +462,7 @@ def slip_stiffness(par, sc):
     return par[P_MU_KINETIC] * max(sc[SC_LAM][0], 0.0) * largest + 1e-300
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _whirl_step(lean, areal, landing_time, landing_speed, distance):
     """Largest step [s] of a rolling cylinder whose lean whirls; inf when it lands as in a plane.
 
@@ -498,7 +497,7 @@ def _whirl_step(lean, areal, landing_time, landing_speed, distance):
     return limit
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def slip_velocity(par, record, dt, t, y, mode, data, sc):
     """The held patch's slip velocity at (t, y), at its centre of pressure, in ``sc[SC_SVEL]``.
 
@@ -513,7 +512,7 @@ def slip_velocity(par, record, dt, t, y, mode, data, sc):
     return _size(svel, n_tangent), n_normal, n_tangent
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _size(vector, count):
     """The length of the first ``count`` components of ``vector``."""
     size = 0.0
