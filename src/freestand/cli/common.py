@@ -43,7 +43,7 @@ def warn(message: str) -> None:
 
 COMPILE_NOTICE = (
     "compiling freestand's engines for this machine: the first run of an analysis takes "
-    "minutes (the 3-D engine about three), later runs load them from numba's cache"
+    "minutes (the 3-D engine about two), later runs load them from numba's cache"
 )
 
 
@@ -52,7 +52,7 @@ def compile_notice() -> Iterator[None]:
     """Say once on stderr when numba compiles an engine (its first run on this machine).
 
     The engines are compiled on first use and cached on disk: without a word the
-    first 3-D run would sit at 0 % for some three minutes. numba's event API
+    first 3-D run would sit at 0 % for some two minutes. numba's event API
     reports a compilation (``numba:compile``), not a load from its cache.
     """
     from numba.core import event
