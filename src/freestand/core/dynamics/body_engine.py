@@ -108,7 +108,12 @@ from freestand.core.contact.body_modes import (
     touching_points,
 )
 from freestand.core.contact.compiled import kernel
-from freestand.core.dynamics.body_events import EVENT_TIME, locate
+from freestand.core.dynamics.body_events import (
+    EVENT_TIME,
+    MARGIN_SLACK,
+    inconsistent_start,
+    locate,
+)
 from freestand.core.dynamics.body_step import (
     FN_FRICTION,
     FN_GAP,
@@ -121,6 +126,7 @@ from freestand.core.dynamics.body_step import (
     _normalise,
     advance,
     closing_step,
+    energy_jump,
     resting,
     slip_floor,
     slip_velocity,
@@ -133,6 +139,8 @@ STRETCH_IMPACT = 10.0  # a stretch's point approaching faster than this times g 
 CHATTER_WINDOW = 1e-3  # [s] slip restarts or remedies closer than this in time are a chatter
 CHATTER_COUNT = 3  # this many in a row start a chatter stretch of the remedy
 FACE_CHATTER_WINDOW = 1e-6  # [s] a FACE's slip restarts closer than this in time are a chatter
+IMPACT_WINDOW = 1e-4  # [s] impacts closer than this in time (the remedy's step) accumulate
+IMPACT_COUNT = 10  # this many accumulating impacts in a row start a stretch of the remedy
 FLAT_ROUND_OFF = 1e-13  # [m, m/s, rad/s, -] a sliding flat base's drift left to round-off
 DRIFT_FRACTION = 1e-3  # an EDGE's or POINT's drift above this part of a tolerance is projected
 
@@ -591,7 +599,7 @@ def rest_step(par, record, dt, t, h, rest, rot, lam, centre):
     segment: where both ends hold, the whole step holds. Otherwise the
     crossing is bisected to EVENT_TIME. Returns (step taken, kind fired or -1).
     """
-    slack = 1e-9 * par[P_MASS] * par[P_GRAVITY]
+    slack = MARGIN_SLACK * par[P_MASS] * par[P_GRAVITY]
     normal, friction = rest_margins(par, record, dt, t + h, rest, rot, lam, centre)
     if normal >= -slack and friction >= -slack:
         return h, -1
@@ -748,7 +756,7 @@ def _settle(par, y, sc, data, reach, gap_tol, velocity_tol):
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
 def watch_chatter(t, before, event, mode, istate, chatter):
-    """Count an EDGE's or FACE's slip restarts and remedies; start a chatter's stretch at the third.
+    """Count an EDGE's or FACE's slip restarts and remedies, and impacts; start a chatter's stretch.
 
     A restart is a slip-stop after which the patch slips again from rest
     (the event ``EV_STICK`` with a sliding mode). ``chatter`` holds the last
@@ -758,9 +766,15 @@ def watch_chatter(t, before, event, mode, istate, chatter):
     are the support's acceleration hovering at the friction limit, each a
     real stick and slip, except where they follow each other within
     microseconds: no slip from rest lasts there); at ``CHATTER_COUNT`` the
-    remedy's time stepping takes over (:func:`_start_chatter`). Returns the
+    remedy's time stepping takes over (:func:`_start_chatter`); ``chatter[0:2]``.
+    Impacts that accumulate likewise, the remedy's velocity-level impacts
+    (:func:`resolve`) among them (:func:`_watch_impacts`). Returns the
     event's kind.
     """
+    if event == EV_IMPACT or (event == EV_REMEDY and istate[I_STRETCH] == 0):
+        # an impact, or the velocity-level impact where the impact law had no candidate
+        if _watch_impacts(t, event, mode, istate, chatter) != event:
+            return EV_REMEDY
     if before < EDGE or not (event == EV_REMEDY or (event == EV_STICK and mode[M_SLIP] == 1)):
         return event
     window = CHATTER_WINDOW if before == EDGE else FACE_CHATTER_WINDOW
@@ -769,6 +783,29 @@ def watch_chatter(t, before, event, mode, istate, chatter):
     if chatter[1] < CHATTER_COUNT:
         return event
     chatter[1] = 0.0
+    return _start_chatter(mode, istate, event)
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _watch_impacts(t, event, mode, istate, chatter):
+    """Count impacts that follow each other within ``IMPACT_WINDOW``; a stretch at ``IMPACT_COUNT``.
+
+    Impacts can accumulate (Zeno): a near-flat cylinder landed within the
+    gap tolerance, with the restitution factor 0, was set at rest on its rim
+    point at each landing and landed again 10 microseconds later, 500,000
+    times over a second of record (24 s of computing). Where
+    ``IMPACT_COUNT`` impacts follow each other, each within ``IMPACT_WINDOW``
+    (the remedy's step) of the last, the velocity-level time stepping takes
+    over as for a chatter (:func:`_start_chatter`): it takes such a
+    sequence in its stride, impacts included (Moreau's sweeping process;
+    ``three-d.md``'s remedies for Zeno). ``chatter[2:4]``: the last impact's
+    time [s] and how many followed each other so far. Returns the event's kind.
+    """
+    chatter[3] = chatter[3] + 1.0 if t - chatter[2] < IMPACT_WINDOW else 1.0
+    chatter[2] = t
+    if chatter[3] < IMPACT_COUNT:
+        return event
+    chatter[3] = 0.0
     return _start_chatter(mode, istate, event)
 
 
@@ -816,6 +853,36 @@ def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mo
 
 
 @kernel(cache=True, error_model="numpy", _nrt=True)
+def _start_remedy(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol, istate, force,
+                  patch, out_t, out_y, out_mode, out_force, ev_time, ev_kind, ev_before,
+                  ev_after):  # fmt: skip
+    """The remedy where the held mode cannot go on from its step's start (t, y): an event at t.
+
+    Either the mode is not admissible there
+    (:func:`~freestand.core.dynamics.body_events.inconsistent_start`: a
+    force margin below its level, which could not fire), or its step passed
+    a pole of its contact forces (:func:`~freestand.core.dynamics.body_step.energy_jump`;
+    the step is dropped). The stretch of velocity-level time stepping takes
+    over from (t, y), as where no consistent mode exists, until it finds
+    one. The row recorded at t is written again as the stretch's first.
+    """
+    before = mode[M_KIND]
+    istate[I_REMEDIES] += 1
+    istate[I_STRETCH] = 1
+    _set_free(mode)
+    rotation_matrix(y, sc[SC_ROT])
+    after = touched_patch(par, y, sc[SC_ROT], gap_tol, velocity_tol, patch)
+    istate[I_EVENTS] = _event(t, EV_REMEDY, before, after, istate[I_EVENTS], ev_time, ev_kind,
+                              ev_before, ev_after)  # fmt: skip
+    solve_at(par, record_, dt, t, y, mode, data, sc)
+    istate[I_RECORDS] -= 1
+    record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
+    _stretch_start_row(par, y, sc, gap_tol, velocity_tol, istate, force, patch, out_mode,
+                       out_force)  # fmt: skip
+    istate[I_RECORDS] += 1
+
+
+@kernel(cache=True, error_model="numpy", _nrt=True)
 def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol, t, y, mode,
         data, scratch, istate, out_t, out_y, out_mode, out_force, ev_time, ev_kind, ev_before,
         ev_after):  # fmt: skip
@@ -839,11 +906,13 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
     bracket = np.zeros((3, MAX_EVENT_FUNCTIONS))
     capacity = out_t.shape[0]
     rest = np.zeros((4, 6))
+    work_rot = np.zeros((3, 3))
     rest_ready = False
     force = np.zeros(3)  # a stretch's mean contact force (normal, |tangential|) [N], reach [m]
     patch = np.zeros(3, dtype=np.int64)  # the patch a stretch's step held
     impulses = np.zeros((MAX_POINTS, 3))  # a stretch's step's impulses: the next one's start
-    chatter = np.array([-math.inf, 0.0])  # the last slip restart's time [s], restarts in a row
+    # the last slip restart's time [s], restarts in a row; the same for impacts (watch_chatter)
+    chatter = np.array([-math.inf, 0.0, -math.inf, 0.0])
     fresh = False  # the step's references and event functions at (t, y) are computed
     count = 0
     if istate[I_RECORDS] == 0:
@@ -900,12 +969,23 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             count = start_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
                                     kinds)  # fmt: skip
         fresh = False
+        if inconsistent_start(par, count, start_values, kinds) >= 0:
+            _start_remedy(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol, istate,
+                          force, patch, out_t, out_y, out_mode, out_force, ev_time, ev_kind,
+                          ev_before, ev_after)  # fmt: skip
+            continue
         h = min(_next_end(t, breaks, h_max, t_end) - t, closing_step(par, y, mode, sc, ref))
         data[D_FLOOR] = slip_floor(par, mode, sc, h)
         advance(par, record_, dt, t, h, y, mode, data, sc, k, out, velocity_tol)
         h, which, trials = locate(par, record_, dt, t, h, y, mode, data, sc, k, ref, start_values,
                                   count, trial, values, kinds, bracket, out)  # fmt: skip
         istate[I_TRIALS] += trials
+        if energy_jump(par, record_, dt, t, h, y, out, work_rot):
+            # the step passed a pole of the held mode's contact forces: the remedy from its start
+            _start_remedy(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol, istate,
+                          force, patch, out_t, out_y, out_mode, out_force, ev_time, ev_kind,
+                          ev_before, ev_after)  # fmt: skip
+            continue
         t += h
         for i in range(STATE_SIZE):
             y[i] = out[i]

@@ -46,6 +46,7 @@ INTERPOLANT_TRIALS = 40  # most trials of an event's search on the step's cubic 
 INTERPOLANT_TIME = 1e-10  # [s] width of its bracket that ends that search
 SEED_TRIALS = 4  # most seeded trials of an event's search on RK4 states (locate)
 SEED_OFFSET = 0.45  # a seeded trial lies this part of EVENT_TIME beyond its estimated crossing
+MARGIN_SLACK = 1e-9  # a force margin fires this part of m g below zero (the modes' tolerance)
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -72,9 +73,32 @@ def _levels(par, n, start_values, kinds, levels):
             continue
         slack = 0.0
         if kinds[i] == FN_NORMAL or kinds[i] == FN_FRICTION:
-            slack = 1e-9 * par[P_MASS] * par[P_GRAVITY]
+            slack = MARGIN_SLACK * par[P_MASS] * par[P_GRAVITY]
         levels[i] = -slack if start_values[i] >= -slack else math.nan
     return n
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def inconsistent_start(par, n, start_values, kinds):
+    """Index of a force margin already below its level at the step's start, or -1.
+
+    The held mode was chosen admissible (:func:`~freestand.core.contact.body_modes.select_mode`,
+    within the same slack), so its margins start above their levels, and
+    :func:`_levels` gives a margin that starts below none: it could not
+    fire. Where the mode's solve at its own start differs from the one that
+    chose it, a margin starts below: a sliding EDGE's friction centre (a
+    fixed point of its centre of pressure) has more than one, and the
+    selection and the step's solve, started from slip velocities a
+    projection apart, can find different ones (a slender box, 0.2 x 0.52 x
+    5.6 m, mu 0.92, landed on its edge: N = +11 N at the selection, -3.9 kN
+    at the step's start, and the body then sank through the support). Such
+    a mode must not be held (the engine's remedy takes over).
+    """
+    slack = MARGIN_SLACK * par[P_MASS] * par[P_GRAVITY]
+    for i in range(n):
+        if (kinds[i] == FN_NORMAL or kinds[i] == FN_FRICTION) and start_values[i] < -slack:
+            return i
+    return -1
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
