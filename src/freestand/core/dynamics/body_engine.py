@@ -853,9 +853,8 @@ def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mo
 
 
 @kernel(cache=True, error_model="numpy", _nrt=True)
-def _start_remedy(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol, istate, force,
-                  patch, out_t, out_y, out_mode, out_force, ev_time, ev_kind, ev_before,
-                  ev_after):  # fmt: skip
+def _start_remedy(par, t, y, mode, sc, gap_tol, velocity_tol, istate, patch, ev_time, ev_kind,
+                  ev_before, ev_after):  # fmt: skip
     """The remedy where the held mode cannot go on from its step's start (t, y): an event at t.
 
     Either the mode is not admissible there
@@ -864,7 +863,9 @@ def _start_remedy(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol,
     a pole of its contact forces (:func:`~freestand.core.dynamics.body_step.energy_jump`;
     the step is dropped). The stretch of velocity-level time stepping takes
     over from (t, y), as where no consistent mode exists, until it finds
-    one. The row recorded at t is written again as the stretch's first.
+    one; :func:`run` writes the row recorded at t again as the stretch's
+    first. (Its solve is :func:`run`'s: a function of its own that solves
+    links the kernel again, 15 s more of compilation.)
     """
     before = mode[M_KIND]
     istate[I_REMEDIES] += 1
@@ -874,12 +875,6 @@ def _start_remedy(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol,
     after = touched_patch(par, y, sc[SC_ROT], gap_tol, velocity_tol, patch)
     istate[I_EVENTS] = _event(t, EV_REMEDY, before, after, istate[I_EVENTS], ev_time, ev_kind,
                               ev_before, ev_after)  # fmt: skip
-    solve_at(par, record_, dt, t, y, mode, data, sc)
-    istate[I_RECORDS] -= 1
-    record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
-    _stretch_start_row(par, y, sc, gap_tol, velocity_tol, istate, force, patch, out_mode,
-                       out_force)  # fmt: skip
-    istate[I_RECORDS] += 1
 
 
 @kernel(cache=True, error_model="numpy", _nrt=True)
@@ -969,22 +964,26 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             count = start_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
                                     kinds)  # fmt: skip
         fresh = False
-        if inconsistent_start(par, count, start_values, kinds) >= 0:
-            _start_remedy(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol, istate,
-                          force, patch, out_t, out_y, out_mode, out_force, ev_time, ev_kind,
-                          ev_before, ev_after)  # fmt: skip
-            continue
-        h = min(_next_end(t, breaks, h_max, t_end) - t, closing_step(par, y, mode, sc, ref))
-        data[D_FLOOR] = slip_floor(par, mode, sc, h)
-        advance(par, record_, dt, t, h, y, mode, data, sc, k, out, velocity_tol)
-        h, which, trials = locate(par, record_, dt, t, h, y, mode, data, sc, k, ref, start_values,
-                                  count, trial, values, kinds, bracket, out)  # fmt: skip
-        istate[I_TRIALS] += trials
-        if energy_jump(par, record_, dt, t, h, y, out, work_rot):
-            # the step passed a pole of the held mode's contact forces: the remedy from its start
-            _start_remedy(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol, istate,
-                          force, patch, out_t, out_y, out_mode, out_force, ev_time, ev_kind,
-                          ev_before, ev_after)  # fmt: skip
+        # the held mode not admissible at its start, or its step past a pole: the remedy
+        remedy = inconsistent_start(par, count, start_values, kinds) >= 0
+        if not remedy:
+            h = min(_next_end(t, breaks, h_max, t_end) - t, closing_step(par, y, mode, sc, ref))
+            data[D_FLOOR] = slip_floor(par, mode, sc, h)
+            advance(par, record_, dt, t, h, y, mode, data, sc, k, out, velocity_tol)
+            h, which, trials = locate(par, record_, dt, t, h, y, mode, data, sc, k, ref,
+                                      start_values, count, trial, values, kinds, bracket,
+                                      out)  # fmt: skip
+            istate[I_TRIALS] += trials
+            remedy = energy_jump(par, record_, dt, t, h, y, out, work_rot)
+        if remedy:
+            _start_remedy(par, t, y, mode, sc, gap_tol, velocity_tol, istate, patch, ev_time,
+                          ev_kind, ev_before, ev_after)  # fmt: skip
+            solve_at(par, record_, dt, t, y, mode, data, sc)
+            istate[I_RECORDS] -= 1  # the row at t, again: the stretch's first
+            record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
+            _stretch_start_row(par, y, sc, gap_tol, velocity_tol, istate, force, patch, out_mode,
+                               out_force)  # fmt: skip
+            istate[I_RECORDS] += 1
             continue
         t += h
         for i in range(STATE_SIZE):
