@@ -100,14 +100,23 @@ def test_the_energy_bound_holds_a_free_fall_and_catches_a_jump():
     start[10:13] = (0.3, -0.2, 0.1)
     fall = start.copy()
     fall[9] = -9.81 * h  # free fall: T grows at the bound's own rate
-    assert not energy_jump(par, record, 0.005, 0.0, h, start, fall, rot)
+    memo = np.full(3, np.nan)
+    assert not energy_jump(par, record, 0.005, 0.0, h, start, fall, rot, memo)
+    # the step's end is kept for the next step, which starts there at t + h
+    assert memo[0] == h and memo[2] == pytest.approx(9.81)
+    assert memo[1] == pytest.approx(math.sqrt(0.5 * float(start[10:13] @ body.inertia @ start[10:13])
+                                              + 0.5 * 400.0 * (9.81 * h) ** 2))  # fmt: skip
+    farther = fall.copy()
+    farther[9] = -9.81 * 2.0 * h
+    assert not energy_jump(par, record, 0.005, h, h, fall, farther, rot, memo)
+    assert memo[0] == 2.0 * h
     spun = start.copy()
     spun[10:13] *= 1000.0
-    assert energy_jump(par, record, 0.005, 0.0, h, start, spun, rot)
+    assert energy_jump(par, record, 0.005, 0.0, h, start, spun, rot, np.full(3, np.nan))
     # the bound is sqrt(T_end) <= sqrt(T_start) + 2 h A sqrt(m / 2): just above it fires
     t_start = 0.5 * float(start[10:13] @ body.inertia @ start[10:13])
     edge = math.sqrt(t_start) + 2.0 * h * 9.81 * math.sqrt(200.0)
     faster = start.copy()
     faster[9] = -edge / math.sqrt(200.0) * 1.01
     faster[10:13] = 0.0
-    assert energy_jump(par, record, 0.005, 0.0, h, start, faster, rot)
+    assert energy_jump(par, record, 0.005, 0.0, h, start, faster, rot, np.full(3, np.nan))

@@ -127,6 +127,7 @@ from freestand.core.dynamics.body_step import (
     advance,
     closing_step,
     energy_jump,
+    may_pass_a_pole,
     resting,
     slip_floor,
     slip_velocity,
@@ -902,6 +903,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
     capacity = out_t.shape[0]
     rest = np.zeros((4, 6))
     work_rot = np.zeros((3, 3))
+    energy = np.array([math.nan, 0.0, 0.0])  # the last step's end for energy_jump
     rest_ready = False
     force = np.zeros(3)  # a stretch's mean contact force (normal, |tangential|) [N], reach [m]
     patch = np.zeros(3, dtype=np.int64)  # the patch a stretch's step held
@@ -974,7 +976,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
                                       start_values, count, trial, values, kinds, bracket,
                                       out)  # fmt: skip
             istate[I_TRIALS] += trials
-            remedy = energy_jump(par, record_, dt, t, h, y, out, work_rot)
+            remedy = may_pass_a_pole(mode) and energy_jump(par, record_, dt, t, h, y, out,
+                                                           work_rot, energy)  # fmt: skip
         if remedy:
             _start_remedy(par, t, y, mode, sc, gap_tol, velocity_tol, istate, patch, ev_time,
                           ev_kind, ev_before, ev_after)  # fmt: skip
@@ -1012,6 +1015,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
                 project(par, record_, dt, t, y, mode, data, sc)
             else:
                 solved = True  # locate's solve at the step's end: the state is unchanged
+        if not solved:
+            energy[0] = math.nan  # the state changed at the step's end: energy_jump's start anew
         if istate[I_STRETCH] == 0 and not resting(mode, y, velocity_tol):
             # the next step's references and event functions: their solve is the record's
             count = start_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,

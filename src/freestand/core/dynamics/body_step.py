@@ -525,7 +525,7 @@ def _size(vector, count):
     return math.sqrt(size)
 
 
-@kernel(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def kinetic_energy(par, y, rot):
     """(1/2) m |v|^2 + (1/2) omega_b . I omega_b [J] of the state (omega_b = R^T omega, body frame).
 
@@ -543,8 +543,22 @@ def kinetic_energy(par, y, rot):
     return 0.5 * par[P_MASS] * (y[7] ** 2 + y[8] ** 2 + y[9] ** 2) + 0.5 * rotational
 
 
-@kernel(cache=True, error_model="numpy", _nrt=False)
-def energy_jump(par, record, dt, t, h, y, end, rot):
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def may_pass_a_pole(mode):
+    """Whether the held mode's contact forces can pass a pole: a sliding POINT or EDGE.
+
+    A pole needs the friction of a slip coupled into the normal direction
+    (Painleve's paradox): a sticking patch's forces solve a positive definite
+    system, and a flat FACE's normal force is the vertical balance's, ``m (g -
+    a_v)`` (its friction is horizontal, its moments taken by the held tilt),
+    whatever it slides on. Only the modes that can are checked
+    (:func:`energy_jump`): the check cost the sliding cask 5 % of its time.
+    """
+    return mode[M_SLIP] == 1 and (mode[M_KIND] == POINT or mode[M_KIND] == EDGE)
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def energy_jump(par, record, dt, t, h, y, end, rot, memo):
     """True where a step from (t, ``y``) to (t + h, ``end``) gained more kinetic energy than it can.
 
     In the support's frame only gravity and the support's d'Alembert force
@@ -560,13 +574,21 @@ def energy_jump(par, record, dt, t, h, y, end, rot):
     Brogliato 1999), and its RK4 stages and event search sampled forces of
     any size (a slender box, 0.14 x 0.22 x 4.9 m, mu 0.63, on a sliding
     corner: 2,400 rad/s at the located lift-off, from 2 rad/s). ``rot``
-    (3, 3) is work space.
+    (3, 3) is work space. ``memo`` = (time [s], sqrt(T) [J^0.5], A [m/s^2]):
+    the step's end, which the next step starts from where its time is t
+    (the caller sets the time to NaN where it changes the state at the
+    step's end: an event, a projection).
     """
-    a_x, a_y, a_v = support_acceleration(record, dt, t)
-    b_x, b_y, b_v = support_acceleration(record, dt, t + h)
     g = par[P_GRAVITY]
-    load = max(math.sqrt(a_x * a_x + a_y * a_y + (g - a_v) ** 2),
-               math.sqrt(b_x * b_x + b_y * b_y + (g - b_v) ** 2))  # fmt: skip
-    start = math.sqrt(kinetic_energy(par, y, rot))
-    bound = start + ENERGY_GROWTH * h * load * math.sqrt(0.5 * par[P_MASS])
-    return math.sqrt(kinetic_energy(par, end, rot)) > bound * (1.0 + 1e-9)
+    if memo[0] == t:
+        start, load_start = memo[1], memo[2]
+    else:
+        a_x, a_y, a_v = support_acceleration(record, dt, t)
+        load_start = math.sqrt(a_x * a_x + a_y * a_y + (g - a_v) ** 2)
+        start = math.sqrt(kinetic_energy(par, y, rot))
+    b_x, b_y, b_v = support_acceleration(record, dt, t + h)
+    load_end = math.sqrt(b_x * b_x + b_y * b_y + (g - b_v) ** 2)
+    finish = math.sqrt(kinetic_energy(par, end, rot))
+    memo[0], memo[1], memo[2] = t + h, finish, load_end
+    bound = start + ENERGY_GROWTH * h * max(load_start, load_end) * math.sqrt(0.5 * par[P_MASS])
+    return finish > bound * (1.0 + 1e-9)
