@@ -768,45 +768,41 @@ def watch_chatter(t, before, event, mode, istate, chatter):
     real stick and slip, except where they follow each other within
     microseconds: no slip from rest lasts there); at ``CHATTER_COUNT`` the
     remedy's time stepping takes over (:func:`_start_chatter`); ``chatter[0:2]``.
-    Impacts that accumulate likewise, the remedy's velocity-level impacts
-    (:func:`resolve`) among them (:func:`_watch_impacts`). Returns the
+
+    Impacts likewise, the remedy's velocity-level impacts (:func:`resolve`)
+    among them: they can accumulate (Zeno). A near-flat cylinder landed
+    within the gap tolerance, with the restitution factor 0, was set at rest
+    on its rim point at each landing and landed again 10 microseconds
+    later, 500,000 times over a second of record (24 s of computing). Where
+    ``IMPACT_COUNT`` impacts follow each other, each within ``IMPACT_WINDOW``
+    (the remedy's step) of the last, the time stepping takes such a sequence
+    in its stride, impacts included (Moreau's sweeping process;
+    ``three-d.md``'s remedies for Zeno); ``chatter[2:4]``. Returns the
     event's kind.
     """
     if event == EV_IMPACT or (event == EV_REMEDY and istate[I_STRETCH] == 0):
         # an impact, or the velocity-level impact where the impact law had no candidate
-        if _watch_impacts(t, event, mode, istate, chatter) != event:
+        if _in_a_row(t, IMPACT_WINDOW, IMPACT_COUNT, chatter, 2, mode, istate, event) != event:
             return EV_REMEDY
     if before < EDGE or not (event == EV_REMEDY or (event == EV_STICK and mode[M_SLIP] == 1)):
         return event
     window = CHATTER_WINDOW if before == EDGE else FACE_CHATTER_WINDOW
-    chatter[1] = chatter[1] + 1.0 if t - chatter[0] < window else 1.0
-    chatter[0] = t
-    if chatter[1] < CHATTER_COUNT:
-        return event
-    chatter[1] = 0.0
-    return _start_chatter(mode, istate, event)
+    return _in_a_row(t, window, CHATTER_COUNT, chatter, 0, mode, istate, event)
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _watch_impacts(t, event, mode, istate, chatter):
-    """Count impacts that follow each other within ``IMPACT_WINDOW``; a stretch at ``IMPACT_COUNT``.
+def _in_a_row(t, window, limit, chatter, slot, mode, istate, event):
+    """Count an occurrence at t; at ``limit`` in a row, each within ``window`` [s], a stretch.
 
-    Impacts can accumulate (Zeno): a near-flat cylinder landed within the
-    gap tolerance, with the restitution factor 0, was set at rest on its rim
-    point at each landing and landed again 10 microseconds later, 500,000
-    times over a second of record (24 s of computing). Where
-    ``IMPACT_COUNT`` impacts follow each other, each within ``IMPACT_WINDOW``
-    (the remedy's step) of the last, the velocity-level time stepping takes
-    over as for a chatter (:func:`_start_chatter`): it takes such a
-    sequence in its stride, impacts included (Moreau's sweeping process;
-    ``three-d.md``'s remedies for Zeno). ``chatter[2:4]``: the last impact's
-    time [s] and how many followed each other so far. Returns the event's kind.
+    ``chatter[slot]`` is the last occurrence's time [s], ``chatter[slot + 1]``
+    how many followed each other so far (:func:`watch_chatter`). Returns the
+    event's kind: a remedy where the chatter's stretch starts (:func:`_start_chatter`).
     """
-    chatter[3] = chatter[3] + 1.0 if t - chatter[2] < IMPACT_WINDOW else 1.0
-    chatter[2] = t
-    if chatter[3] < IMPACT_COUNT:
+    chatter[slot + 1] = chatter[slot + 1] + 1.0 if t - chatter[slot] < window else 1.0
+    chatter[slot] = t
+    if chatter[slot + 1] < limit:
         return event
-    chatter[3] = 0.0
+    chatter[slot + 1] = 0.0
     return _start_chatter(mode, istate, event)
 
 
