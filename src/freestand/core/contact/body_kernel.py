@@ -1576,18 +1576,26 @@ def flat_gap(par, y, rot):
     return g + 2.0 * par[P_HALF_X] * sin_tilt(rot)
 
 
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def kinetic_energy(par, y, rot):
+    """(1/2) m |v|^2 + (1/2) omega_b . I omega_b [J] of the state (omega_b = R^T omega, body frame).
+
+    ``rot`` (3, 3) is work space (the state's rotation is written to it).
+    """
+    rotation_matrix(y, rot)
+    kinetic = 0.5 * par[P_MASS] * (y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
+    b0 = rot[0, 0] * y[10] + rot[1, 0] * y[11] + rot[2, 0] * y[12]
+    b1 = rot[0, 1] * y[10] + rot[1, 1] * y[11] + rot[2, 1] * y[12]
+    b2 = rot[0, 2] * y[10] + rot[1, 2] * y[11] + rot[2, 2] * y[12]
+    for i in range(3):
+        bi = b0 if i == 0 else (b1 if i == 1 else b2)
+        for j in range(3):
+            bj = b0 if j == 0 else (b1 if j == 1 else b2)
+            kinetic += 0.5 * bi * par[P_INERTIA + 3 * i + j] * bj
+    return kinetic
+
+
 @kernel(cache=True, error_model="numpy", _nrt=True)
 def energy(par, y):
     """Kinetic plus potential energy m g z_G [J] in the support's frame (no excitation)."""
-    rot = np.empty((3, 3))
-    rotation_matrix(y, rot)
-    m = par[P_MASS]
-    kinetic = 0.5 * m * (y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
-    # omega in the body frame
-    b = np.empty(3)
-    for i in range(3):
-        b[i] = rot[0, i] * y[10] + rot[1, i] * y[11] + rot[2, i] * y[12]
-    for i in range(3):
-        for j in range(3):
-            kinetic += 0.5 * b[i] * par[P_INERTIA + 3 * i + j] * b[j]
-    return kinetic + m * par[P_GRAVITY] * y[2]
+    return kinetic_energy(par, y, np.empty((3, 3))) + par[P_MASS] * par[P_GRAVITY] * y[2]

@@ -24,6 +24,7 @@ from freestand.core.contact.body_kernel import (
     row_counts,
     state_rate,
 )
+from freestand.core.contact.body_modes import RELATIVE_TOLERANCE
 from freestand.core.contact.compiled import kernel
 from freestand.core.contact.regula_falsi import narrowed
 from freestand.core.dynamics.body_step import (
@@ -46,7 +47,7 @@ INTERPOLANT_TRIALS = 40  # most trials of an event's search on the step's cubic 
 INTERPOLANT_TIME = 1e-10  # [s] width of its bracket that ends that search
 SEED_TRIALS = 4  # most seeded trials of an event's search on RK4 states (locate)
 SEED_OFFSET = 0.45  # a seeded trial lies this part of EVENT_TIME beyond its estimated crossing
-MARGIN_SLACK = 1e-9  # a force margin fires this part of m g below zero (the modes' tolerance)
+MARGIN_SLACK = RELATIVE_TOLERANCE  # a force margin fires this part of m g below zero (as modes)
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)

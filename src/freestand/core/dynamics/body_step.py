@@ -26,7 +26,6 @@ from freestand.core.contact.body_kernel import (
     M_SLIP,
     P_GRAVITY,
     P_HALF_X,
-    P_INERTIA,
     P_MASS,
     P_MU_KINETIC,
     P_SHAPE,
@@ -48,6 +47,7 @@ from freestand.core.contact.body_kernel import (
     corner_gap,
     cross,
     friction_margin,
+    kinetic_energy,
     lowest_rim_angle,
     normal_margin,
     pivot_direction,
@@ -523,24 +523,6 @@ def _size(vector, count):
     for k in range(count):
         size += vector[k] ** 2
     return math.sqrt(size)
-
-
-@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
-def kinetic_energy(par, y, rot):
-    """(1/2) m |v|^2 + (1/2) omega_b . I omega_b [J] of the state (omega_b = R^T omega, body frame).
-
-    ``rot`` (3, 3) is work space (the state's rotation is written to it).
-    """
-    rotation_matrix(y, rot)
-    w0 = rot[0, 0] * y[10] + rot[1, 0] * y[11] + rot[2, 0] * y[12]
-    w1 = rot[0, 1] * y[10] + rot[1, 1] * y[11] + rot[2, 1] * y[12]
-    w2 = rot[0, 2] * y[10] + rot[1, 2] * y[11] + rot[2, 2] * y[12]
-    rotational = 0.0
-    for i in range(3):
-        wi = w0 if i == 0 else (w1 if i == 1 else w2)
-        row = P_INERTIA + 3 * i
-        rotational += wi * (par[row] * w0 + par[row + 1] * w1 + par[row + 2] * w2)
-    return 0.5 * par[P_MASS] * (y[7] ** 2 + y[8] ** 2 + y[9] ** 2) + 0.5 * rotational
 
 
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
