@@ -21,28 +21,6 @@ ROOT = Path(__file__).resolve().parents[1]
 CRANE = ROOT / "examples" / "crane.toml"
 
 
-@pytest.hookimpl(tryfirst=True)
-def pytest_sessionstart(session):
-    """With test workers (``-n``), compile the engines once before they start.
-
-    Each worker would otherwise compile the planar and the 3-D engine itself on
-    a fresh clone (numba's cache is written only when a compilation ends), some
-    two minutes of a core each; see ``tests/compile_engines.py``.
-    """
-    config = session.config
-    if hasattr(config, "workerinput") or len(config.getoption("tx", None) or []) < 2:
-        return
-    if os.environ.get("NUMBA_DISABLE_JIT", "0") != "0":
-        return
-    from tests.compile_engines import compile_side_by_side
-
-    seconds, failed = compile_side_by_side()
-    reporter = config.pluginmanager.get_plugin("terminalreporter")
-    if reporter is not None:
-        note = f" ({', '.join(failed)} failed: the tests compile it)" if failed else ""
-        reporter.write_line(f"engines compiled into numba's cache in {seconds:.0f} s{note}")
-
-
 @pytest.fixture(scope="session")
 def crane_path() -> Path:
     return CRANE
