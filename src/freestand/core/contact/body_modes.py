@@ -74,6 +74,7 @@ from freestand.core.contact.body_kernel import (
     sin_tilt,
     solve_patch,
     tangential_velocity,
+    unit_slip,
 )
 from freestand.core.contact.compiled import kernel
 from freestand.core.contact.regula_falsi import retained_scale
@@ -454,19 +455,14 @@ def _restore_own_slip(sc, n_tangent, stored):
     limit, its corner forces +11 and +135 N at the selection and -3.9 kN at
     the step's start). Not pulled, or s within ``SLIP_FLOOR``: False.
     """
-    svel, own = sc[SC_SVEL], sc[SC_DIR]
+    svel = sc[SC_SVEL]
+    if unit_slip(svel, n_tangent, stored, sc[SC_DIR]):  # the solve's own u: not pulled
+        return False
     size = 0.0
-    along = 0.0
     for k in range(n_tangent):
         size += svel[k] ** 2
-        along += svel[k] * stored[D_SLIP + k]
     size = math.sqrt(size)
     if size <= SLIP_FLOOR:
-        return False
-    pulled = along <= 0.0
-    for k in range(n_tangent):
-        pulled = pulled or abs(own[k] - svel[k] / size) > 1e-12
-    if not pulled:
         return False
     for k in range(n_tangent):
         stored[D_SLIP + k] = svel[k] / size
