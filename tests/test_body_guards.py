@@ -130,12 +130,10 @@ def test_a_pulled_slip_takes_its_own_direction_for_the_next_solve():
     stored = np.zeros(body_kernel.DATA_SIZE)
     start = body_kernel.D_SLIP
     stored[start : start + 3] = (1.0, 0.0, 0.0)
-    sc[body_kernel.SC_SVEL][:3] = (3e-3, 4e-3, 0.0)
-    sc[body_kernel.SC_DIR][:3] = (0.6, 0.8, 0.0)  # the slip's own direction: kept
+    sc[body_kernel.SC_SVEL][:3] = (3e-3, 4e-3, 0.0)  # on r's side: u is its own, r kept
     assert not _restore_own_slip(sc, 3, stored)
     assert stored[start : start + 3].tolist() == [1.0, 0.0, 0.0]
     sc[body_kernel.SC_SVEL][:3] = (-3e-3, 4e-3, 0.0)  # turned against r: u was pulled
-    sc[body_kernel.SC_DIR][:3] = (0.6, 0.8, 0.0)
     assert _restore_own_slip(sc, 3, stored)
     np.testing.assert_allclose(stored[start : start + 3], (-0.6, 0.8, 0.0))
     sc[body_kernel.SC_SVEL][:3] = (1e-8, 0.0, 0.0)  # within the floor: no direction of its own

@@ -445,9 +445,9 @@ def _restore_own_slip(sc, n_tangent, stored):
     """Whether a kinetic solve's friction was pulled off its own slip at its centre; if so,
     the slip's direction there becomes the stored one (``stored[D_SLIP:]``), to solve again.
 
-    The solve's u (``sc[SC_DIR]``) follows the slip velocity s at the centre
-    found (``sc[SC_SVEL]``) while s points on the stored direction r's side;
-    else it is pulled towards r (``slip_law``). The selection's r is the slip
+    The slip law (``body_kernel.unit_slip``) gives u along the slip velocity s
+    at the centre found (``sc[SC_SVEL]``, as the solve left it) while s points
+    on the stored direction r's side, and else pulls it towards r. The selection's r is the slip
     at the rows' first centre (an edge's middle, the base's centre), but the
     step starts from r = s / |s| at the centre of pressure
     (``body_step.references``): a mode admissible only under the first pull
