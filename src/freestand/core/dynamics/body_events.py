@@ -87,13 +87,12 @@ def inconsistent_start(par, n, start_values, kinds):
     within the same slack), so its margins start above their levels, and
     :func:`_levels` gives a margin that starts below none: it could not
     fire. Where the mode's solve at its own start differs from the one that
-    chose it, a margin starts below: a sliding EDGE's friction centre (a
-    fixed point of its centre of pressure) has more than one, and the
-    selection and the step's solve, started from slip velocities a
-    projection apart, can find different ones (a slender box, 0.2 x 0.52 x
-    5.6 m, mu 0.92, landed on its edge: N = +11 N at the selection, -3.9 kN
-    at the step's start, and the body then sank through the support). Such
-    a mode must not be held (the engine's remedy takes over).
+    chose it, a margin starts below (a slender box, 0.2 x 0.52 x 5.6 m, mu
+    0.92, landed on its edge: N = +11 N at the selection, -3.9 kN at the
+    step's start, and the body then sank through the support; there the
+    selection's slip law had pulled the friction towards another stored
+    direction than the step's, which ``body_modes._restore_own_slip`` now
+    prevents). Such a mode must not be held (the engine's remedy takes over).
     """
     slack = MARGIN_SLACK * par[P_MASS] * par[P_GRAVITY]
     for i in range(n):
