@@ -158,7 +158,9 @@ def body_parameters(body: Body, gravity: float, restitution: float = 1.0) -> np.
     """The parameter vector of the compiled kernel for ``body`` (SI units).
 
     ``restitution`` [-] multiplies the body's velocity after each impact (1:
-    the plastic impact law; the planar engine's factor, ``docs/timehistory.md``).
+    the plastic impact law; the planar engine's factor, ``docs/timehistory.md``),
+    but for a turn the impact leaves
+    (:func:`~freestand.core.contact.body_impulse.restitution_velocity`).
     """
     out = np.zeros(P_SIZE)
     out[P_MASS] = body.mass

@@ -42,7 +42,12 @@ import math
 
 import numpy as np
 
-from freestand.core.contact.body_impulse import MAX_POINTS, base_points, velocity_impact
+from freestand.core.contact.body_impulse import (
+    MAX_POINTS,
+    base_points,
+    restitution_velocity,
+    velocity_impact,
+)
 from freestand.core.contact.body_kernel import (
     D_FLOOR,
     D_ONSET,
@@ -59,7 +64,6 @@ from freestand.core.contact.body_kernel import (
     P_HALF_Y,
     P_MASS,
     P_MU_KINETIC,
-    P_RESTITUTION,
     P_SHAPE,
     PIVOT_LEAN,
     POINT,
@@ -360,13 +364,14 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
         elif gap > gap_tol:
             _flatten(par, y, rot, sc[SC_PROBE][0])
     if which == FN_GAP or which == FN_LANDING:
+        held_before = mode[M_KIND] != FREE
         prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
+        arms = np.empty((MAX_POINTS, 3))
+        count = base_points(par, y, rot, data[D_PSI], gap_tol, arms)
         after = np.empty(6)
         chosen = impact(par, y, sc, gap_tol, data[D_PSI], mode, data, after)
         if chosen == NONE_ADMISSIBLE:
             # no candidate of the impact law: the velocity-level impact at the base points
-            arms = np.empty((MAX_POINTS, 3))
-            count = base_points(par, y, rot, data[D_PSI], gap_tol, arms)
             for i in range(6):
                 after[i] = y[7 + i]
             velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], after,
@@ -377,8 +382,9 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
             istate[I_IMPACTS] += 1
             event = EV_IMPACT
         # the restitution factor on the velocity after (relative to the support)
+        restitution_velocity(par, sc[SC_INV], arms, count, held_before, after)
         for i in range(6):
-            y[7 + i] = par[P_RESTITUTION] * after[i]
+            y[7 + i] = after[i]
     excluded = np.array([-1, 0, 0], dtype=np.int64)
     if which == FN_NORMAL:
         excluded[0] = mode[M_KIND]
