@@ -42,15 +42,23 @@ RUNTIME_ARGUMENTS = frozenset(
 
 
 class RuntimeArgumentDispatcher(CPUDispatcher):
-    """numba's CPU dispatcher, typing the arguments in :data:`RUNTIME_ARGUMENTS` by type."""
+    """numba's CPU dispatcher, typing the arguments in :data:`RUNTIME_ARGUMENTS` by type.
 
-    def get_call_template(self, args, kws):
+    It overrides ``get_call_template``, which numba's typing calls with the
+    argument types of a call from compiled code (numba 0.68 here; not a
+    public interface). Further arguments a later numba may pass are handed
+    on untouched; were the method renamed, the override would go unused and
+    each literal compiled on its own (slower to compile, the same results):
+    ``tests/test_compiled.py`` checks that it is used.
+    """
+
+    def get_call_template(self, args, kws, *more, **options):
         positions = _runtime_positions(self.py_func)
         args = tuple(
             types.unliteral(value) if position in positions else value
             for position, value in enumerate(args)
         )
-        return super().get_call_template(args, kws)
+        return super().get_call_template(args, kws, *more, **options)
 
 
 _POSITIONS: dict = {}
