@@ -17,7 +17,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
-from freestand.core.body import Body, Box
+from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact.body_impulse import (
     kinetic_energy,
     restitution_velocity,
@@ -85,16 +85,24 @@ def test_the_kept_turn_fixes_both_points_and_splits_the_energy(inertia, arms, ve
     assert kinetic_energy(par, inv_inertia, after) <= energy * (1.0 + 1e-12)
 
 
-def test_the_planar_law_holds_after_a_flight_and_where_three_points_touch():
-    """No pivot before (a flight), or three points (no turn fixes them): e times the velocity."""
+def test_the_planar_law_holds_after_a_flight_where_three_points_touch_and_for_a_cylinder():
+    """No pivot before (a flight), three corners (no turn fixes them), or a cylinder (whose
+    impacts are flat landings; two rim points sampled near flat are not a pivot and a
+    landing point): e times the velocity."""
     par = body_parameters(BOX, GRAVITY, 0.6)
+    cylinder = body_parameters(Body("c", Cylinder(0.4, 2.0), 500.0, Friction(1.0, 1.0)),
+                               GRAVITY, 0.6)  # fmt: skip
     inv_inertia = np.diag([1 / 80.0, 1 / 60.0, 1 / 25.0])
     arms = np.array([[0.3, 0.2, -1.0], [-0.3, 0.2, -1.0], [-0.3, -0.2, -1.0]])
     v = np.array([0.1, -0.2, 0.05, 0.3, -0.4, 0.2])
-    for count, held_before in ((2, False), (3, True), (1, True)):
+    for parameters, count, held_before in ((par, 2, False), (par, 3, True), (par, 1, True),
+                                           (cylinder, 2, True)):  # fmt: skip
         after = v.copy()
-        restitution_velocity(par, inv_inertia, arms, count, held_before, after)
+        restitution_velocity(parameters, inv_inertia, arms, count, held_before, after)
         assert np.allclose(after, 0.6 * v, rtol=0, atol=1e-15)
+    kept = v.copy()
+    restitution_velocity(par, inv_inertia, arms, 2, True, kept)
+    assert not np.allclose(kept, 0.6 * v)  # a box's pivot and landing corner: the turn kept
     plastic = body_parameters(BOX, GRAVITY, 1.0)
     after = v.copy()
     restitution_velocity(plastic, inv_inertia, arms, 2, True, after)

@@ -387,8 +387,9 @@ def restitution_velocity(par, inv_inertia, arms, count, held_before, velocity):
     """The restitution factor e on the velocity after an impact (in place): ``v_k + e (v - v_k)``.
 
     ``velocity`` (6) is the plastic impact's velocity after, relative to the
-    support; ``arms`` (count, 3) [m] the base points touching at the impact;
-    ``held_before``: the body was on the support before it (not in flight).
+    support; ``arms`` (count, 3) [m] the base points touching at the impact
+    (:func:`base_points`); ``held_before``: the body was on the support
+    before it (not in flight).
     In a plane the factor multiplies the whole velocity after (``e`` times
     Housner's angular velocity, as the planar engine's factor; Housner 1963,
     the reference paper's restitution). In 3-D a box turning on a corner
@@ -399,18 +400,22 @@ def restitution_velocity(par, inv_inertia, arms, count, held_before, velocity):
     ``benchmarks/mujoco_body.py``'s robustness sample) took 8.7 s to fall
     over, through 2,766 such landings, where e = 1 took 4.2 s; now 4.6 s. So
     ``v_k``, the turn about the line through the pivot held before and the
-    point landing (:func:`turn_about_line`: exactly two points touching,
-    the body on the support before), is kept, and the factor acts on the
+    corner landing (:func:`turn_about_line`: exactly two corners touching,
+    the box on the support before), is kept, and the factor acts on the
     rest, M-orthogonal to it; ``v_k = 0`` in a plane (two points of a
     planar block's section fix it), after a flight (no pivot before), and
-    where three or more points touch, so the planar law is unchanged. The
-    kinetic energy after is ``T_k + e^2 (T - T_k) <= T``.
+    where three or more corners touch, so the planar law is unchanged. The
+    kinetic energy after is ``T_k + e^2 (T - T_k) <= T``. A cylinder's
+    tilted base touches at one rim point, and its impacts are flat
+    landings: the planar law (its rim points sampled within the gap
+    tolerance of a nearly flat base, two of them, are not a pivot and a
+    landing point).
     """
     e = par[P_RESTITUTION]
     if e == 1.0:
         return
     kept = np.zeros(6)
-    if held_before:
+    if held_before and par[P_SHAPE] == SHAPE_BOX:
         turn_about_line(par, inv_inertia, arms, count, velocity, kept)
     for i in range(6):
         velocity[i] = kept[i] + e * (velocity[i] - kept[i])

@@ -366,10 +366,10 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
     if which == FN_GAP or which == FN_LANDING:
         held_before = mode[M_KIND] != FREE
         prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
-        arms = np.empty((MAX_POINTS, 3))
-        count = base_points(par, y, rot, data[D_PSI], gap_tol, arms)
         after = np.empty(6)
         chosen = impact(par, y, sc, gap_tol, data[D_PSI], mode, data, after)
+        arms = np.empty((MAX_POINTS, 3))
+        count = base_points(par, y, rot, data[D_PSI], gap_tol, arms)
         if chosen == NONE_ADMISSIBLE:
             # no candidate of the impact law: the velocity-level impact at the base points
             for i in range(6):
