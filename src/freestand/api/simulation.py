@@ -426,9 +426,9 @@ def simulate(
         g [m/s^2] (default: the model's, 9.81 for a stack).
     restitution : float, optional
         Factor [-] in [0, 1] on the post-impact relative velocities: one per
-        block or one for all of a planar stack; one for a 3-D body, whose
-        turn about the line through its pivot and a point landing beside it
-        is kept whole (``docs/three-d.md``).
+        block or one for all of a planar stack; one for a 3-D body (a box's
+        turn about the line through its pivot corner and a corner landing
+        beside it is kept whole, ``docs/three-d.md``).
     until_rest : bool, optional
         Go on after the record until the configuration is at rest or has
         overturned, at most ``free_time`` [s] after it (status ``"capped"``

@@ -270,9 +270,9 @@ def simulate_body(
     restitution : float, optional
         Factor e in [0, 1] on the body's velocity after each impact [-] (1:
         the plastic law; in a plane the angular-velocity ratio becomes ``e``
-        times Housner's, as the planar engine's factor). A turn about the
-        line through the pivot before and a single point landing beside it
-        is kept whole
+        times Housner's, as the planar engine's factor). A box's turn about
+        the line through its pivot corner and a single corner landing beside
+        it is kept whole
         (:func:`~freestand.core.contact.body_impulse.restitution_velocity`).
 
     Returns
