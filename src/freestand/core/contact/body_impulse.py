@@ -391,8 +391,8 @@ def restitution_velocity(par, inv_inertia, arms, count, held_before, velocity):
     (:func:`base_points`); ``held_before``: the body was on the support
     before it (not in flight).
     In a plane the factor multiplies the whole velocity after (``e`` times
-    Housner's angular velocity, as the planar engine's factor; Housner 1963,
-    the reference paper's restitution). In 3-D a box turning on a corner
+    Housner's angular velocity, as the planar engine's factor,
+    ``docs/timehistory.md``). In 3-D a box turning on a corner
     whose neighbour lands (the two corners of an edge: a fall over that edge
     with a little wobble) would lose the fall's velocity at every such
     landing, though its turn about the edge through the two points neither
