@@ -136,6 +136,7 @@ from freestand.core.dynamics.body_step import (
     slip_floor,
     slip_velocity,
     start_functions,
+    turn_step,
 )
 
 STRETCH_STEP = 1e-4  # [s] step of the velocity-level time stepping (the remedy)
@@ -971,7 +972,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         # the held mode not admissible at its start, or its step past a pole: the remedy
         remedy = inconsistent_start(par, count, start_values, kinds) >= 0
         if not remedy:
-            h = min(_next_end(t, breaks, h_max, t_end) - t, closing_step(par, y, mode, sc, ref))
+            h = min(_next_end(t, breaks, h_max, t_end) - t, closing_step(par, y, mode, sc, ref),
+                    turn_step(y))  # fmt: skip
             data[D_FLOOR] = slip_floor(par, mode, sc, h)
             advance(par, record_, dt, t, h, y, mode, data, sc, k, out, velocity_tol)
             h, which, trials = locate(par, record_, dt, t, h, y, mode, data, sc, k, ref,
