@@ -3,7 +3,7 @@
 Stacks of 1-3 blocks of random proportions, masses and frictions, 15 % of the
 interfaces with ``sliding = "none"`` and 20 % with an end stop; half the
 records with a vertical component; peaks 1-12 m/s^2. Used by
-``tests/test_no_failed_simulation.py`` and ``benchmarks/robustness.py``.
+``tests/test_no_failed_simulation.py`` and ``tests/test_timehistory.py``.
 """
 
 from __future__ import annotations

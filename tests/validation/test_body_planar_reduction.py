@@ -184,7 +184,10 @@ def test_a_slide_that_outlasts_its_pulse_stops_as_newmarks_block():
 @nb.njit(cache=False)
 def _cone_slide_peak(ax, ay, av, dt, mu, gravity, h, duration):
     """Peak slide [m] of a point mass on the circular Coulomb cone: Moreau's catching-up
-    scheme at step h (the friction impulse projected on |p| <= h mu (g - a_v)), first order."""
+    scheme at step h (the friction impulse projected on |p| <= h mu (g - a_v)), first order.
+
+    The scheme of ``benchmarks/mujoco_body.py``'s ``slide_reference``, which cannot be
+    imported here (that module needs MuJoCo, not a test dependency)."""
     vx = vy = x = y = peak = 0.0
     for k in range(int(round(duration / h))):
         s = (k + 0.5) * h / dt
