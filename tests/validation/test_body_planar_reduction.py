@@ -30,7 +30,7 @@ from freestand.core.dynamics.timehistory import simulate
 from freestand.core.model import Block, Friction, Stack
 from freestand.core.motion.ground_motion import GroundMotion
 
-CASK_RECORDS = Path(__file__).parents[2] / "examples" / "cask-records"
+RECORDS = Path(__file__).parents[2] / "examples" / "records"
 DT = 0.01
 TIME = np.arange(0.0, 2.0 + DT / 2, DT)
 PULSE = np.where(TIME < 1.0, 6.0 * np.sin(2.0 * np.pi * TIME), 0.0)
@@ -208,18 +208,20 @@ def _cone_slide_peak(ax, ay, av, dt, mu, gravity, h, duration):
 
 
 def test_a_squat_cylinder_under_two_components_slides_as_a_point_on_the_circular_cone():
-    """Under x, y and the vertical of a three-component record (the cask example's sixth),
-    stick and slip in turning directions: the peak slide at the default step equals the
-    point mass's on the circular cone (Moreau's catching-up steps of 2 us; 1 us differs by
-    5e-8). Tolerance 3e-3: a slip's first step from rest keeps its onset's direction while
-    the support's force turns, for at most ``body_step.ONSET_STEP``; measured 8.6e-4 (54
-    cases of six records, three scales and three coefficients: 9.6e-4 at most). Before that
-    bound the first step ran to the record's next sample, and this case slid 1.27 % too far
-    (1.51 against 1.49 mm)."""
-    record = fs.load_record(CASK_RECORDS / "rec06_X.AT2", horizontal_y=CASK_RECORDS / "rec06_Y.AT2",
-                            vertical=CASK_RECORDS / "rec06_UP.AT2")  # fmt: skip
-    motion = SupportMotion3(record.dt, record.horizontal, record.horizontal_y, record.vertical)
-    duration = 15.0
+    """Under two horizontal components that turn (the example's synthetic record on x, the
+    same record 1.555 s later on y) and the vertical, all x 1.5, stick and slip in turning
+    directions: the peak slide at the default step equals the point mass's on the circular
+    cone (Moreau's catching-up steps of 2 us; 1 us differs by 5e-8). Tolerance 3e-3: a
+    slip's first step from rest keeps its onset's direction while the support's force
+    turns, for at most ``body_step.ONSET_STEP``; measured 6.4e-4 (27 cases of three delays,
+    three scales and three coefficients: 4.3e-3 at most, 9.0e-4 for all others). Before
+    that bound the first step ran to the record's next sample, and this case slid 0.75 %
+    too short (2.298 against 2.316 mm)."""
+    record = fs.load_record(RECORDS / "synthetic_H.AT2", vertical=RECORDS / "synthetic_UP.AT2")
+    later = np.concatenate([np.zeros(311), record.horizontal[:-311]])
+    motion = SupportMotion3(record.dt, 1.5 * record.horizontal, 1.5 * later,
+                            1.5 * record.vertical)  # fmt: skip
+    duration = record.duration
     body = Body("s", Cylinder(0.875, 1.25), 1000.0, Friction(0.3, 0.3))
     result = simulate_body(body, motion, duration)
     assert result.max_rotation == 0.0
