@@ -79,6 +79,7 @@ from freestand.core.contact.body_kernel import (
 from freestand.core.contact.compiled import kernel
 from freestand.core.contact.regula_falsi import retained_scale
 from freestand.core.contact.slip_law import SLIP_FLOOR
+from freestand.core.contact.vectors import leading_length
 
 ACCELERATION = 0
 VELOCITY = 1
@@ -458,10 +459,7 @@ def _restore_own_slip(sc, n_tangent, stored):
     svel = sc[SC_SVEL]
     if unit_slip(svel, n_tangent, stored, sc[SC_DIR]):  # the solve's own u: not pulled
         return False
-    size = 0.0
-    for k in range(n_tangent):
-        size += svel[k] ** 2
-    size = math.sqrt(size)
+    size = leading_length(svel, n_tangent)
     if size <= SLIP_FLOOR:
         return False
     for k in range(n_tangent):

@@ -17,3 +17,12 @@ import numba as nb
 def norm2(a: float, b: float) -> float:
     """sqrt(a^2 + b^2), the length of the 2-vector (a, b)."""
     return math.sqrt(a * a + b * b)
+
+
+@nb.njit(cache=True, inline="always", error_model="numpy", _nrt=False)
+def leading_length(vector, count: int) -> float:
+    """The length of the first ``count`` components of ``vector``."""
+    size = 0.0
+    for k in range(count):
+        size += vector[k] ** 2
+    return math.sqrt(size)

@@ -62,6 +62,7 @@ from freestand.core.contact.body_kernel import (
     tangential_velocity,
 )
 from freestand.core.contact.compiled import kernel
+from freestand.core.contact.vectors import leading_length
 
 MAX_EVENT_FUNCTIONS = 8
 CLOSING_OVERSHOOT = 1.25  # a step ends this far past a gap's predicted closing [-]
@@ -193,7 +194,7 @@ def references(par, record, dt, t, y, mode, data, sc, ref, solved=False):
         return row_counts(mode[M_KIND]) if solved else (0, -1)
     if solved:
         n_normal, n_tangent = row_counts(mode[M_KIND])
-        size = _size(sc[SC_SVEL], n_tangent)
+        size = leading_length(sc[SC_SVEL], n_tangent)
     else:
         size, n_normal, n_tangent = slip_velocity(par, record, dt, t, y, mode, data, sc)
     svel = sc[SC_SVEL]
@@ -541,16 +542,7 @@ def slip_velocity(par, record, dt, t, y, mode, data, sc):
     ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
     svel = sc[SC_SVEL]
     tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
-    return _size(svel, n_tangent), n_normal, n_tangent
-
-
-@kernel(cache=True, error_model="numpy", _nrt=False)
-def _size(vector, count):
-    """The length of the first ``count`` components of ``vector``."""
-    size = 0.0
-    for k in range(count):
-        size += vector[k] ** 2
-    return math.sqrt(size)
+    return leading_length(svel, n_tangent), n_normal, n_tangent
 
 
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
