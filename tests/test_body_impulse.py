@@ -218,6 +218,39 @@ def test_a_start_near_the_solution_is_polished_before_any_sweep():
     assert np.allclose(warm_after, after, rtol=0.0, atol=10 * POLISH_TOLERANCE * scale)
 
 
+def test_a_near_flat_landing_that_ends_on_one_rim_point_is_polished_early():
+    """Found in the slender cylinder's benchmark run (``benchmarks/mujoco_body.py``, t =
+    3.27 s): a cylinder landing nearly flat on its eight rim points with its impact law
+    finding no candidate. The solution presses one point, sliding. Newton's polish on all
+    eight points failed at every try, and so did one on the two points that pressed after
+    the early sweeps (the other one the stronger there): the sweeps took 116 sweeps and
+    0.4 ms. Polished on the pressing points' subsets, the one point alone is solved after
+    the first 8 sweeps, and the laws hold at all eight points."""
+    body = Body("slender cylinder", Cylinder(0.4, 3.0), 2000.0, Friction(0.5, 0.5))
+    par = body_parameters(body, 9.81)
+    first = 1.122748079714961  # [rad] the rim angle of the first point, from the body's x
+    angles = first + 2.0 * math.pi * np.arange(MAX_POINTS) / MAX_POINTS
+    arms = np.column_stack([0.4 * np.cos(angles), 0.4 * np.sin(angles), np.full(8, -1.5)])
+    inv = np.linalg.inv(np.asarray(body.inertia))  # flat: the body frame's axes are the world's
+    velocity = np.array([-0.007598123375399929, 0.0009072021952770187, -0.0007607996117274915,
+                         -0.001049966682226568, -0.0034131135070398695,
+                         0.006415969825281099])  # fmt: skip
+    after, impulses = velocity.copy(), np.zeros((MAX_POINTS, 3))
+    sweeps, how = point_impulses(par, inv, arms, MAX_POINTS, 0.5, after, impulses)
+    assert (sweeps, how) == (8, ENDED_POLISHED)  # 116 sweeps, converged, before
+    scale = np.max(np.abs(velocity))
+    u = _point_velocities(after, arms)
+    pressing = np.flatnonzero(impulses[:, 2] > 0.0)
+    assert pressing.tolist() == [3]
+    # the laws at every point, to the polish's tolerance (1e-10 of the speed)
+    assert np.all(u[:, 2] >= -POLISH_TOLERANCE * scale)
+    assert abs(u[3, 2]) <= POLISH_TOLERANCE * scale
+    slip = u[3, :2]
+    opposite = -0.5 * impulses[3, 2] * slip / np.linalg.norm(slip)  # sliding, on the cone's edge
+    assert np.allclose(impulses[3, :2], opposite, rtol=0.0, atol=1e-9 * par[0] * scale)
+    assert kinetic_energy(par, inv, after) <= kinetic_energy(par, inv, velocity)
+
+
 @pytest.mark.parametrize(
     "tilt, azimuth, velocity",
     [
