@@ -303,7 +303,8 @@ def polish_pressed(par, inv_inertia, arms, count, mu, start, impulses, velocity,
                 continue
             k = 0
             for j in range(pressing):
-                if not every and j < size or every and mask >> j & 1:
+                # the mask's points (every subset), or the strongest size points
+                if (every and (mask >> j) & 1) or (not every and j < size):
                     chosen[k] = order[j]
                     k += 1
             for q in range(size):
