@@ -776,12 +776,13 @@ def impact(par, y, sc, gap_tol, psi_before, mode, data, out_velocity):
     scales = (RELATIVE_TOLERANCE * par[P_MASS] * speed, RELATIVE_TOLERANCE * speed)
     landed_flat = par[P_SHAPE] != SHAPE_BOX and touching[0]
     for slip in (0, 1):
-        if landed_flat:
-            # the rim point the body turns about after a stick impact, then after a slipping one
-            search_scales = (1e300, 1e300) if slip == 0 else scales
-            angles[1] = _landing_pivot(par, y, sc, touching, search_scales, psi_before + math.pi,
-                                       slip, data)  # fmt: skip
         for c in range(count):
+            if landed_flat and c == 1:
+                # the rim point the body turns about after a stick impact, then after a slipping
+                # one: searched only where the base itself (candidate 0) is not admissible
+                search_scales = (1e300, 1e300) if slip == 0 else scales
+                angles[1] = _landing_pivot(par, y, sc, touching, search_scales,
+                                           psi_before + math.pi, slip, data)  # fmt: skip
             if try_mode(par, y, sc, kinds[c], indices[c], angles[c], slip, VELOCITY, touching,
                         0.0, scales, data):  # fmt: skip
                 mode[M_KIND] = kinds[c]
