@@ -199,7 +199,7 @@ def test_a_cylinder_rocking_near_flat_on_its_rim_follows_the_fine_steps_at_the_d
     # of 2 ms to 0.1 ms give 4.94e-4, 0.47 mm, 1.37e-3, and the benchmark's 20 s run took
     # another branch (slide +14 %, twist +9 % on the fine steps' ones). Steps there now last
     # at most NEAR_FLAT_STEP. Tolerance 1 % on each peak: the runs at 2 ms to 0.1 ms
-    # spread by 0.04 %, 0.7 % and 0.6 % (the default step: within 0.4 % of 0.2 ms).
+    # spread by 0.04 %, 0.4 % and 0.4 % (the default step: within 0.4 % of 0.2 ms).
     data = np.load(Path(__file__).parent / "data" / "slender_flat_rim.npz")
     motion = SupportMotion3(float(data["dt"]), data["x"], data["y"], data["vertical"])
     body = Body("slender", Cylinder(0.4, 3.0), 2000.0, Friction(0.5, 0.5))
