@@ -211,6 +211,33 @@ def test_a_cylinder_rocking_near_flat_on_its_rim_follows_the_fine_steps_at_the_d
         assert getattr(default, key) == pytest.approx(getattr(fine, key), rel=0.01), key
 
 
+def test_a_slow_flat_slip_that_turns_as_it_dies_out_sticks_at_the_default_step():
+    # Recorded case: 0.12 s of a generated three-component record (the benchmark's random
+    # body 19, from t = 2.70 s, its state there from a 0.05 ms run) on a hollow cylinder
+    # sliding flat at 5.6 mm/s under two components. The slip slows down and turns by
+    # 0.5 rad while the support's force nears the kinetic friction (within 3 %). Fine steps
+    # stop it at 0.0233 s (stick) and slip again at 0.0974 s. The default step's RK4 error
+    # (2e-5 m/s, h lambda 0.65 on the rate at which the friction turns the slip) let the
+    # slip pass its stop beside the step's reference direction, its speed down to 1.4e-5
+    # m/s, and slide on for 0.8 s: 2.3e-4 m in this window, 3 % too far over the record.
+    # A flat slip now also stops where its speed falls to the velocity tolerance.
+    # Tolerances: the stop within 1 ms of a 0.05 ms run's (the default step: 0.35 ms) and
+    # the slide within 1 % (0.3 %; steps of 2 ms to 0.05 ms spread by 0.02 %).
+    data = np.load(Path(__file__).parent / "data" / "slow_slip_stop.npz")
+    motion = SupportMotion3(float(data["dt"]), data["x"], data["y"], data["vertical"])
+    body = Body(
+        "hollow", Cylinder(0.48384752981242146, 2.90814779015401, 0.18500270619884354),
+        109.89060231018267, Friction(0.06570771965222023, 0.0490084029165862),
+        centre=(0.1652130053235129, 0.15747253145756465, 1.2678978131612624),
+    )  # fmt: skip
+    runs = [simulate_body(body, motion, 0.12, max_step=step, restitution=0.0,
+                          initial=data["initial"]) for step in (None, 5e-5)]  # fmt: skip
+    stops = [[t for t, kind, *_ in run.events if kind == "stick"] for run in runs]
+    assert len(stops[0]) == len(stops[1]) == 1
+    assert stops[0][0] == pytest.approx(stops[1][0], abs=1e-3)
+    assert runs[0].max_slide == pytest.approx(runs[1].max_slide, rel=0.01)
+
+
 def test_a_cask_landing_from_a_small_rock_rocks_on_without_free_flight():
     # Recorded case: the first 4.3 s of a generated three-component RG 1.60 record at PGA
     # RotD50 0.5 g on a HI-STORM 100 class cask (docs/cask.md). It rocks by 1.4e-5 rad and

@@ -79,7 +79,7 @@ def test_a_free_fall_s_landing_is_found_on_the_interpolant(tilt, speed, fraction
     mode = np.array([bk.FREE, 0, 0], dtype=np.int64)
     data = np.zeros(bk.DATA_SIZE)
     sc = bk.new_scratch()
-    ref = np.zeros(5)
+    ref = np.zeros(step.REF_SIZE)
     values = np.zeros(step.MAX_EVENT_FUNCTIONS)
     kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
     k = np.zeros((5, bk.STATE_SIZE))
@@ -176,7 +176,7 @@ def test_a_spinning_fall_s_landing_is_the_crossing_on_rk4_states(
         step._rk4(par, record, 1.0, 0.0, tau, y, mode, data, sc, k, state)
         return _lowest_gap(par, state) + events.GAP_SLACK
 
-    ref, values = np.zeros(5), np.zeros(step.MAX_EVENT_FUNCTIONS)
+    ref, values = np.zeros(step.REF_SIZE), np.zeros(step.MAX_EVENT_FUNCTIONS)
     kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
     count = step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
     start = values.copy()

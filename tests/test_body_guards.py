@@ -42,6 +42,7 @@ from freestand.core.dynamics.body_step import (
     FN_GAP,
     FN_NORMAL,
     MAX_EVENT_FUNCTIONS,
+    REF_SIZE,
     energy_jump,
     start_functions,
 )
@@ -121,7 +122,7 @@ def test_a_kinetic_slide_is_chosen_only_where_its_own_step_holds_it():
     values = np.zeros(MAX_EVENT_FUNCTIONS)
     kinds = np.zeros(MAX_EVENT_FUNCTIONS, dtype=np.int64)
     count = start_functions(par, record, motion.time_step, t, y, mode, mode_data, sc,
-                            np.zeros(5), values, kinds)  # fmt: skip
+                            np.zeros(REF_SIZE), tolerances.velocity, values, kinds)  # fmt: skip
     assert inconsistent_start(par, count, values, kinds) == -1, (mode, values[:count])
 
 

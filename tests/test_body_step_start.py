@@ -30,6 +30,7 @@ from freestand.core.dynamics.results import ContactTolerances
 from freestand.core.model import Friction
 
 G = 9.81
+STOP = ContactTolerances().velocity  # a slip slower counts as zero (the engine's stop speed) [m/s]
 TOL = ContactTolerances()
 BODIES = (
     Body("box", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.4, 0.3), centre=(0.05, -0.02, 0.9)),
@@ -54,16 +55,16 @@ def _functions(body, y, record, start, solved=False):
     data = np.zeros(bk.DATA_SIZE)
     data[bk.D_SLIP] = 1.0  # a stored direction the slip's own one replaces
     sc = bk.new_scratch()
-    ref = np.zeros(5)
+    ref = np.zeros(step.REF_SIZE)
     values = np.zeros(step.MAX_EVENT_FUNCTIONS)
     kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
     if solved:  # the step's end: the event functions with the step's stored direction
         step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
     if start:
-        count = step.start_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values,
+        count = step.start_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, STOP, values,
                                        kinds, solved)  # fmt: skip
     else:  # the two solves the step's start made before
-        step.references(par, record, 1.0, 0.0, y, mode, data, sc, ref)
+        step.references(par, record, 1.0, 0.0, y, mode, data, sc, ref, STOP)
         count = step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values,
                                        kinds)  # fmt: skip
     return values[:count].copy(), sc[bk.SC_ACC].copy(), data[bk.D_SLIP : bk.D_SLIP + 3].copy()
@@ -155,7 +156,7 @@ def _solve_end(body, y, mode, data, record):
     """(parameters, scratch): the held mode solved at (0, y), as at a step's end."""
     par = bk.body_parameters(body, G)
     sc = bk.new_scratch()
-    step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, np.zeros(5),
+    step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, np.zeros(step.REF_SIZE),
                          np.zeros(step.MAX_EVENT_FUNCTIONS),
                          np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64))  # fmt: skip
     return par, sc
@@ -206,10 +207,10 @@ def test_a_sticking_step_end_left_unprojected_is_its_next_start(edge, tilt, w0, 
         work = data.copy()
         par, sc = _solve_end(body, y, mode, work, record) if solved else (
             bk.body_parameters(body, G), bk.new_scratch())  # fmt: skip
-        ref = np.zeros(5)
+        ref = np.zeros(step.REF_SIZE)
         values = np.zeros(step.MAX_EVENT_FUNCTIONS)
         kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
-        count = step.start_functions(par, record, 1.0, 0.0, y, mode, work, sc, ref, values,
+        count = step.start_functions(par, record, 1.0, 0.0, y, mode, work, sc, ref, STOP, values,
                                      kinds, solved)  # fmt: skip
         results.append((values[:count].copy(), sc[bk.SC_ACC].copy(), ref.copy(), work.copy()))
     (v0, a0, r0, d0), (v1, a1, r1, d1) = results

@@ -127,6 +127,7 @@ from freestand.core.dynamics.body_step import (
     FN_TILT,
     MAX_EVENT_FUNCTIONS,
     PLANAR_PASS,
+    REF_SIZE,
     _normalise,
     advance,
     closing_step,
@@ -898,7 +899,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
     k = np.zeros((5, STATE_SIZE))
     out = np.zeros(STATE_SIZE)
     trial = np.zeros(STATE_SIZE)
-    ref = np.zeros(5)
+    ref = np.zeros(REF_SIZE)
     start_values = np.zeros(MAX_EVENT_FUNCTIONS)
     values = np.zeros(MAX_EVENT_FUNCTIONS)
     kinds = np.zeros(MAX_EVENT_FUNCTIONS, dtype=np.int64)
@@ -966,8 +967,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         rest_ready = False
         solved = False
         if not fresh:
-            count = start_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
-                                    kinds)  # fmt: skip
+            count = start_functions(par, record_, dt, t, y, mode, data, sc, ref, velocity_tol,
+                                    start_values, kinds)  # fmt: skip
         fresh = False
         # the held mode not admissible at its start, or its step past a pole: the remedy
         remedy = inconsistent_start(par, count, start_values, kinds) >= 0
@@ -1023,8 +1024,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             energy[0] = math.nan  # the state changed at the step's end: energy_jump's start anew
         if istate[I_STRETCH] == 0 and not resting(mode, y, velocity_tol):
             # the next step's references and event functions: their solve is the record's
-            count = start_functions(par, record_, dt, t, y, mode, data, sc, ref, start_values,
-                                    kinds, solved)  # fmt: skip
+            count = start_functions(par, record_, dt, t, y, mode, data, sc, ref, velocity_tol,
+                                    start_values, kinds, solved)  # fmt: skip
             fresh = True
         else:
             solve_at(par, record_, dt, t, y, mode, data, sc)
