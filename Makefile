@@ -21,7 +21,7 @@ demo: $(STAMP)
 	@echo "screening report: $(CURDIR)/build/crane-report.html"
 
 test: $(STAMP)
-	$(BIN)/python -m pytest -q -n auto
+	$(BIN)/python -m pytest -q -n auto --durations=25
 
 LINTED := src tests benchmarks examples docs/conf.py docs/_ext
 
