@@ -96,3 +96,43 @@ def test_a_run_whose_buffers_fill_gives_the_run_in_one_call(monkeypatch):
     np.testing.assert_array_equal(chunked.time, whole.time)
     np.testing.assert_array_equal(chunked.state, whole.state)
     np.testing.assert_array_equal(chunked.patch, whole.patch)
+
+
+def _moved(state, tau):
+    """The state after ``tau`` [s] of its rigid motion at constant v and omega (support frame)."""
+    moved = state.copy()
+    moved[0:3] += tau * state[7:10]
+    omega = state[10:13]
+    angle = np.linalg.norm(omega) * tau
+    axis = omega / np.linalg.norm(omega)
+    c, s = math.cos(0.5 * angle), math.sin(0.5 * angle)
+    a = np.array([c, *(s * axis)])
+    w, x, y, z = state[3:7]
+    moved[3:7] = (a[0] * w - a[1] * x - a[2] * y - a[3] * z,
+                  a[0] * x + a[1] * w + a[2] * z - a[3] * y,
+                  a[0] * y - a[1] * z + a[2] * w + a[3] * x,
+                  a[0] * z + a[1] * y - a[2] * x + a[3] * w)  # fmt: skip
+    return moved
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_rates_of_tilt_slide_and_twist_are_their_derivatives(seed):
+    # body_history._motion_rates (the peaks' Hermite refinement) against central
+    # differences of body_motion along the state's rigid motion; tolerance 1e-6 of the
+    # rate's scale (the difference's truncation at 1e-5 s is about 1e-9, round-off 1e-10)
+    rng = np.random.default_rng(seed)
+    body = (BOX, CASK)[seed % 2]
+    state = initial_state(body, tuple(rng.uniform(-0.4, 0.4, 2)))
+    state[3:7] = _yawed(state, rng.uniform(-3.0, 3.0))[3:7]
+    state[7:13] = rng.normal(size=6)
+    tau = 1e-5
+    # the slide counts from the first row, 0.3 s of the rigid motion before (a curved path)
+    states = np.array([state] + [_moved(state, 0.3 + k * tau) for k in (-1, 0, 1)])
+    motion = body_motion(body, states)
+    rates = body_history._motion_rates(states, np.asarray(body.centre, dtype=float),
+                                       motion.slide)  # fmt: skip
+    sizes = np.hypot(motion.slide[:, 0], motion.slide[:, 1])
+    assert sizes[2] > 0.01
+    for values, rate in ((motion.tilt, rates[0]), (sizes, rates[1]), (motion.twist, rates[2])):
+        difference = (values[3] - values[1]) / (2.0 * tau)
+        assert rate[2] == pytest.approx(difference, abs=1e-6 * max(1.0, abs(difference)))

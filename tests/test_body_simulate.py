@@ -75,7 +75,10 @@ def test_tables_have_the_documented_columns(cabinet):
         "cabinet.twist [rad]", "cabinet.normal [N]", "cabinet.friction [N]",
         "cabinet.patch", "cabinet.motion",
     ]  # fmt: skip
-    assert history["cabinet.tilt [rad]"].max() == cabinet.max_rotation[0]
+    # the peak is refined between rows on the tilt's Hermite interpolant (as the planar
+    # engine's): at or above the rows' largest, by less than the step's change (1e-3)
+    rows_peak = history["cabinet.tilt [rad]"].max()
+    assert rows_peak <= cabinet.max_rotation[0] <= rows_peak * (1.0 + 1e-3)
     tilt = np.hypot(history["cabinet.tilt_x [rad]"], history["cabinet.tilt_y [rad]"])
     np.testing.assert_allclose(tilt, history["cabinet.tilt [rad]"], atol=1e-12)
     # it rests, rocks about an edge, and where the edge's friction is at its limit slips by
@@ -111,7 +114,9 @@ def test_the_history_figure_has_its_panels_curves_and_events(cabinet):
     assert [line.get_gid() for line in axes[0].lines] == ["support:x", "support:y",
                                                            "support:vertical"]  # fmt: skip
     tilt = next(line for line in axes[2].lines if line.get_gid() == "tilt")
-    assert max(tilt.get_ydata()) == pytest.approx(1000.0 * cabinet.max_rotation[0])
+    # the rows' tilt [mrad]; the peak is refined between them (above)
+    assert max(tilt.get_ydata()) == pytest.approx(1000.0 * cabinet.max_rotation[0], rel=1e-3)
+    assert max(tilt.get_ydata()) <= 1000.0 * cabinet.max_rotation[0]
     impacts = next(line for line in axes[2].lines if line.get_gid() == "event:impact")
     assert len(impacts.get_xdata()) == cabinet.event_counts()["impact"]
     motions = set(cabinet.to_frame()["cabinet.motion"])

@@ -384,7 +384,7 @@ def _peak_magnitude(time: np.ndarray, value: np.ndarray, rate: np.ndarray) -> fl
     found to the integration accuracy rather than to the sampling.
     """
     return float(
-        _peak_kernel(
+        peak_between_samples(
             np.ascontiguousarray(time, dtype=float),
             np.ascontiguousarray(value, dtype=float),
             np.ascontiguousarray(rate, dtype=float),
@@ -414,7 +414,7 @@ def _history_peaks_kernel(time, rotation, rate, slide):
     max_rotation = np.empty(count)
     max_slide = np.empty(count)
     for i in range(count):
-        max_rotation[i] = _peak_kernel(time, rotation[:, i], rate[:, i])
+        max_rotation[i] = peak_between_samples(time, rotation[:, i], rate[:, i])
         peak = 0.0
         for k in range(slide.shape[0]):
             value = abs(slide[k, i])
@@ -425,8 +425,15 @@ def _history_peaks_kernel(time, rotation, rate, slide):
 
 
 @nb.njit(cache=True, error_model="numpy")
-def _peak_kernel(time, value, rate):
-    """:func:`_peak_magnitude` on float arrays (non-finite samples skipped)."""
+def peak_between_samples(time, value, rate):
+    """:func:`_peak_magnitude` on float arrays, compiled; samples whose value or rate is not
+    finite are skipped, and so are the steps next to them.
+
+    ``time`` [s], ``value`` and its ``rate`` (per second) at the samples. Where the
+    rate changes sign inside a step, the cubic Hermite interpolant of (value, rate)
+    at its ends gives the turning point (the 3-D engine's peaks too,
+    :mod:`freestand.core.dynamics.body_history`).
+    """
     peak = 0.0
     count = value.shape[0]
     for k in range(count):
