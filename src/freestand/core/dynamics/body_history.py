@@ -585,9 +585,9 @@ def _peaks(time, tilt, slide, twist, tilt_rate, slide_rate, twist_rate, highest,
     The tilt's, the slide's and the twist's are refined between rows on the
     cubic Hermite interpolant of each and its rate (:func:`_motion_rates`;
     :func:`~freestand.core.dynamics.results.peak_between_samples`, as the
-    planar engine's peaks): a rocking box's 38 ms excursion, stepped at 5 ms,
-    peaked 3.7 % above its largest row. A NaN rate (a row at an event) keeps
-    its row's value and refines none of its steps.
+    planar engine's peaks): a random box's rocking excursion of 38 ms, stepped
+    at the record's 5 ms, peaked 3.8 % above its largest row. A NaN rate (a
+    row at an event) keeps its row's value and refines none of its steps.
     """
     count = tilt.shape[0]
     size = np.empty(count)
