@@ -117,7 +117,7 @@ def _moved(state, tau):
 
 @pytest.mark.parametrize("seed", range(6))
 def test_the_rates_of_tilt_slide_and_twist_are_their_derivatives(seed):
-    # body_history._motion_rates (the peaks' Hermite refinement) against central
+    # body_history._row_rates (the peaks' Hermite refinement) against central
     # differences of body_motion along the state's rigid motion; tolerance 1e-6 of the
     # rate's scale (the difference's truncation at 1e-5 s is about 1e-9, round-off 1e-10)
     rng = np.random.default_rng(seed)
@@ -128,9 +128,7 @@ def test_the_rates_of_tilt_slide_and_twist_are_their_derivatives(seed):
     tau = 1e-5
     # the slide counts from the first row, 0.3 s of the rigid motion before (a curved path)
     states = np.array([state] + [_moved(state, 0.3 + k * tau) for k in (-1, 0, 1)])
-    motion = body_motion(body, states)
-    rates = body_history._motion_rates(states, np.asarray(body.centre, dtype=float),
-                                       motion.slide)  # fmt: skip
+    motion, rates = body_history._read_motion(body, states, True)
     sizes = np.hypot(motion.slide[:, 0], motion.slide[:, 1])
     assert sizes[2] > 0.01
     for values, rate in ((motion.tilt, rates[0]), (sizes, rates[1]), (motion.twist, rates[2])):

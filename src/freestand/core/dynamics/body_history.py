@@ -25,6 +25,7 @@ from freestand.core.contact.body_kernel import (
     body_parameters,
     rotation_matrix,
 )
+from freestand.core.contact.vectors import norm2
 from freestand.core.dynamics import body_engine as engine
 from freestand.core.dynamics.results import ContactTolerances, peak_between_samples
 from freestand.core.dynamics.single_block import UPLIFT_GAP_FRACTION
@@ -418,6 +419,12 @@ def body_motion(body: Body, state: np.ndarray) -> BodyMotion:
     about the vertical followed by a swing of the axis), the base centre
     ``r - R c`` with c the centre of gravity in the body frame.
     """
+    return _read_motion(body, state, False)[0]
+
+
+def _read_motion(body: Body, state: np.ndarray, with_rates: bool):
+    """(:func:`body_motion`, and with ``with_rates`` the (3, K) rates of its tilt, slide
+    size and twist [rad/s, m/s, rad/s] from the states' velocities, else None)."""
     state = np.ascontiguousarray(state, dtype=float)
     if isinstance(body.shape, Box):
         outline, radius = np.ascontiguousarray(body.shape.base_corners(), dtype=float), 0.0
@@ -426,18 +433,21 @@ def body_motion(body: Body, state: np.ndarray) -> BodyMotion:
     count = state.shape[0]
     tilt, twist, lowest, highest = (np.empty(count) for _ in range(4))
     slide = np.empty((count, 2))
+    rates = np.empty((3, count if with_rates else 0))
     _motion_rows(state, np.asarray(body.centre, dtype=float), outline, radius, tilt, slide, twist,
-                 lowest, highest)  # fmt: skip
-    return BodyMotion(tilt, slide, twist, lowest, highest)
+                 lowest, highest, rates)  # fmt: skip
+    return BodyMotion(tilt, slide, twist, lowest, highest), (rates if with_rates else None)
 
 
 @nb.njit(cache=True, error_model="numpy")
-def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, highest):
+def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, highest, rates):
     """:func:`body_motion`'s arrays in one pass over the states (its Notes).
 
     ``outline``: a box's base corners in the body frame (K, 3), or none and
     the rim's ``radius`` [m]. The twist is unwrapped as ``numpy.unwrap``
     (a jump above pi between two states is taken the other way round).
+    ``rates`` (3, K): the rates of the tilt, the slide's size and the twist
+    (:func:`_row_rates`), or (3, 0) for none.
     """
     first_x, first_y, previous = 0.0, 0.0, 0.0
     rot = np.empty((3, 3))  # body to support frame
@@ -473,6 +483,8 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
         else:
             reach = radius * math.hypot(r20, r21)
             lowest[i], highest[i] = bz - reach, bz + reach
+        if rates.shape[1] > 0:
+            _row_rates(state[i], rot, centre, slide[i], rates, i)
 
 
 def lost_contact_depth(width: float, gap: float) -> float:
@@ -522,7 +534,7 @@ def _first_invalid(state, lowest, depth):
 def _result(
     body, par, istate, time, state, modes, forces, events, gap=ContactTolerances.gap
 ) -> BodyTimeHistory:
-    motion = body_motion(body, state)
+    motion, rates = _read_motion(body, state, True)
     width = min(body.shape.size[:2]) if isinstance(body.shape, Box) else 2.0 * body.shape.radius
     rows, message = _valid_rows(time, state, motion.lowest, lost_contact_depth(width, gap))
     time, state, modes, forces = time[:rows], state[:rows], modes[:rows], forces[:rows]
@@ -538,13 +550,11 @@ def _result(
         if t <= last
     )
     overturned = not message and istate[engine.I_STATUS] == engine.STATUS_OVERTURNED
-    rates = _motion_rates(state, np.asarray(body.centre, dtype=float), slide)
     # a row at an event holds the state after it (an impact's velocities): no step ending
     # there is refined on its rates
-    event_times = np.array([event[0] for event in event_list])
-    for rate in rates:
-        rate[np.isin(time, event_times)] = np.nan
-    peaks = _peaks(time, tilt, slide, twist, *rates, highest, modes)
+    rates = np.ascontiguousarray(rates[:, :rows])
+    _skip_event_rows(time, np.array([event[0] for event in event_list], dtype=float), rates)
+    peaks = _peaks(time, tilt, slide, twist, rates[0], rates[1], rates[2], highest, modes)
     return BodyTimeHistory(
         body=body.name,
         status="failed" if message else "overturned" if overturned else "completed",
@@ -583,7 +593,7 @@ def _peaks(time, tilt, slide, twist, tilt_rate, slide_rate, twist_rate, highest,
     is FREE else 0.0): the result's peaks.
 
     The tilt's, the slide's and the twist's are refined between rows on the
-    cubic Hermite interpolant of each and its rate (:func:`_motion_rates`;
+    cubic Hermite interpolant of each and its rate (:func:`_row_rates`;
     :func:`~freestand.core.dynamics.results.peak_between_samples`, as the
     planar engine's peaks): a random box's rocking excursion of 38 ms, stepped
     at the record's 5 ms, peaked 3.8 % above its largest row. A NaN rate (a
@@ -593,7 +603,7 @@ def _peaks(time, tilt, slide, twist, tilt_rate, slide_rate, twist_rate, highest,
     size = np.empty(count)
     top_tilt, top_slide, top_twist, top_high, free = 0.0, 0.0, 0.0, -math.inf, 0.0
     for i in range(count):
-        size[i] = math.hypot(slide[i, 0], slide[i, 1])
+        size[i] = norm2(slide[i, 0], slide[i, 1])
         top_tilt = max(top_tilt, tilt[i])
         top_slide = max(top_slide, size[i])
         top_twist = max(top_twist, abs(twist[i]))
@@ -606,51 +616,52 @@ def _peaks(time, tilt, slide, twist, tilt_rate, slide_rate, twist_rate, highest,
     return top_tilt, top_slide, top_twist, top_high, free
 
 
-def _motion_rates(state, centre, slide):
-    """(tilt [rad/s], |slide| [m/s], twist [rad/s]) rates of the rows (:func:`_rates_kernel`).
+@nb.njit(cache=True, error_model="numpy", inline="always")
+def _row_rates(row, rot, centre, slide, rates, i):
+    """Column i of ``rates``: the rates of the tilt, the slide's size and the twist of a state.
 
-    ``centre``: G in the body frame [m]; ``slide`` (K, 2) [m], :func:`body_motion`'s.
+    ``row`` the state (r, q, v, omega), ``rot`` its rotation, ``slide`` its
+    slide (2,) [m]. With the body's axis e = R e_z and omega in the support
+    frame, ``tilt' = -(omega x e)_z / sin(tilt)``; the base centre ``r - R
+    c`` moves at ``v - omega x (R c)``, ``|s|' = s . v_b / |s|``; with q =
+    (w, x, y, z), ``twist = 2 atan2(z, w)``, ``twist' = 2 (w z' - z w') /
+    (w^2 + z^2)``, ``q' = (0, omega) q / 2``. Zero where the quotient's
+    denominator is (no slide, upside down), and the tilt's where the tilt,
+    ``acos(R_33)``, is (below about 1e-8 rad: a flat base's rows).
     """
-    count = state.shape[0]
-    rates = (np.empty(count), np.empty(count), np.empty(count))
-    _rates_kernel(np.ascontiguousarray(state, dtype=float), centre, slide, *rates)
-    return rates
+    vx, vy = row[7], row[8]
+    wx, wy, wz = row[10], row[11], row[12]
+    lean = norm2(rot[0, 2], rot[1, 2])
+    turn = wx * rot[1, 2] - wy * rot[0, 2]  # (omega x e)_z
+    rates[0, i] = -turn / lean if rot[2, 2] < 1.0 and lean > 0.0 else 0.0
+    # R c, then the base centre's horizontal velocity v - omega x (R c)
+    cx = rot[0, 0] * centre[0] + rot[0, 1] * centre[1] + rot[0, 2] * centre[2]
+    cy = rot[1, 0] * centre[0] + rot[1, 1] * centre[1] + rot[1, 2] * centre[2]
+    cz = rot[2, 0] * centre[0] + rot[2, 1] * centre[1] + rot[2, 2] * centre[2]
+    bx = vx - (wy * cz - wz * cy)
+    by = vy - (wz * cx - wx * cz)
+    size = norm2(slide[0], slide[1])
+    rates[1, i] = (slide[0] * bx + slide[1] * by) / size if size > 0.0 else 0.0
+    w, x, y, z = row[3], row[4], row[5], row[6]
+    w_rate = -0.5 * (wx * x + wy * y + wz * z)
+    z_rate = 0.5 * (w * wz + wx * y - wy * x)
+    norm = w * w + z * z
+    rates[2, i] = 2.0 * (w * z_rate - z * w_rate) / norm if norm > 0.0 else 0.0
 
 
 @nb.njit(cache=True, error_model="numpy")
-def _rates_kernel(state, centre, slide, tilt_rate, slide_rate, twist_rate):
-    """The rates of :func:`body_motion`'s tilt, slide size and twist from the velocities.
+def _skip_event_rows(time, event_times, rates):
+    """NaN in ``rates`` (3, K) at the rows at an event: they hold the state after it.
 
-    With the body's axis e = R e_z and omega in the support frame,
-    ``tilt' = -(omega x e)_z / sin(tilt)``; the base centre ``r - R c``
-    moves at ``v - omega x (R c)``, ``|s|' = s . v_b / |s|``; with q = (w, x,
-    y, z), ``twist = 2 atan2(z, w)``, ``twist' = 2 (w z' - z w') / (w^2 +
-    z^2)``, ``q' = (0, omega) q / 2``. Zero where the quotient's denominator
-    is (no slide, upside down), and the tilt's where the tilt is (flat to
-    round-off).
+    ``time`` and ``event_times`` [s] ascending; one merge over both.
     """
-    rot = np.empty((3, 3))
-    for i in range(state.shape[0]):
-        rotation_matrix(state[i], rot)
-        vx, vy = state[i, 7], state[i, 8]
-        wx, wy, wz = state[i, 10], state[i, 11], state[i, 12]
-        lean = math.hypot(rot[0, 2], rot[1, 2])
-        turn = wx * rot[1, 2] - wy * rot[0, 2]  # (omega x e)_z
-        # zero where the tilt, acos(R_33), is (below about 1e-8 rad): rows of a flat base
-        tilt_rate[i] = -turn / lean if rot[2, 2] < 1.0 and lean > 0.0 else 0.0
-        # R c, then the base centre's horizontal velocity v - omega x (R c)
-        cx = rot[0, 0] * centre[0] + rot[0, 1] * centre[1] + rot[0, 2] * centre[2]
-        cy = rot[1, 0] * centre[0] + rot[1, 1] * centre[1] + rot[1, 2] * centre[2]
-        cz = rot[2, 0] * centre[0] + rot[2, 1] * centre[1] + rot[2, 2] * centre[2]
-        bx = vx - (wy * cz - wz * cy)
-        by = vy - (wz * cx - wx * cz)
-        size = math.hypot(slide[i, 0], slide[i, 1])
-        slide_rate[i] = (slide[i, 0] * bx + slide[i, 1] * by) / size if size > 0.0 else 0.0
-        w, x, y, z = state[i, 3], state[i, 4], state[i, 5], state[i, 6]
-        w_rate = -0.5 * (wx * x + wy * y + wz * z)
-        z_rate = 0.5 * (w * wz + wx * y - wy * x)
-        norm = w * w + z * z
-        twist_rate[i] = 2.0 * (w * z_rate - z * w_rate) / norm if norm > 0.0 else 0.0
+    j = 0
+    for i in range(time.shape[0]):
+        while j < event_times.shape[0] and event_times[j] < time[i]:
+            j += 1
+        if j < event_times.shape[0] and event_times[j] == time[i]:
+            for k in range(3):
+                rates[k, i] = math.nan
 
 
 def rotation_matrices(quaternions: np.ndarray) -> np.ndarray:
