@@ -272,12 +272,10 @@ def event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds):
             svel = sc[SC_SVEL]
             tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
             along = 0.0
-            speed = 0.0
             for i in range(n_tangent):
                 along += svel[i] * ref[i]
-                speed += svel[i] * svel[i]
             if ref[REF_STOP] > 0.0:
-                along = min(along, math.sqrt(speed) - ref[REF_STOP])
+                along = min(along, leading_length(svel, n_tangent) - ref[REF_STOP])
             values[count] = along
             kinds[count] = FN_SLIP_STOP
             count += 1
