@@ -238,6 +238,30 @@ def test_a_slow_flat_slip_that_turns_as_it_dies_out_sticks_at_the_default_step()
     assert runs[0].max_slide == pytest.approx(runs[1].max_slide, rel=0.01)
 
 
+def test_a_flat_slip_slowing_to_a_stop_stops_and_sticks_at_the_default_step():
+    # Recorded case: 0.12 s of a generated three-component record (the benchmark's random
+    # body 82, from t = 4.10 s, its state there from a 0.05 ms run) on a squat box sliding
+    # flat at 3.9 mm/s on friction 0.076 / 0.047. The slip slows down to rest within 68 ms
+    # and the base sticks (the support's force is then inside the kinetic cone) until it
+    # slips again at 73.9 ms. The default step (5 ms) stepped over the stop: its direction
+    # turned at the stop inside the step, beside the step's reference, and RK4 left 2e-4
+    # m/s across it, above the velocity tolerance: the box slid on in that direction
+    # instead of sticking, into the next slip (its slide over the record 0.95 % too long).
+    # A flat slip slowing down now steps at most half its time to stop.
+    # Tolerances: the stop within 0.1 ms of a 0.05 ms run's (the default step: 1 us), and
+    # the slide within 1e-4 (1.3e-5; steps of 1 ms: 1e-8).
+    data = np.load(Path(__file__).parent / "data" / "slow_slip_stop_still.npz")
+    motion = SupportMotion3(float(data["dt"]), data["x"], data["y"], data["vertical"])
+    body = Body("squat box", Box((0.6503791375939771, 0.5520767116508114, 0.527729722770341)),
+                88.89149970090067, Friction(0.07643667430405769, 0.04656959033740998))  # fmt: skip
+    runs = [simulate_body(body, motion, 0.12, max_step=step, initial=data["initial"])
+            for step in (None, 5e-5)]  # fmt: skip
+    kinds = [[kind for _, kind, *_ in run.events] for run in runs]
+    assert kinds[0] == kinds[1] == ["start", "stick", "slip"]
+    assert runs[0].events[1][0] == pytest.approx(runs[1].events[1][0], abs=1e-4)
+    assert runs[0].max_slide == pytest.approx(runs[1].max_slide, rel=1e-4)
+
+
 def test_a_cask_landing_from_a_small_rock_rocks_on_without_free_flight():
     # Recorded case: the first 4.3 s of a generated three-component RG 1.60 record at PGA
     # RotD50 0.5 g on a HI-STORM 100 class cask (docs/cask.md). It rocks by 1.4e-5 rad and
