@@ -20,7 +20,10 @@ demo: $(STAMP)
 	$(BIN)/freestand report examples/crane.toml -o build/crane-report.html
 	@echo "screening report: $(CURDIR)/build/crane-report.html"
 
+# The compiled kernels first, once, in two processes (tests/compile_kernels.py): the test
+# workers then load them from numba's cache instead of each compiling all of them.
 test: $(STAMP)
+	$(BIN)/python tests/compile_kernels.py
 	$(BIN)/python -m pytest -q -n auto --durations=25
 
 LINTED := src tests benchmarks examples docs/conf.py docs/_ext
