@@ -49,7 +49,7 @@ def three_d() -> float:
 
 
 def planar() -> float:
-    """The planar engines: screening, a time history, overturning, a mode map, samples."""
+    """The planar engines: screening, a time history, overturning, a mode map."""
     import freestand as fs
 
     start = time.perf_counter()

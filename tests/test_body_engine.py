@@ -249,7 +249,7 @@ def test_a_flat_slip_slowing_to_a_stop_stops_and_sticks_at_the_default_step():
     # instead of sticking, into the next slip (its slide over the record 0.95 % too long).
     # A flat slip slowing down now steps at most half its time to stop.
     # Tolerances: the stop within 0.1 ms of a 0.05 ms run's (the default step: 1 us), and
-    # the slide within 1e-4 (1.3e-5; steps of 1 ms: 1e-8).
+    # the slide within 1e-4 (1.3e-5; steps of 1 ms: 2e-9).
     data = np.load(Path(__file__).parent / "data" / "slow_slip_stop_still.npz")
     motion = SupportMotion3(float(data["dt"]), data["x"], data["y"], data["vertical"])
     body = Body("squat box", Box((0.6503791375939771, 0.5520767116508114, 0.527729722770341)),
