@@ -281,9 +281,9 @@ def project(par, record, dt, t, y, mode, data, sc, settle_below=0.0):
     centre of gravity shifted vertically by the point's gap. Velocities: the
     least-kinetic-energy change that makes the held rows' velocities vanish
     (a plastic impact on the held rows), on the rows at the patch's
-    geometric centre (a sticking patch's rows hold
-    it still about any centre). The scratch is left with those rows, not a
-    solve: every caller solves the mode at the projected state next.
+    geometric centre (a sticking patch's rows hold it still about any
+    centre). The scratch is left with those rows, not a solve: every caller
+    solves the mode at the projected state next.
     """
     kind = mode[M_KIND]
     if kind == FREE:
