@@ -292,6 +292,17 @@ def test_an_edge_tilted_along_itself_is_levelled_on_both_corners():
     assert max(abs(gap) for gap in after) < 1e-11
 
 
+def _stays_on_the_support(body: Body, record: str, duration: float) -> str:
+    """A recorded run (``tests/data/<record>``, restitution 0.8): no base point more than
+    1e-8 m below the support; returns its status."""
+    data = np.load(Path(__file__).parent / "data" / record)
+    motion = SupportMotion3(float(data["dt"]), data["x"], data["y"], data["vertical"])
+    result = simulate_body(body, motion, duration, restitution=0.8)
+    assert result.message == ""
+    assert body_motion(body, result.state).lowest.min() > -1e-8
+    return result.status
+
+
 def test_a_box_rocking_fast_on_an_edge_keeps_both_corners_on_the_support():
     # Recorded case: the 3-D benchmark's random body 1186 (a slender box,
     # 0.63 x 0.10 x 0.19 m, a non-principal inertia, mu 1.25 / 0.87, restitution 0.8)
@@ -301,17 +312,13 @@ def test_a_box_rocking_fast_on_an_edge_keeps_both_corners_on_the_support():
     # corner was 2e-6 m below the support and the run ended `failed`. Both corners are now
     # set on the support. Tolerance: no base point more than 1e-8 m below the support
     # (measured 1.6e-10 m) and the run ends as at 1 ms steps (it overturns).
-    data = np.load(Path(__file__).parent / "data" / "edge_drift.npz")
-    motion = SupportMotion3(float(data["dt"]), data["x"], data["y"], data["vertical"])
     inertia = [[0.04967454, 0.05272298, -0.00148394], [0.05272298, 0.35519607, -0.00605745],
                [-0.00148394, -0.00605745, 0.3450353]]  # fmt: skip
     body = Body("slender box", Box((0.6303434600256264, 0.10379767378210987, 0.19437675927937614)),
                 19.41585098871309, Friction(1.2504966883189617, 0.868198368837271),
                 centre=(0.0007935406369328058, 0.022353674287068387, 0.17330663255728168),
                 inertia=np.array(inertia))  # fmt: skip
-    result = simulate_body(body, motion, 0.8, restitution=0.8)
-    assert result.status == "overturned", result.message
-    assert body_motion(body, result.state).lowest.min() > -1e-8
+    assert _stays_on_the_support(body, "edge_drift.npz", 0.8) == "overturned"
 
 
 def test_a_rim_rolling_near_flat_through_the_remedy_stays_on_the_support():
@@ -325,14 +332,10 @@ def test_a_rim_rolling_near_flat_through_the_remedy_stays_on_the_support():
     # to 3.9e-5 m below the support at 1.68 s and the run ended `failed` (the contact
     # lost). Tolerance: no base point more than 1e-8 m below the support (measured 5.5e-10
     # m) and the run completes.
-    data = np.load(Path(__file__).parent / "data" / "rim_sinking.npz")
-    motion = SupportMotion3(float(data["dt"]), data["x"], data["y"], data["vertical"])
     body = Body("squat cylinder", Cylinder(1.8993992974785694, 2.6909317483482185),
                 41.177241450840036, Friction(1.395617406365145, 1.112351590324745),
                 centre=(-0.6090380323394516, -0.13816296749893026, 2.413856193562586))  # fmt: skip
-    result = simulate_body(body, motion, 1.75, restitution=0.8)
-    assert result.status == "completed", result.message
-    assert body_motion(body, result.state).lowest.min() > -1e-8
+    assert _stays_on_the_support(body, "rim_sinking.npz", 1.75) == "completed"
 
 
 def test_a_cask_landing_from_a_small_rock_rocks_on_without_free_flight():
