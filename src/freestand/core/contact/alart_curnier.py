@@ -132,7 +132,7 @@ def _function(count, mu, rho_n, rho_t, delassus, free, impulses, speeds, residua
     return norm
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def _least_squares_step(jacobian, residual, normal, step):
     """The Newton step ``-J^+ F`` in ``step``, by the normal equations regularised by
     ``REGULARISATION``.
@@ -163,9 +163,21 @@ def _least_squares_step(jacobian, residual, normal, step):
         normal[i, i] += REGULARISATION * largest + 1e-300
     if solve_symmetric_in_place(normal, step, n):
         return
+    _least_squares_by_lu(jacobian, residual, REGULARISATION * largest + 1e-300, step)
+
+
+@nb.njit(cache=True, error_model="numpy", _nrt=True)
+def _least_squares_by_lu(jacobian, residual, shift, step):
+    """:func:`_least_squares_step`'s ``(J^T J + shift I) s = -J^T F`` by LU with pivoting.
+
+    A function of its own: its arrays need numba's reference counting, which
+    would otherwise cost every call of the step (a rocking cabinet's time
+    stepping makes thousands).
+    """
+    n = jacobian.shape[0]
     matrix = jacobian.T @ jacobian
     for i in range(n):
-        matrix[i, i] += REGULARISATION * largest + 1e-300
+        matrix[i, i] += shift
     step[:] = np.linalg.solve(matrix, -(jacobian.T @ residual))
 
 

@@ -721,7 +721,7 @@ def solve_small(matrix, rhs, k):
     if k == 2:
         a, b, c, d = matrix[0, 0], matrix[0, 1], matrix[1, 0], matrix[1, 1]
         det = a * d - b * c
-        if abs(det) > CRAMER_CONDITION * math.hypot(a, b) * math.hypot(c, d):
+        if abs(det) > CRAMER_CONDITION * norm2(a, b) * norm2(c, d):
             x0 = (d * rhs[0] - b * rhs[1]) / det
             rhs[1] = (a * rhs[1] - c * rhs[0]) / det
             rhs[0] = x0

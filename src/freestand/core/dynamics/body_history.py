@@ -451,8 +451,11 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
     """
     first_x, first_y, previous = 0.0, 0.0, 0.0
     rot = np.empty((3, 3))  # body to support frame
+    row = np.empty(state.shape[1])  # the state of row i (a copy: a view costs more)
     for i in range(state.shape[0]):
-        rotation_matrix(state[i], rot)
+        for j in range(row.shape[0]):
+            row[j] = state[i, j]
+        rotation_matrix(row, rot)
         r20, r21, r22 = rot[2, 0], rot[2, 1], rot[2, 2]
         tilt[i] = math.acos(min(max(r22, -1.0), 1.0))
         # the base centre r - R c
@@ -484,7 +487,7 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
             reach = radius * math.hypot(r20, r21)
             lowest[i], highest[i] = bz - reach, bz + reach
         if rates.shape[1] > 0:
-            _row_rates(state[i], rot, centre, slide[i], rates, i)
+            _row_rates(row, rot, centre, slide[i, 0], slide[i, 1], rates, i)
 
 
 def lost_contact_depth(width: float, gap: float) -> float:
@@ -617,11 +620,11 @@ def _peaks(time, tilt, slide, twist, tilt_rate, slide_rate, twist_rate, highest,
 
 
 @nb.njit(cache=True, error_model="numpy", inline="always")
-def _row_rates(row, rot, centre, slide, rates, i):
+def _row_rates(row, rot, centre, slide_x, slide_y, rates, i):
     """Column i of ``rates``: the rates of the tilt, the slide's size and the twist of a state.
 
-    ``row`` the state (r, q, v, omega), ``rot`` its rotation, ``slide`` its
-    slide (2,) [m]. With the body's axis e = R e_z and omega in the support
+    ``row`` the state (r, q, v, omega), ``rot`` its rotation, ``slide_x``,
+    ``slide_y`` its slide [m]. With the body's axis e = R e_z and omega in the support
     frame, ``tilt' = -(omega x e)_z / sin(tilt)``; the base centre ``r - R
     c`` moves at ``v - omega x (R c)``, ``|s|' = s . v_b / |s|``; with q =
     (w, x, y, z), ``twist = 2 atan2(z, w)``, ``twist' = 2 (w z' - z w') /
@@ -640,8 +643,8 @@ def _row_rates(row, rot, centre, slide, rates, i):
     cz = rot[2, 0] * centre[0] + rot[2, 1] * centre[1] + rot[2, 2] * centre[2]
     bx = vx - (wy * cz - wz * cy)
     by = vy - (wz * cx - wx * cz)
-    size = norm2(slide[0], slide[1])
-    rates[1, i] = (slide[0] * bx + slide[1] * by) / size if size > 0.0 else 0.0
+    size = norm2(slide_x, slide_y)
+    rates[1, i] = (slide_x * bx + slide_y * by) / size if size > 0.0 else 0.0
     w, x, y, z = row[3], row[4], row[5], row[6]
     w_rate = -0.5 * (wx * x + wy * y + wz * z)
     z_rate = 0.5 * (w * wz + wx * y - wy * x)

@@ -58,6 +58,7 @@ from freestand.core.contact.body_kernel import (
     sin_tilt,
     solve_at,
     state_rate,
+    stored_direction,
     support_acceleration,
     tangential_velocity,
 )
@@ -195,7 +196,8 @@ def references(par, record, dt, t, y, mode, data, sc, ref, stop_speed, solved=Fa
         d, c = probe[0], probe[1]
         radius = par[P_HALF_X]
         # horizontal direction of the pivot from the base centre
-        arm(par, rot, radius * math.cos(psi), radius * math.sin(psi), 0.0, d)
+        cos_stored, sin_stored = stored_direction(psi, sc)  # cos psi, sin psi, kept
+        arm(par, rot, radius * cos_stored, radius * sin_stored, 0.0, d)
         arm(par, rot, 0.0, 0.0, 0.0, c)
         px = d[0] - c[0]
         py = d[1] - c[1]
@@ -609,7 +611,7 @@ def may_pass_a_pole(mode):
     return mode[M_SLIP] == 1 and (mode[M_KIND] == POINT or mode[M_KIND] == EDGE)
 
 
-@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def energy_jump(par, record, dt, t, h, y, end, rot, memo):
     """True where a step from (t, ``y``) to (t + h, ``end``) gained more kinetic energy than it can.
 
