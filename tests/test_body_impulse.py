@@ -24,6 +24,7 @@ from freestand.core.contact.body_impulse import (
     POLISH_TOLERANCE,
     base_points,
     kinetic_energy,
+    new_impulse_work,
     point_impulses,
     velocity_impact,
 )
@@ -59,7 +60,7 @@ def _state(body, tilt, azimuth, velocity):
     par = body_parameters(body, 9.81)
     arms = np.zeros((MAX_POINTS, 3))
     # every base point, then G raised so that the lowest touches the support
-    count = base_points(par, y, rot, 0.0, 1e9, arms)
+    count = base_points(par, y, rot, 0.0, 1e9, arms, new_impulse_work())
     y[2] = -np.min(arms[:count, 2])
     return par, y, rot
 
@@ -77,11 +78,13 @@ def _impact(shape, mu, tilt, azimuth, velocity, ending=None):
     inv = np.empty((3, 3))
     world_inverse_inertia(par, rot, inv)
     arms = np.zeros((MAX_POINTS, 3))
-    count = base_points(par, y, rot, 0.0, 2e-3, arms)
+    count = base_points(par, y, rot, 0.0, 2e-3, arms, new_impulse_work())
     arms = arms[:count]
     after = np.array(velocity)
     impulses = np.zeros((count, 3))
-    _, how = point_impulses(par, inv, arms, count, par[P_MU_KINETIC], after, impulses)
+    _, how = point_impulses(
+        par, inv, arms, count, par[P_MU_KINETIC], after, impulses, new_impulse_work()
+    )
     if ending is not None:
         ending.append(how)
     scale = max(np.max(np.abs(velocity)), 1e-3) * (1.0 + np.max(np.linalg.norm(arms, axis=1)))
@@ -91,7 +94,16 @@ def _impact(shape, mu, tilt, azimuth, velocity, ending=None):
 def _energy_not_gained(par, inv, arms, before):
     # the frictional solution or, where it would gain energy, the frictionless one
     kept = before.copy()
-    velocity_impact(par, inv, arms, len(arms), par[P_MU_KINETIC], kept, np.zeros((len(arms), 3)))
+    velocity_impact(
+        par,
+        inv,
+        arms,
+        len(arms),
+        par[P_MU_KINETIC],
+        kept,
+        np.zeros((len(arms), 3)),
+        new_impulse_work(),
+    )
     energy_before = kinetic_energy(par, inv, before)
     return kinetic_energy(par, inv, kept) <= energy_before * (1.0 + 1e-12) + 1e-300
 
@@ -175,9 +187,9 @@ def test_a_flat_cylinders_rim_points_with_twist():
     inv = np.empty((3, 3))
     world_inverse_inertia(par, rot, inv)
     arms = np.zeros((MAX_POINTS, 3))
-    count = base_points(par, y, rot, 0.0, 2e-3, arms)
+    count = base_points(par, y, rot, 0.0, 2e-3, arms, new_impulse_work())
     after = velocity.copy()
-    point_impulses(par, inv, arms, count, 0.5, after, np.zeros((count, 3)))
+    point_impulses(par, inv, arms, count, 0.5, after, np.zeros((count, 3)), new_impulse_work())
     assert np.min(_point_velocities(after, arms[:count])[:, 2]) >= -1e-7
 
 
@@ -212,7 +224,9 @@ def test_a_start_near_the_solution_is_polished_before_any_sweep():
     par, inv, arms, after, impulses, scale = _impact("box", 0.828125, 0.015625, 0.0, velocity)
     warm_after = np.array(velocity)
     warm = impulses * 1.01  # a start 1 % off the solution, inside the cone
-    sweeps, how = point_impulses(par, inv, arms, len(arms), par[P_MU_KINETIC], warm_after, warm)
+    sweeps, how = point_impulses(
+        par, inv, arms, len(arms), par[P_MU_KINETIC], warm_after, warm, new_impulse_work()
+    )
     assert (sweeps, how) == (0, ENDED_POLISHED)
     # the same velocity after, to the polish's tolerance (1e-10 of the speed)
     assert np.allclose(warm_after, after, rtol=0.0, atol=10 * POLISH_TOLERANCE * scale)
@@ -236,7 +250,9 @@ def test_a_near_flat_landing_that_ends_on_one_rim_point_is_polished_early():
                          -0.001049966682226568, -0.0034131135070398695,
                          0.006415969825281099])  # fmt: skip
     after, impulses = velocity.copy(), np.zeros((MAX_POINTS, 3))
-    sweeps, how = point_impulses(par, inv, arms, MAX_POINTS, 0.5, after, impulses)
+    sweeps, how = point_impulses(
+        par, inv, arms, MAX_POINTS, 0.5, after, impulses, new_impulse_work()
+    )
     assert (sweeps, how) == (8, ENDED_POLISHED)  # 116 sweeps, converged, before
     scale = np.max(np.abs(velocity))
     u = _point_velocities(after, arms)

@@ -20,6 +20,7 @@ from scipy.spatial.transform import Rotation
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact.body_impulse import (
     kinetic_energy,
+    new_impulse_work,
     restitution_velocity,
     turn_about_line,
 )
@@ -76,7 +77,7 @@ def test_the_kept_turn_fixes_both_points_and_splits_the_energy(inertia, arms, ve
     metric = _mass_matrix(mass, inv_inertia)
     assert abs(kept @ metric @ (v - kept)) <= 1e-9 * (v @ metric @ v + 1e-300)
     after = v.copy()
-    restitution_velocity(par, inv_inertia, arms, 2, True, after)
+    restitution_velocity(par, inv_inertia, arms, 2, True, after, new_impulse_work())
     energy = kinetic_energy(par, inv_inertia, v)
     energy_kept = kinetic_energy(par, inv_inertia, kept)
     expected = energy_kept + factor**2 * (energy - energy_kept)
@@ -97,14 +98,16 @@ def test_the_planar_law_holds_after_a_flight_where_three_points_touch_and_for_a_
     for parameters, count, held_before in ((par, 2, False), (par, 3, True), (par, 1, True),
                                            (cylinder, 2, True)):  # fmt: skip
         after = v.copy()
-        restitution_velocity(parameters, inv_inertia, arms, count, held_before, after)
+        restitution_velocity(
+            parameters, inv_inertia, arms, count, held_before, after, new_impulse_work()
+        )
         assert np.allclose(after, 0.6 * v, rtol=0, atol=1e-15)
     kept = v.copy()
-    restitution_velocity(par, inv_inertia, arms, 2, True, kept)
+    restitution_velocity(par, inv_inertia, arms, 2, True, kept, new_impulse_work())
     assert not np.allclose(kept, 0.6 * v)  # a box's pivot and landing corner: the turn kept
     plastic = body_parameters(BOX, GRAVITY, 1.0)
     after = v.copy()
-    restitution_velocity(plastic, inv_inertia, arms, 2, True, after)
+    restitution_velocity(plastic, inv_inertia, arms, 2, True, after, new_impulse_work())
     assert np.array_equal(after, v)
 
 

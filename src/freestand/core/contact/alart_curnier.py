@@ -45,6 +45,22 @@ STALL_ITERATIONS = 5  # ...and this many stalled iterations in a row end the sea
 REGULARISATION = 1e-13  # of the Newton step's normal equations, relative to their largest term
 
 
+def work_fields(points: int) -> list[tuple]:
+    """The fields of :func:`solve_alart_curnier`'s work record for up to ``points`` points.
+
+    Part of the caller's work record (numpy's structured dtype): allocated
+    once, the solve then needs numba's reference counting nowhere, which a
+    rocking cabinet's time stepping (thousands of solves) paid at every call.
+    The matrices are flat (3n)^2 buffers, viewed as (3n, 3n) for n points.
+    """
+    n3 = 3 * points
+    return [
+        ("ac_rho_n", "f8", points), ("ac_rho_t", "f8", points), ("ac_residual", "f8", n3),
+        ("ac_jacobian", "f8", n3 * n3), ("ac_trial", "f8", n3), ("ac_trial_residual", "f8", n3),
+        ("ac_trial_jacobian", "f8", n3 * n3), ("ac_normal", "f8", n3 * n3), ("ac_step", "f8", n3),
+    ]  # fmt: skip
+
+
 @nb.njit(cache=True, error_model="numpy", _nrt=False)
 def largest_tangential_eigenvalue(w):
     """The larger eigenvalue of a point's symmetric 2 x 2 tangential block W_tt [1/kg].
@@ -209,9 +225,9 @@ def obeys_laws(count, mu, impulses, speeds, velocity_tolerance, impulse_toleranc
     return True
 
 
-@nb.njit(cache=True, error_model="numpy", _nrt=True)
+@nb.njit(cache=True, error_model="numpy", _nrt=False)
 def solve_alart_curnier(count, mu, delassus, free, impulses, velocity_tolerance,
-                        impulse_tolerance, speeds):  # fmt: skip
+                        impulse_tolerance, speeds, work):  # fmt: skip
     """The exact impulses from a start near them; returns whether they obey the laws.
 
     ``delassus`` (3n, 3n) [1/kg] the points' velocities per unit impulse,
@@ -228,22 +244,23 @@ def solve_alart_curnier(count, mu, delassus, free, impulses, velocity_tolerance,
     (a flat cylinder's eight rim points from the sweeps' early impulses
     crept on for hundreds of evaluations of F and failed; every solve of a
     rocking cabinet's that succeeds halves its steps at most three times in
-    a row), and the caller's sweeps go on.
+    a row), and the caller's sweeps go on. ``work``: a record with the
+    fields of :func:`work_fields` for at least ``count`` points.
     """
     n3 = 3 * count
-    rho_n = np.empty(count)
-    rho_t = np.empty(count)
+    rho_n = work["ac_rho_n"][:count]
+    rho_t = work["ac_rho_t"][:count]
     for p in range(count):
         r = 3 * p
         rho_n[p] = 1.0 / delassus[r + 2, r + 2]
         rho_t[p] = 1.0 / largest_tangential_eigenvalue(delassus[r : r + 2, r : r + 2])
-    residual = np.empty(n3)
-    jacobian = np.empty((n3, n3))
-    trial = np.empty(n3)
-    trial_residual = np.empty(n3)
-    trial_jacobian = np.empty((n3, n3))
-    normal = np.empty((n3, n3))
-    step = np.empty(n3)
+    residual = work["ac_residual"][:n3]
+    jacobian = work["ac_jacobian"][: n3 * n3].reshape((n3, n3))
+    trial = work["ac_trial"][:n3]
+    trial_residual = work["ac_trial_residual"][:n3]
+    trial_jacobian = work["ac_trial_jacobian"][: n3 * n3].reshape((n3, n3))
+    normal = work["ac_normal"][: n3 * n3].reshape((n3, n3))
+    step = work["ac_step"][:n3]
     norm = _function(count, mu, rho_n, rho_t, delassus, free, impulses, speeds, residual, jacobian)
     stalled = 0
     for _iteration in range(NEWTON_ITERATIONS):

@@ -51,7 +51,11 @@ import math
 
 import numpy as np
 
-from freestand.core.contact.alart_curnier import largest_tangential_eigenvalue, solve_alart_curnier
+from freestand.core.contact.alart_curnier import (
+    largest_tangential_eigenvalue,
+    solve_alart_curnier,
+    work_fields,
+)
 from freestand.core.contact.body_kernel import (
     P_HALF_X,
     P_MASS,
@@ -79,16 +83,45 @@ ENDED_CONVERGED, ENDED_POLISHED, ENDED_EXHAUSTED = 0, 1, 2  # how point_impulses
 POLISH_TOLERANCE = 1e-10  # the polish's laws, relative to the speed (and to m times it)
 SUBSET_POINTS = 4  # where this many points press or fewer, every subset of them is polished
 
+_N3 = 3 * MAX_POINTS
+#: The impulses' work arrays, one record (:func:`new_impulse_work`): allocated once per run
+#: (:func:`freestand.core.dynamics.body_engine.run`), the functions below then allocate
+#: nothing and need no reference counting, which a rocking cabinet's time stepping paid at
+#: every call. Matrices of the points are flat buffers, viewed as (3n, 3n) or (3n, 6) for n
+#: points.
+IMPULSE_WORK_DTYPE = np.dtype(
+    [
+        ("start", "f8", 6), ("before", "f8", 6), ("after", "f8", 6), ("kept", "f8", 6),
+        ("probe", "f8", 6), ("point", "f8", 3), ("zeros", "f8", (MAX_POINTS, 3)),
+        ("point_delassus", "f8", (MAX_POINTS, 3, 3)), ("stiffness", "f8", MAX_POINTS),
+        ("columns", "f8", _N3 * 6), ("delassus", "f8", _N3 * _N3), ("free", "f8", _N3),
+        ("speeds", "f8", _N3), ("solution", "f8", _N3), ("order", "i8", MAX_POINTS),
+        ("chosen", "i8", MAX_POINTS), ("subset", "f8", (MAX_POINTS, 3)),
+        ("trial", "f8", (MAX_POINTS, 3)),
+        # a velocity-level step's own (the remedy's, an impact's): its velocity, the free
+        # velocity, its base points' arms
+        ("velocity", "f8", 6), ("free_velocity", "f8", 3), ("arms", "f8", (MAX_POINTS, 3)),
+    ]
+    + work_fields(MAX_POINTS),
+    align=True,
+)  # fmt: skip
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
-def base_points(par, y, rot, psi_stored, gap_limit, arms):
+
+def new_impulse_work() -> np.void:
+    """A record of ``IMPULSE_WORK_DTYPE`` (a view of a one-element array, which it keeps alive)."""
+    return np.zeros(1, dtype=IMPULSE_WORK_DTYPE)[0]
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def base_points(par, y, rot, psi_stored, gap_limit, arms, work):
     """The base points within ``gap_limit`` [m] of the support: their arms from G in ``arms``.
 
     Returns their count. A box's corners; a cylinder's rim at ``RIM_POINTS``
-    angles starting from its lowest point.
+    angles starting from its lowest point. ``work``: a record of
+    ``IMPULSE_WORK_DTYPE``.
     """
     count = 0
-    d = np.empty(3)
+    d = work["point"]
     if par[P_SHAPE] == SHAPE_BOX:
         for k in range(4):
             sx, sy = box_corner(par, k)
@@ -129,10 +162,12 @@ def _point_speed(velocity, d):
     return velocity[0] + cx, velocity[1] + cy, velocity[2] + cz
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
-def _delassus(par, inv_inertia, d, out):
-    """The point's 3 x 3 Delassus matrix W = J M^-1 J^T (columns: unit impulses x, y, n)."""
-    probe = np.zeros(6)
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _delassus(par, inv_inertia, d, out, probe):
+    """The point's 3 x 3 Delassus matrix W = J M^-1 J^T (columns: unit impulses x, y, n).
+
+    ``probe`` (6): work space.
+    """
     for k in range(3):
         for i in range(6):
             probe[i] = 0.0
@@ -218,8 +253,8 @@ def _sweep(par, inv_inertia, arms, count, mu, delassus, stiffness, velocity, imp
     return change
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
-def polish(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale):
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def polish(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale, work):
     """The exact impulses from the sweeps', taken where they obey the laws.
 
     The points' Delassus matrix W (3n x 3n) and velocities before (from
@@ -230,14 +265,16 @@ def polish(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale):
     m times it for impulses; ``scale`` [m/s] the largest component of
     ``start``), it replaces ``impulses`` and ``velocity`` and True is
     returned; otherwise both are left as they are and False is returned.
+    ``work``: a record of ``IMPULSE_WORK_DTYPE``.
     """
     n3 = 3 * count
     # the body's velocity change per unit impulse (rows), the points' velocities per impulse
-    columns = np.zeros((n3, 6))
-    delassus = np.empty((n3, n3))
-    free = np.empty(n3)
-    speeds = np.empty(n3)
-    solution = np.empty(n3)  # from the sweeps' impulses
+    columns = work["columns"][: n3 * 6].reshape((n3, 6))
+    columns[:, :] = 0.0
+    delassus = work["delassus"][: n3 * n3].reshape((n3, n3))
+    free = work["free"][:n3]
+    speeds = work["speeds"][:n3]
+    solution = work["solution"][:n3]  # from the sweeps' impulses
     for j in range(n3):
         _apply(par, inv_inertia, arms[j // 3], 1.0 if j % 3 == 0 else 0.0,
                1.0 if j % 3 == 1 else 0.0, 1.0 if j % 3 == 2 else 0.0, columns[j])  # fmt: skip
@@ -253,7 +290,7 @@ def polish(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale):
     velocity_tolerance = POLISH_TOLERANCE * scale
     impulse_tolerance = POLISH_TOLERANCE * par[P_MASS] * scale
     if not solve_alart_curnier(count, mu, delassus, free, solution, velocity_tolerance,
-                               impulse_tolerance, speeds):  # fmt: skip
+                               impulse_tolerance, speeds, work):  # fmt: skip
         return False
     for i in range(6):
         velocity[i] = start[i]
@@ -264,8 +301,8 @@ def polish(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale):
     return True
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
-def polish_pressed(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale):
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def polish_pressed(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale, work):
     """:func:`polish` on the points that press, then on their subsets; True where one is found.
 
     On the points with a normal impulse in the sweeps' ``impulses`` (every
@@ -282,20 +319,19 @@ def polish_pressed(par, inv_inertia, arms, count, mu, start, impulses, velocity,
     that pressed after the early sweeps (the other one the stronger there),
     and the sweeps took 116 sweeps and 0.4 ms to converge; that point alone
     is solved at once. ``impulses`` and ``velocity`` are set only where a
-    solution is found (as :func:`polish`).
+    solution is found (as :func:`polish`). ``work``: a record of
+    ``IMPULSE_WORK_DTYPE``.
     """
     pressing = 0
     for p in range(count):
         if impulses[p, 2] > 0.0:
             pressing += 1
     if pressing == count or pressing == 0:
-        if polish(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale):
+        if polish(par, inv_inertia, arms, count, mu, start, impulses, velocity, scale, work):
             return True
-    order = np.argsort(-impulses[:count, 2])
-    subset = np.empty((count, 3))
-    trial = np.empty((count, 3))
-    chosen = np.empty(count, dtype=np.int64)
-    after = np.empty(6)
+    order = work["order"]
+    _order_by_pressing(impulses, count, order)
+    subset, trial, chosen, after = work["subset"], work["trial"], work["chosen"], work["after"]
     every = pressing <= SUBSET_POINTS
     for size in range(min(pressing, count - 1), 0, -1):
         for mask in range(1, 1 << pressing if every else 2):
@@ -311,7 +347,7 @@ def polish_pressed(par, inv_inertia, arms, count, mu, start, impulses, velocity,
                 for i in range(3):
                     subset[q, i] = arms[chosen[q], i]
                     trial[q, i] = impulses[chosen[q], i]
-            if not polish(par, inv_inertia, subset, size, mu, start, trial, after, scale):
+            if not polish(par, inv_inertia, subset, size, mu, start, trial, after, scale, work):
                 continue
             if not _left_out_separate(arms, count, chosen, size, after,
                                       POLISH_TOLERANCE * scale):  # fmt: skip
@@ -326,6 +362,28 @@ def polish_pressed(par, inv_inertia, arms, count, mu, start, impulses, velocity,
                 velocity[i] = after[i]
             return True
     return False
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _order_by_pressing(impulses, count, order):
+    """The points 0..count-1 by decreasing normal impulse into ``order[:count]``.
+
+    ``numpy.argsort(-impulses[:count, 2])`` as numba sorts up to 15 keys
+    (a stable insertion sort, NaN last), with no array allocated.
+    """
+    for i in range(count):
+        order[i] = i
+    for i in range(1, count):
+        k = order[i]
+        v = -impulses[k, 2]
+        j = i
+        while j > 0:
+            w = -impulses[order[j - 1], 2]
+            if not (v < w or (math.isnan(w) and not math.isnan(v))):
+                break
+            order[j] = order[j - 1]
+            j -= 1
+        order[j] = k
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -362,8 +420,8 @@ def _warm(impulses, count):
     return False
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
-def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses):
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses, work):
     """Plastic impulses at the points with Coulomb friction on the circular cone.
 
     ``velocity`` (6) is updated. Projected Gauss-Seidel (Jean 1999), its
@@ -387,21 +445,22 @@ def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses):
     they ended: ``ENDED_CONVERGED``
     (the sweeps' change fell below ``SWEEP_TOLERANCE``), ``ENDED_POLISHED``
     or ``ENDED_EXHAUSTED`` (``SWEEPS`` made: the laws are met only as far as
-    the sweeps came).
+    the sweeps came). ``work``: a record of ``IMPULSE_WORK_DTYPE``.
     """
-    start = velocity.copy()
-    delassus = np.empty((count, 3, 3))
-    stiffness = np.empty(count)
+    start = work["start"]
+    delassus = work["point_delassus"]
+    stiffness = work["stiffness"]
     scale = 1e-300
     for i in range(6):
+        start[i] = velocity[i]
         scale = max(scale, abs(velocity[i]))
     for p in range(count):
-        _delassus(par, inv_inertia, arms[p], delassus[p])
+        _delassus(par, inv_inertia, arms[p], delassus[p], work["probe"])
         stiffness[p] = largest_tangential_eigenvalue(delassus[p])
         _apply(par, inv_inertia, arms[p], impulses[p, 0], impulses[p, 1], impulses[p, 2],
                velocity)  # fmt: skip
     if _warm(impulses, count) and polish(par, inv_inertia, arms, count, mu, start, impulses,
-                                          velocity, scale):  # fmt: skip
+                                          velocity, scale, work):  # fmt: skip
         return 0, ENDED_POLISHED
     for sweep in range(SWEEPS):
         change = _sweep(par, inv_inertia, arms, count, mu, delassus, stiffness, velocity,
@@ -410,24 +469,27 @@ def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses):
             return sweep + 1, ENDED_CONVERGED
         if sweep >= POLISH_FROM and (sweep & (sweep + 1)) == 0:
             if polish_pressed(par, inv_inertia, arms, count, mu, start, impulses, velocity,
-                              scale):  # fmt: skip
+                              scale, work):  # fmt: skip
                 return sweep + 1, ENDED_POLISHED
     return SWEEPS, ENDED_EXHAUSTED
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
-def velocity_impact(par, inv_inertia, arms, count, mu, velocity, impulses):
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def velocity_impact(par, inv_inertia, arms, count, mu, velocity, impulses, work):
     """The velocity after a plastic impact at the points; it never gains energy.
 
     ``velocity`` (6) is replaced; ``impulses`` (at least count, 3) [N s] holds
     the sweeps' start on entry and the impulses on exit
     (:func:`point_impulses`). Returns True when the frictional solution was
     kept, False when it would have raised the kinetic energy and the
-    frictionless one (from zero) was taken instead.
+    frictionless one (from zero) was taken instead. ``work``: a record of
+    ``IMPULSE_WORK_DTYPE``.
     """
-    before = velocity.copy()
+    before = work["before"]
+    for i in range(6):
+        before[i] = velocity[i]
     energy_before = kinetic_energy(par, inv_inertia, before)
-    point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses)
+    point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses, work)
     if kinetic_energy(par, inv_inertia, velocity) <= energy_before * (1.0 + 1e-12):
         return True
     for i in range(6):
@@ -435,7 +497,7 @@ def velocity_impact(par, inv_inertia, arms, count, mu, velocity, impulses):
     for p in range(count):
         for i in range(3):
             impulses[p, i] = 0.0
-    point_impulses(par, inv_inertia, arms, count, 0.0, velocity, impulses)
+    point_impulses(par, inv_inertia, arms, count, 0.0, velocity, impulses, work)
     return False
 
 
@@ -476,8 +538,8 @@ def turn_about_line(par, inv_inertia, arms, count, velocity, out):
     out[3], out[4], out[5] = rate * ax, rate * ay, rate * az
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
-def restitution_velocity(par, inv_inertia, arms, count, held_before, velocity):
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def restitution_velocity(par, inv_inertia, arms, count, held_before, velocity, work):
     """The restitution factor e on the velocity after an impact (in place): ``v_k + e (v - v_k)``.
 
     ``velocity`` (6) is the plastic impact's velocity after, relative to the
@@ -503,12 +565,14 @@ def restitution_velocity(par, inv_inertia, arms, count, held_before, velocity):
     tilted base touches at one rim point, and its impacts are flat
     landings: the planar law (its rim points sampled within the gap
     tolerance of a nearly flat base, two of them, are not a pivot and a
-    landing point).
+    landing point). ``work``: a record of ``IMPULSE_WORK_DTYPE``.
     """
     e = par[P_RESTITUTION]
     if e == 1.0:
         return
-    kept = np.zeros(6)
+    kept = work["kept"]
+    for i in range(6):
+        kept[i] = 0.0
     if held_before and par[P_SHAPE] == SHAPE_BOX:
         turn_about_line(par, inv_inertia, arms, count, velocity, kept)
     for i in range(6):

@@ -43,6 +43,7 @@ import math
 import numpy as np
 
 from freestand.core.contact.body_impulse import (
+    IMPULSE_WORK_DTYPE,
     MAX_POINTS,
     base_points,
     restitution_velocity,
@@ -381,8 +382,12 @@ def _post_record_fall(par, y, mode, sc):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=True)
-def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which, istate):
-    """Phase 3: the impact (a gap closed) and the next contact mode; the event kind."""
+def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which, istate, work):
+    """Phase 3: the impact (a gap closed) and the next contact mode; the event kind.
+
+    ``work``: the impulses' work record
+    (:data:`~freestand.core.contact.body_impulse.IMPULSE_WORK_DTYPE`).
+    """
     event = EV_LIFT_OFF
     if which == FN_FRICTION:
         event = EV_SLIP
@@ -407,21 +412,23 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
         prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
         after = np.empty(6)
         chosen = impact(par, y, sc, gap_tol, data[D_PSI], mode, data, after)
-        arms = np.empty((MAX_POINTS, 3))
-        count = base_points(par, y, rot, data[D_PSI], gap_tol, arms)
+        arms = work["arms"]
+        count = base_points(par, y, rot, data[D_PSI], gap_tol, arms, work)
         if chosen == NONE_ADMISSIBLE:
             # no candidate of the impact law: the velocity-level impact at the base points
             for i in range(6):
                 after[i] = y[7 + i]
-            velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], after,
-                            np.zeros((MAX_POINTS, 3)))  # fmt: skip
+            start = work["zeros"]
+            start[:, :] = 0.0
+            velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], after, start,
+                            work)  # fmt: skip
             istate[I_REMEDIES] += 1
             event = EV_REMEDY
         else:
             istate[I_IMPACTS] += 1
             event = EV_IMPACT
         # the restitution factor on the velocity after (relative to the support)
-        restitution_velocity(par, sc[SC_INV], arms, count, held_before, after)
+        restitution_velocity(par, sc[SC_INV], arms, count, held_before, after, work)
         for i in range(6):
             y[7 + i] = after[i]
     excluded = np.array([-1, 0, 0], dtype=np.int64)
@@ -451,8 +458,8 @@ def _set_free(mode):
     mode[M_SLIP] = 0
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
-def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force, impulses):
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force, impulses, work):
     """The remedy's step: one Moreau-Jean step of length h (Jean 1999), in place on ``y``.
 
     The velocity at t + h is the free one (gravity, the support's inertial
@@ -470,24 +477,25 @@ def advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force, impulses
     where it stopped, above the support by up to the reach). ``impulses``
     (``MAX_POINTS``, 3) [N s]: the step before's impulses at its points, the
     start of this step's sweeps (zeros at a stretch's first step); replaced
-    by this step's.
+    by this step's. ``work``: the impulses' work record
+    (:data:`~freestand.core.contact.body_impulse.IMPULSE_WORK_DTYPE`).
     """
     prepare(par, record, dt, t + h, y, FREE, 0, 0.0, sc)
     rot = sc[SC_ROT]
-    velocity = np.empty(6)
+    velocity = work["velocity"]
     for i in range(6):
         velocity[i] = y[7 + i] + h * sc[SC_BASE][i]
-    free = np.empty(3)
+    free = work["free_velocity"]
     for i in range(3):
         free[i] = velocity[i]
-    arms = np.empty((MAX_POINTS, 3))
+    arms = work["arms"]
     reach = gap_tol + h * _fall_speed(velocity, par)
-    count = base_points(par, y, rot, data[D_PSI], reach, arms)
+    count = base_points(par, y, rot, data[D_PSI], reach, arms, work)
     approach = 0.0  # the fastest approach of a base point [m/s]
     for p in range(count):
         _, _, uz = cross(velocity[3], velocity[4], velocity[5], arms[p, 0], arms[p, 1], arms[p, 2])
         approach = max(approach, -(velocity[2] + uz))
-    velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], velocity, impulses)
+    velocity_impact(par, sc[SC_INV], arms, count, par[P_MU_KINETIC], velocity, impulses, work)
     for i in range(3):
         y[i] += h * velocity[i]
     _turn(y, velocity[3] * h, velocity[4] * h, velocity[5] * h)
@@ -681,7 +689,7 @@ def _next_end(t, breaks, h_max, t_end):
 
 @kernel(cache=True, error_model="numpy", _nrt=True)
 def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, istate, force,
-             impulses):  # fmt: skip
+             impulses, work):  # fmt: skip
     """One step of the remedy; it ends where a consistent mode exists again. Returns t + h.
 
     The search for a consistent mode (:func:`select_mode`, whose slip onsets
@@ -696,8 +704,8 @@ def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, is
     """
     if istate[I_STRETCH] == 1:
         impulses[:, :] = 0.0  # a stretch starts its sweeps from zero
-    advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force, impulses)
-    hovering = _settle(par, y, sc, data, force[2], gap_tol, velocity_tol)
+    advance_stretch(par, record, dt, t, h, y, data, sc, gap_tol, force, impulses, work)
+    hovering = _settle(par, y, sc, data, force[2], gap_tol, velocity_tol, work)
     istate[I_STRETCH_STEPS] += 1
     steps = istate[I_STRETCH]
     istate[I_STRETCH] += 1
@@ -763,8 +771,8 @@ def touched_patch(par, y, rot, reach, velocity_tol, patch):
     return patch[0]
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
-def _settle(par, y, sc, data, reach, gap_tol, velocity_tol):
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _settle(par, y, sc, data, reach, gap_tol, velocity_tol, work):
     """Set the body on the base points a stretch holds; True if any stays above the support.
 
     A point that closed within a step of the remedy is held where it
@@ -779,11 +787,12 @@ def _settle(par, y, sc, data, reach, gap_tol, velocity_tol):
     cylinder (R 1.9 m, mu 1.4) rolling at 1.3 rad/s at 0.025 rad under 4 g
     sank 0.6 um a step until its contact was lost (``robust_case`` 1079 of
     the 3-D benchmark under its record times 14). Returns True when a held
-    point stays more than ``gap_tol`` above the support.
+    point stays more than ``gap_tol`` above the support. ``work``: the
+    impulses' work record, its ``point`` free here.
     """
     rot = sc[SC_ROT]
     rotation_matrix(y, rot)
-    d = np.empty(3)
+    d = work["point"]
     held = math.inf
     lowest = math.inf
     if par[P_SHAPE] == SHAPE_BOX:
@@ -884,7 +893,7 @@ def _start_chatter(mode, istate, event):
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
 def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mode, data, sc,
-          rest, istate, ev_time, ev_kind, ev_before, ev_after):  # fmt: skip
+          rest, istate, ev_time, ev_kind, ev_before, ev_after, work):  # fmt: skip
     """One step of the resting body (:func:`rest_step`) and, where a margin fired, its event.
 
     Returns t + the step taken; the scratch holds the contact force at it.
@@ -896,7 +905,7 @@ def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mo
     if which >= 0:
         before = mode[M_KIND]
         event = resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
-                        istate)  # fmt: skip
+                        istate, work)  # fmt: skip
         istate[I_EVENTS] = _event(t, event, before, mode[M_KIND], istate[I_EVENTS], ev_time,
                                   ev_kind, ev_before, ev_after)  # fmt: skip
         solve_at(par, record, dt, t, y, mode, data, sc)
@@ -960,6 +969,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
     impulses = np.zeros((MAX_POINTS, 3))  # a stretch's step's impulses: the next one's start
     # the last slip restart's time [s], restarts in a row; the same for impacts (watch_chatter)
     chatter = np.array([-math.inf, 0.0, -math.inf, 0.0])
+    work_record = np.zeros(1, dtype=IMPULSE_WORK_DTYPE)
+    work = work_record[0]  # the impulses' work arrays, allocated once
     fresh = False  # the step's references and event functions at (t, y) are computed
     count = 0
     if istate[I_RECORDS] == 0:
@@ -982,7 +993,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             return t
         if istate[I_STRETCH] >= 1:
             t = _stretch(par, record_, dt, t, min(STRETCH_STEP, t_end - t), y, mode, data, sc,
-                         gap_tol, velocity_tol, istate, force, impulses)  # fmt: skip
+                         gap_tol, velocity_tol, istate, force, impulses, work)  # fmt: skip
             solve_at(par, record_, dt, t, y, mode, data, sc)
             row = istate[I_RECORDS]
             record(t, y, mode, sc, row, out_t, out_y, out_mode, out_force)
@@ -1002,7 +1013,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
                 rotation_matrix(y, sc[SC_ROT])
                 rest_ready = True
             t = _rest(par, record_, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mode,
-                      data, sc, rest, istate, ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
+                      data, sc, rest, istate, ev_time, ev_kind, ev_before, ev_after,
+                      work)  # fmt: skip
             rest_ready = resting(mode, y, velocity_tol)
             record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
             if istate[I_STRETCH] == 1:
@@ -1048,7 +1060,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         if which >= 0:
             before = mode[M_KIND]
             event = resolve(par, record_, dt, t, y, mode, data, sc, gap_tol, velocity_tol,
-                            which, istate)  # fmt: skip
+                            which, istate, work)  # fmt: skip
             event = watch_chatter(t, before, event, mode, istate, chatter)
             after = mode[M_KIND]
             if event == EV_REMEDY and after == FREE:
