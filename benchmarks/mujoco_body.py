@@ -74,6 +74,9 @@ off-centre, with non-principal inertia, of random size, mass, friction and
 restitution; :func:`robust_case`) under random records of the suite, scaled
 0.2-5: no simulation may end ``failed``, nor take more than ``ROBUST_SLOW``
 (:func:`robustness`; MuJoCo is not needed).
+``strong``: ``STRONG_RUNS`` of them under records 3-10 times stronger, the
+vertical 0-12 times (:func:`strong_case`), simulated ``STRONG_AFTER`` past
+their end: a third overturn, many fly, and none may end ``failed``.
 
     python benchmarks/mujoco_body.py [accuracy] [speed] [profile]
     python benchmarks/mujoco_body.py single | campaign     # one half of (b)
@@ -81,6 +84,7 @@ restitution; :func:`robust_case`) under random records of the suite, scaled
     python benchmarks/mujoco_body.py edges                 # (e), the cabinet around mu 0.5
     python benchmarks/mujoco_body.py example               # (f), the example cabinet
     python benchmarks/mujoco_body.py robust                # (g), random bodies, 0 failed
+    python benchmarks/mujoco_body.py strong                # (g) under strong records
 
 Each check prints PASS or FAIL; the command exits 1 if any failed.
 
@@ -663,6 +667,8 @@ def _campaign_chunk(tasks: list[tuple[int, tuple[int, int, float]]]) -> list[tup
 ROBUST_RUNS = 2000
 ROBUST_DURATION = 12.0  # [s] of each record
 ROBUST_SLOW = 2.0  # [s] a run slower than this (on one core, once compiled) is reported as a FAIL
+STRONG_RUNS = 1400  # random bodies under strong records (robust strong)
+STRONG_AFTER = 2.0  # [s] simulated past a strong record's end
 
 
 def _log_uniform(rng: np.random.Generator, low: float, high: float) -> float:
@@ -713,8 +719,28 @@ def robust_case(seed: int) -> tuple[Body, int, float, float]:
     return body, record, _log_uniform(rng, 0.2, 5.0), float(rng.choice([1.0, 0.8, 0.5, 0.0]))
 
 
-def _robust_chunk(seeds: list[int]) -> list[tuple]:
-    """Run the random cases of the seeds: (seed, status, message, remedies, seconds) each."""
+def strong_case(seed: int) -> tuple[Body, SupportMotion3, float]:
+    """(g)'s random body of the seed under a strong record: (body, motion, restitution).
+
+    The body, record and restitution of :func:`robust_case`; its scale times
+    3-10 on the horizontal pair and 0-12 on the vertical component,
+    ``ROBUST_DURATION`` of it.
+    """
+    body, record, scale, restitution = robust_case(seed)
+    rng = np.random.default_rng(seed + 777)
+    horizontal, vertical = float(rng.uniform(3, 10)), float(rng.uniform(0, 12))
+    motion = scaled(_WORKER["records"][record], scale * horizontal, ROBUST_DURATION)
+    motion = SupportMotion3(motion.time_step, motion.x, motion.y,
+                            motion.vertical * (vertical / horizontal))  # fmt: skip
+    return body, motion, restitution
+
+
+def _robust_chunk(seeds: list[int], strong: bool = False) -> list[tuple]:
+    """Run the random cases of the seeds: (seed, status, message, remedies, seconds) each.
+
+    ``strong``: under :func:`strong_case`'s records, simulated
+    ``STRONG_AFTER`` past their end.
+    """
     rows = []
     if not _WORKER.get("warm"):
         # the process's first run loads the compiled engine: not one of the runs timed
@@ -722,28 +748,48 @@ def _robust_chunk(seeds: list[int]) -> list[tuple]:
         simulate_body(body, scaled(_WORKER["records"][record], scale, 1.0), 1.0)
         _WORKER["warm"] = True
     for seed in seeds:
-        body, record, scale, restitution = robust_case(seed)
-        motion = scaled(_WORKER["records"][record], scale, ROBUST_DURATION)
+        if strong:
+            body, motion, restitution = strong_case(seed)
+        else:
+            body, record, scale, restitution = robust_case(seed)
+            motion = scaled(_WORKER["records"][record], scale, ROBUST_DURATION)
+        duration = ROBUST_DURATION + (STRONG_AFTER if strong else 0.0)
         start = time.perf_counter()
-        result = simulate_body(body, motion, ROBUST_DURATION, restitution=restitution)
+        result = simulate_body(body, motion, duration, restitution=restitution)
         seconds = time.perf_counter() - start
         rows.append((seed, result.status, result.message, result.diagnostics["remedies"], seconds))
     return rows
 
 
-def robustness(records: list[SupportMotion3]) -> bool:
-    """(g): ``ROBUST_RUNS`` random bodies on the worker pool; none failed, none slow."""
-    chunks = [list(range(i, min(i + 25, ROBUST_RUNS))) for i in range(0, ROBUST_RUNS, 25)]
+def _strong_chunk(seeds: list[int]) -> list[tuple]:
+    return _robust_chunk(seeds, strong=True)
+
+
+def robustness(records: list[SupportMotion3], strong: bool = False) -> bool:
+    """(g): ``ROBUST_RUNS`` random bodies on the worker pool; none failed, none slow.
+
+    ``strong``: ``STRONG_RUNS`` of them under the strong records of
+    :func:`strong_case` instead.
+    """
+    runs = STRONG_RUNS if strong else ROBUST_RUNS
+    chunks = [list(range(i, min(i + 25, runs))) for i in range(0, runs, 25)]
     start = time.perf_counter()
     with _worker_pool(records) as pool:
-        rows = [row for chunk in pool.map(_robust_chunk, chunks) for row in chunk]
+        work = _strong_chunk if strong else _robust_chunk
+        rows = [row for chunk in pool.map(work, chunks) for row in chunk]
     statuses = [row[1] for row in rows]
     failed = [row for row in rows if row[1] == "failed"]
     slow = [row for row in rows if row[4] > ROBUST_SLOW]
     times = np.array([row[4] for row in rows])
+    scales = (
+        f"{ROBUST_DURATION:g} s of a suite record x 0.2-5 x 3-10 (the vertical x 0-12 of that), "
+        f"simulated {STRONG_AFTER:g} s past its end"
+        if strong
+        else f"{ROBUST_DURATION:g} s of a suite record x 0.2-5"
+    )
     print(
-        f"\n(g) robustness: {len(rows)} random bodies (boxes and cylinders, hollow, off-centre, "
-        f"non-principal inertia; robust_case), {ROBUST_DURATION:g} s of a suite record x 0.2-5, "
+        f"\n(g{' strong' if strong else ''}) robustness: {len(rows)} random bodies (boxes and "
+        f"cylinders, hollow, off-centre, non-principal inertia; robust_case), {scales}, "
         f"restitution 1 / 0.8 / 0.5 / 0, {time.perf_counter() - start:.1f} s on {WORKERS} workers"
     )
     print(
@@ -986,13 +1032,13 @@ def example(_records: list[SupportMotion3]) -> None:
 
 def main(sections: list[str]) -> int:
     known = ("accuracy", "speed", "single", "campaign", "profile", "ensemble", "edges", "example",
-             "robust")  # fmt: skip
+             "robust", "strong")  # fmt: skip
     unknown = [name for name in sections if name not in known]
     if unknown:
         print(f"unknown section {', '.join(unknown)}: give any of {', '.join(known)}")
         return 2
     sections = sections or ["accuracy", "speed", "profile"]
-    if mujoco is None and sections != ["robust"]:
+    if mujoco is None and not set(sections) <= {"robust", "strong"}:
         print("mujoco is not installed (pip install -e '.[bench]'): benchmark skipped")
         return 0
     version = mujoco.__version__ if mujoco is not None else "not installed"
@@ -1017,6 +1063,8 @@ def main(sections: list[str]) -> int:
     if "example" in sections:
         example(records)
     if "robust" in sections and not robustness(records):
+        status = 1
+    if "strong" in sections and not robustness(records, strong=True):
         status = 1
     return status
 
