@@ -136,6 +136,7 @@ D_SLIP = 1
 D_ONSET = 4
 D_FLOOR = 5
 DATA_SIZE = 6
+MAX_CANDIDATES = 9  # candidate patches of a contact mode at most (body_modes.candidates)
 
 STATE_SIZE = 13  # r (3), q (4), v (3), omega (3)
 
@@ -859,6 +860,18 @@ SC_PROBE = 18  # (3, 6) work outside a solve: arms of probed points, a projectio
 SC_EDGE = 19  # (3, 10) a sliding EDGE's terms of its centre's search (:func:`edge_slide_terms`);
 # a sliding FACE's last centres and their centres of pressure (:func:`_slide_face`)
 SC_RIM = 20  # (4,) the stored rim angle's cosine and sine: set (1.0), psi [rad], cos, sin
+# the choice of a mode's and an impact's work (body_modes, body_engine): no allocation there
+SC_TOUCHING = 21  # (5,) 0 or 1 (numba has no bool arrays in records): the touching points
+SC_KINDS = 22  # (MAX_CANDIDATES + 1,) int: the candidates' kinds, indices and rim angles
+SC_INDICES = 23
+SC_ANGLES = 24
+SC_POINTS = 25  # (3, 3) arms of probed points: touching_points, _others_separate, touched_patch
+SC_STORED = 26  # (DATA_SIZE,) a kinetic candidate's stored slip (body_modes.try_mode)
+SC_START = 27  # (3,) a slip onset's start (try_mode)
+SC_ONSET = 28  # (3, 3) an onset's Newton: the basis across u, the trial u
+SC_JACOBIAN = 29  # (2, 2) the onset Newton's Jacobian
+SC_EXCLUDED = 30  # (3,) int: the mode a selection excludes (body_modes.select_mode)
+SC_AFTER = 31  # (6,) an impact's velocity after (body_engine.resolve)
 
 # the columns of ``sc[SC_EDGE]``'s rows 0 and 1 (one per corner's normal row r, q_r = M^-1 w_r)
 E_A0 = 0  # w_r . M^-1 w_0
@@ -884,6 +897,11 @@ SCRATCH_DTYPE = np.dtype(
         ("matrix", "f8", (6, 6)), ("rhs", "f8", 6), ("acc", "f8", 6), ("lam", "f8", 6),
         ("svel", "f8", 3), ("sacc", "f8", 3), ("dir", "f8", 3), ("centre", "f8", 6),
         ("probe", "f8", (3, 6)), ("edge", "f8", (3, 10)), ("rim", "f8", 4),
+        ("touching", "u1", 5), ("kinds", "i8", MAX_CANDIDATES + 1),
+        ("indices", "i8", MAX_CANDIDATES + 1), ("angles", "f8", MAX_CANDIDATES + 1),
+        ("points", "f8", (3, 3)), ("stored", "f8", DATA_SIZE), ("start", "f8", 3),
+        ("onset", "f8", (3, 3)), ("jacobian", "f8", (2, 2)), ("excluded", "i8", 3),
+        ("after", "f8", 6),
     ],
     align=True,
 )  # fmt: skip

@@ -40,28 +40,37 @@ from freestand.core.contact.body_kernel import (
     D_ONSET,
     D_PSI,
     D_SLIP,
-    DATA_SIZE,
     EDGE,
     FACE,
     FREE,
     M_INDEX,
     M_KIND,
     M_SLIP,
+    MAX_CANDIDATES,
     P_GRAVITY,
     P_HALF_X,
     P_MASS,
     P_SHAPE,
     POINT,
     SC_ACC,
+    SC_ANGLES,
     SC_BASE,
     SC_CENTRE,
     SC_DIR,
+    SC_INDICES,
+    SC_JACOBIAN,
+    SC_KINDS,
     SC_LAM,
+    SC_ONSET,
+    SC_POINTS,
     SC_ROT,
     SC_SACC,
+    SC_START,
+    SC_STORED,
     SC_SVEL,
     SC_TANGENT,
     SC_TBIAS,
+    SC_TOUCHING,
     SHAPE_BOX,
     arm,
     corner_gap,
@@ -91,7 +100,6 @@ ONSET_STARTS = 6  # Newton starts from the best samples on the sphere
 ONSET_NEWTON = 30  # Newton iterations from the fixed point's start
 ONSET_SPHERE_NEWTON = 8  # Newton iterations from each of the sphere's samples
 ONSET_HALVINGS = 12  # step halvings before Newton is taken to have stalled
-MAX_CANDIDATES = 9
 KINETIC_PASSES = 3  # solves of a kinetic slip, its stored direction the last one's own slip
 PIVOT_ITERATIONS = 60  # regula falsi steps of a landed cylinder's pivot search at most
 
@@ -119,12 +127,12 @@ def _point_normal_rate(y, d, x, level):
     return x[2] + az + cz
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _others_separate(par, y, sc, kind, index, psi, touching, level, tolerance):
     """True when every touching point the patch does not hold moves away (>= -tolerance)."""
     rot = sc[SC_ROT]
     x = sc[SC_ACC]
-    d = np.empty(3)
+    d = sc[SC_POINTS][1]
     if par[P_SHAPE] == SHAPE_BOX:
         for k in range(4):
             if not touching[k]:
@@ -301,7 +309,7 @@ def _tangent_basis(u, e1, e2):
     e2[0], e2[1], e2[2] = cross(u[0], u[1], u[2], e1[0], e1[1], e1[2])
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol, iterations):
     """Three tangential rows: Newton on the rate's components across u, from ``direction``.
 
@@ -313,10 +321,9 @@ def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol, iterations):
     430 solves, where no consistent onset exists). True when consistent
     (``direction`` holds u).
     """
-    e1 = np.empty(3)
-    e2 = np.empty(3)
-    trial = np.empty(3)
-    jac = np.empty((2, 2))
+    onset = sc[SC_ONSET]
+    e1, e2, trial = onset[0], onset[1], onset[2]
+    jac = sc[SC_JACOBIAN]
     for _ in range(iterations):
         along, across, size = _onset_rate(par, y, sc, level, n_normal, 3, direction)
         if size < 0.0:
@@ -475,7 +482,7 @@ def _restart(start, direction):
     return direction
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, scales, data):
     """Solve a candidate mode and test it; True when admissible (its u and psi in ``data``).
 
@@ -509,7 +516,8 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
         if not onset:
             # kinetic: along the slip velocity at the centre of pressure, which the step's
             # start (body_step.references) stores as its own direction
-            stored = np.zeros(DATA_SIZE)
+            stored = sc[SC_STORED]
+            stored[:] = 0.0
             for k in range(n_tangent):
                 stored[D_SLIP + k] = svel[k] / speed
             for _ in range(KINETIC_PASSES):
@@ -520,7 +528,8 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
                     break
         else:
             # the friction the patch would need to stick, reversed, starts the search
-            start = np.zeros(3)
+            start = sc[SC_START]
+            start[:] = 0.0
             if _solve(par, y, sc, level, 0, direction, n_normal, n_tangent):
                 size = 0.0
                 for k in range(n_tangent):
@@ -553,11 +562,15 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
     return True
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
-def touching_points(par, y, rot, gap_tol, velocity_tol, level, touching):
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def touching_points(par, y, sc, gap_tol, velocity_tol, level, touching):
     """Flags of the touching points: box corners 0-3; cylinder: 4 = the rim's lowest point,
-    0 = the whole base flat. Returns the rim angle of the lowest point (cylinder)."""
-    d = np.empty(3)
+    0 = the whole base flat. Returns the rim angle of the lowest point (cylinder).
+
+    At the rotation ``sc[SC_ROT]``.
+    """
+    rot = sc[SC_ROT]
+    d = sc[SC_POINTS][0]
     for k in range(5):
         touching[k] = False
     if par[P_SHAPE] == SHAPE_BOX:
@@ -573,6 +586,16 @@ def touching_points(par, y, rot, gap_tol, velocity_tol, level, touching):
         speed = math.hypot(y[10], y[11]) * par[P_HALF_X]
         touching[0] = level == VELOCITY or (gv <= velocity_tol and speed <= velocity_tol)
     return psi
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def clear_candidates(sc):
+    """Zero the scratch's candidate kinds, indices and rim angles (:func:`candidates`)."""
+    kinds, indices, angles = sc[SC_KINDS], sc[SC_INDICES], sc[SC_ANGLES]
+    for c in range(MAX_CANDIDATES + 1):
+        kinds[c] = 0
+        indices[c] = 0
+        angles[c] = 0.0
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -621,7 +644,7 @@ def _face_pivot(par, y, sc):
     return math.atan2(by, bx), True
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def select_mode(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, excluded):
     """Choose the contact mode at (t, y) (acceleration level); fills ``mode`` and ``data``.
 
@@ -632,12 +655,10 @@ def select_mode(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, ex
     NONE_ADMISSIBLE.
     """
     prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
-    rot = sc[SC_ROT]
-    touching = np.zeros(5, dtype=np.bool_)
-    psi = touching_points(par, y, rot, gap_tol, velocity_tol, ACCELERATION, touching)
-    kinds = np.zeros(MAX_CANDIDATES + 1, dtype=np.int64)
-    indices = np.zeros(MAX_CANDIDATES + 1, dtype=np.int64)
-    angles = np.zeros(MAX_CANDIDATES + 1)
+    touching = sc[SC_TOUCHING]
+    psi = touching_points(par, y, sc, gap_tol, velocity_tol, ACCELERATION, touching)
+    clear_candidates(sc)
+    kinds, indices, angles = sc[SC_KINDS], sc[SC_INDICES], sc[SC_ANGLES]
     count = candidates(par, touching, psi, kinds, indices, angles)
     if par[P_SHAPE] != SHAPE_BOX and touching[0]:
         speed = math.hypot(y[10], y[11]) * par[P_HALF_X]
@@ -743,7 +764,7 @@ def _radial(par, y, sc, touching, scales, angle, slip, yaw, data):
     return x[3] * math.cos(phi) + x[4] * math.sin(phi)
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def impact(par, y, sc, gap_tol, psi_before, mode, data, out_velocity):
     """The impact law at (t, y): the velocity after in ``out_velocity`` (6,).
 
@@ -760,15 +781,13 @@ def impact(par, y, sc, gap_tol, psi_before, mode, data, out_velocity):
     or NONE_ADMISSIBLE. ``sc`` must hold the instant's rotation and inverse
     inertia (:func:`prepare`); the base is set here to the velocity before.
     """
-    rot = sc[SC_ROT]
     base = sc[SC_BASE]
     for i in range(6):
         base[i] = y[7 + i]
-    touching = np.zeros(5, dtype=np.bool_)
-    psi = touching_points(par, y, rot, gap_tol, 0.0, VELOCITY, touching)
-    kinds = np.zeros(MAX_CANDIDATES + 1, dtype=np.int64)
-    indices = np.zeros(MAX_CANDIDATES + 1, dtype=np.int64)
-    angles = np.zeros(MAX_CANDIDATES + 1)
+    touching = sc[SC_TOUCHING]
+    psi = touching_points(par, y, sc, gap_tol, 0.0, VELOCITY, touching)
+    clear_candidates(sc)
+    kinds, indices, angles = sc[SC_KINDS], sc[SC_INDICES], sc[SC_ANGLES]
     count = candidates(par, touching, psi, kinds, indices, angles)
     speed = math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2) + par[P_HALF_X] * math.sqrt(
         y[10] ** 2 + y[11] ** 2 + y[12] ** 2)  # fmt: skip

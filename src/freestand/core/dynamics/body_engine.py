@@ -68,17 +68,24 @@ from freestand.core.contact.body_kernel import (
     P_SHAPE,
     PIVOT_LEAN,
     POINT,
+    SC_AFTER,
+    SC_ANGLES,
     SC_ARMS,
     SC_BASE,
     SC_CENTRE,
     SC_DIR,
+    SC_EXCLUDED,
+    SC_INDICES,
     SC_INV,
+    SC_KINDS,
     SC_LAM,
     SC_NORMAL,
+    SC_POINTS,
     SC_PROBE,
     SC_ROT,
     SC_SVEL,
     SC_TANGENT,
+    SC_TOUCHING,
     SHAPE_BOX,
     STATE_SIZE,
     arm,
@@ -105,9 +112,9 @@ from freestand.core.contact.body_kernel import (
 )
 from freestand.core.contact.body_modes import (
     ACCELERATION,
-    MAX_CANDIDATES,
     NONE_ADMISSIBLE,
     candidates,
+    clear_candidates,
     impact,
     select_mode,
     touching_points,
@@ -381,7 +388,7 @@ def _post_record_fall(par, y, mode, sc):
     return rate_cos < 0.0 and y[9] < 0.0
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which, istate, work):
     """Phase 3: the impact (a gap closed) and the next contact mode; the event kind.
 
@@ -410,7 +417,7 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
     if which == FN_GAP or which == FN_LANDING:
         held_before = mode[M_KIND] != FREE
         prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
-        after = np.empty(6)
+        after = sc[SC_AFTER]
         chosen = impact(par, y, sc, gap_tol, data[D_PSI], mode, data, after)
         arms = work["arms"]
         count = base_points(par, y, rot, data[D_PSI], gap_tol, arms, work)
@@ -431,7 +438,8 @@ def resolve(par, record, dt, t, y, mode, data, sc, gap_tol, velocity_tol, which,
         restitution_velocity(par, sc[SC_INV], arms, count, held_before, after, work)
         for i in range(6):
             y[7 + i] = after[i]
-    excluded = np.array([-1, 0, 0], dtype=np.int64)
+    _no_exclusion(sc)
+    excluded = sc[SC_EXCLUDED]
     if which == FN_NORMAL:
         excluded[0] = mode[M_KIND]
         excluded[1] = mode[M_INDEX]
@@ -570,7 +578,7 @@ def held_row(par, y, sc, reach, velocity_tol, force, patch, row, out_mode, out_f
     ``force`` = (N, |f_t|) [N], the step's impulses over its length;
     ``patch`` (3, int) is work space.
     """
-    touched_patch(par, y, sc[SC_ROT], reach, velocity_tol, patch)
+    touched_patch(par, y, sc, reach, velocity_tol, patch)
     for i in range(3):
         out_mode[row, i] = patch[i]
     out_force[row, 0] = force[0]
@@ -687,7 +695,7 @@ def _next_end(t, breaks, h_max, t_end):
     return end
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, istate, force,
              impulses, work):  # fmt: skip
     """One step of the remedy; it ends where a consistent mode exists again. Returns t + h.
@@ -713,8 +721,9 @@ def _stretch(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol, is
     if not early and steps % STRETCH_CHECK != 0:
         _set_free(mode)
         return t + h
-    none = np.array([-1, 0, 0], dtype=np.int64)
-    found = select_mode(par, record, dt, t + h, y, sc, gap_tol, velocity_tol, mode, data, none)
+    _no_exclusion(sc)
+    found = select_mode(par, record, dt, t + h, y, sc, gap_tol, velocity_tol, mode, data,
+                        sc[SC_EXCLUDED])  # fmt: skip
     if found >= 0 and hovering and mode[M_KIND] == FREE:
         found = -1  # a point the stretch holds is still above the support: not a flight
     if found >= 0 and istate[I_CHATTER] == 1 and mode[M_SLIP] == 1:
@@ -736,8 +745,16 @@ def _horizontal_speed(y, d):
     return math.hypot(point_velocity(y, d, 1.0, 0.0, 0.0), point_velocity(y, d, 0.0, 1.0, 0.0))
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
-def touched_patch(par, y, rot, reach, velocity_tol, patch):
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _no_exclusion(sc):
+    """The scratch's excluded mode (:func:`~freestand.core.contact.body_modes.select_mode`)
+    set to none: (-1, 0, 0)."""
+    excluded = sc[SC_EXCLUDED]
+    excluded[0], excluded[1], excluded[2] = -1, 0, 0
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def touched_patch(par, y, sc, reach, velocity_tol, patch):
     """The patch a time-stepped state touches, as (kind, index, slip) in ``patch``.
 
     The most closed candidate (:func:`freestand.core.contact.body_modes.candidates`)
@@ -748,16 +765,16 @@ def touched_patch(par, y, rot, reach, velocity_tol, patch):
     ``velocity_tol``. The rows a stretch of the remedy records say which
     contact the time stepping held, not FREE. Returns the kind.
     """
-    touching = np.zeros(5, dtype=np.bool_)
-    psi = touching_points(par, y, rot, reach, velocity_tol, ACCELERATION, touching)
-    kinds = np.zeros(MAX_CANDIDATES + 1, dtype=np.int64)
-    indices = np.zeros(MAX_CANDIDATES + 1, dtype=np.int64)
-    angles = np.zeros(MAX_CANDIDATES + 1)
+    rot = sc[SC_ROT]
+    touching = sc[SC_TOUCHING]
+    psi = touching_points(par, y, sc, reach, velocity_tol, ACCELERATION, touching)
+    clear_candidates(sc)
+    kinds, indices, angles = sc[SC_KINDS], sc[SC_INDICES], sc[SC_ANGLES]
     patch[0], patch[1], patch[2] = FREE, 0, 0
     if candidates(par, touching, psi, kinds, indices, angles) == 0:
         return FREE
     patch[0], patch[1] = kinds[0], indices[0]
-    d = np.empty(3)
+    d = sc[SC_POINTS][2]
     speed = 0.0  # the fastest horizontal speed of a touching point [m/s]
     if par[P_SHAPE] == SHAPE_BOX:
         for k in range(4):
@@ -912,7 +929,7 @@ def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mo
     return t
 
 
-@kernel(cache=True, error_model="numpy", _nrt=True)
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _start_remedy(par, t, y, mode, sc, gap_tol, velocity_tol, istate, patch, ev_time, ev_kind,
                   ev_before, ev_after):  # fmt: skip
     """The remedy where the held mode cannot go on from its step's start (t, y): an event at t.
@@ -932,7 +949,7 @@ def _start_remedy(par, t, y, mode, sc, gap_tol, velocity_tol, istate, patch, ev_
     istate[I_STRETCH] = 1
     _set_free(mode)
     rotation_matrix(y, sc[SC_ROT])
-    after = touched_patch(par, y, sc[SC_ROT], gap_tol, velocity_tol, patch)
+    after = touched_patch(par, y, sc, gap_tol, velocity_tol, patch)
     istate[I_EVENTS] = _event(t, EV_REMEDY, before, after, istate[I_EVENTS], ev_time, ev_kind,
                               ev_before, ev_after)  # fmt: skip
 
@@ -1064,7 +1081,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             event = watch_chatter(t, before, event, mode, istate, chatter)
             after = mode[M_KIND]
             if event == EV_REMEDY and after == FREE:
-                after = touched_patch(par, y, sc[SC_ROT], gap_tol, velocity_tol, patch)
+                after = touched_patch(par, y, sc, gap_tol, velocity_tol, patch)
             istate[I_EVENTS] = _event(t, event, before, after, istate[I_EVENTS], ev_time, ev_kind,
                                       ev_before, ev_after)  # fmt: skip
             if event == EV_OVERTURN:
