@@ -99,9 +99,9 @@ def test_the_remedy_records_the_edge_it_holds_and_its_force(default_run):
     # never free flight (its mode is FREE while it steps), carrying the weight on average
     # (m g = 3.9 kN; the vertical record and the rocking move it: 2.7-5.0 kN). One step of the
     # stretch now: its first check finds a consistent mode (the sliding edge's centre of
-    # pressure settled by a secant, body_kernel._slide_edge); 17 steps while the centre was a
+    # pressure settled by a secant, body_solve._slide_edge); 17 steps while the centre was a
     # fixed point's iterate, 97 while the slip's direction jumped to the stored one at a slip
-    # stop (body_kernel.slip_direction)
+    # stop (body_solve.slip_direction)
     assert istate[engine.I_STRETCH_STEPS] >= 1
     assert not np.any(modes[:, 0] == body_kernel.FREE)
     assert np.count_nonzero(modes[:, 0] != body_kernel.EDGE) <= 3  # a corner as it lands

@@ -22,6 +22,7 @@ from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box
 from freestand.core.contact import body_kernel as bk
+from freestand.core.contact import body_solve
 from freestand.core.dynamics import body_events as events
 from freestand.core.dynamics import body_step as step
 from freestand.core.dynamics.body_history import SupportMotion3, initial_state, simulate_body
@@ -88,11 +89,11 @@ def test_a_free_fall_s_landing_is_found_on_the_interpolant(tilt, speed, fraction
     h = landing / fraction  # the step ends at or past the landing
     count = step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
     start = values[:count].copy()
-    bk.state_rate(y, sc[bk.SC_ACC], k[0])
+    body_solve.state_rate(y, sc[bk.SC_ACC], k[0])
     end = np.zeros(bk.STATE_SIZE)
     step._rk4(par, record, 1.0, 0.0, h, y, mode, data, sc, k, end)
     step.event_functions(par, record, 1.0, h, end, mode, data, sc, ref, values, kinds)
-    bk.state_rate(end, sc[bk.SC_ACC], k[1])
+    body_solve.state_rate(end, sc[bk.SC_ACC], k[1])
     target = int(np.argmin(values[:count]))  # a lowest corner
     assert kinds[target] == step.FN_GAP
     trial = np.zeros(bk.STATE_SIZE)
@@ -180,7 +181,7 @@ def test_a_spinning_fall_s_landing_is_the_crossing_on_rk4_states(
     kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
     count = step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
     start = values.copy()
-    bk.state_rate(y, sc[bk.SC_ACC], k[0])
+    body_solve.state_rate(y, sc[bk.SC_ACC], k[0])
     # the first crossing: scanned, then bisected on RK4 states
     taus = np.linspace(0.0, 0.3, 2001)
     first = next(i for i, tau in enumerate(taus) if gap(tau) < 0.0)

@@ -23,7 +23,9 @@ from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact import body_kernel as bk
+from freestand.core.contact import body_solve
 from freestand.core.contact import face_friction as ff
+from freestand.core.contact.slip_law import SLIP_FLOOR
 from freestand.core.dynamics.body_history import initial_state
 from freestand.core.model import Friction
 
@@ -104,7 +106,7 @@ def _stick_at_rest(body, acceleration, direction):
     record[1, :] = acceleration * math.sin(direction)
     sc = bk.new_scratch()
     mode = np.array([bk.FACE, 0, 0], dtype=np.int64)
-    ok, n_normal, n_tangent = bk.solve_at(par, record, 1.0, 0.0, initial_state(body), mode,
+    ok, n_normal, n_tangent = body_solve.solve_at(par, record, 1.0, 0.0, initial_state(body), mode,
                                           np.zeros(bk.DATA_SIZE), sc)  # fmt: skip
     assert ok
     margin = bk.friction_margin(par, n_normal, n_tangent, sc[bk.SC_LAM])
@@ -157,7 +159,7 @@ def test_a_body_sliding_flat_gets_no_twist_from_its_friction(gx, gy, slide, push
     mode = np.array([bk.FACE, 0, 1], dtype=np.int64)
     data = np.zeros(bk.DATA_SIZE)
     data[1], data[2] = math.cos(slide), math.sin(slide)
-    ok, _, _ = bk.solve_at(par, record, 1.0, 0.0, y, mode, data, sc)
+    ok, _, _ = body_solve.solve_at(par, record, 1.0, 0.0, y, mode, data, sc)
     assert ok
     acc, lam, centre = sc[bk.SC_ACC], sc[bk.SC_LAM], sc[bk.SC_CENTRE]
     assert abs(acc[5]) < 1e-9  # no twist acceleration [rad/s^2]
@@ -206,7 +208,7 @@ def test_a_slow_twisting_slide_s_friction_acts_at_its_own_centre_of_pressure(
 ):
     """The same below the step's slip floor, where u is pulled towards the stored direction.
 
-    A slip slower than the floor (``body_kernel.unit_slip``; the engine's
+    A slip slower than the floor (``body_solve.unit_slip``; the engine's
     ``slip_floor``) turns to the stored direction, so u(c) is no longer the
     slip's own direction: the friction centre is found on the same model by
     Newton's method (``face_friction.model_centre``). Speeds of 1e-5 to
@@ -231,7 +233,7 @@ def _check_twisting_slide(cylinder, gx, gy, yaw, speed, slide, spin, push, size,
     data = np.zeros(bk.DATA_SIZE)
     data[bk.D_SLIP], data[bk.D_SLIP + 1] = math.cos(slide), math.sin(slide)
     data[bk.D_FLOOR] = floor
-    ok, n_normal, n_tangent = bk.solve_at(par, record, 1.0, 0.0, y, mode, data, sc)
+    ok, n_normal, n_tangent = body_solve.solve_at(par, record, 1.0, 0.0, y, mode, data, sc)
     assert ok
     acc, lam, centre = sc[bk.SC_ACC], sc[bk.SC_LAM], sc[bk.SC_CENTRE]
     # a flat base only where it is one: N > 0 and the centre of pressure inside the base
@@ -253,7 +255,7 @@ def _check_twisting_slide(cylinder, gx, gy, yaw, speed, slide, spin, push, size,
     assert np.linalg.norm(friction) == pytest.approx(0.3 * lam[0], rel=1e-9)
     direction = slip / np.linalg.norm(slip)
     if floor > 0.0:
-        bk.unit_slip(slip.copy(), n_tangent, data, direction)
+        body_solve.unit_slip(slip.copy(), n_tangent, data, direction)
     assert friction / np.linalg.norm(friction) == pytest.approx(-direction, abs=1e-9)
 
 
@@ -278,7 +280,7 @@ def test_a_patch_s_kind_is_the_one_its_rows_were_built_for():
 def test_a_sliding_edge_s_share_map_is_its_full_solve_s(tilt, yaw, velocity, push, share, stored):
     # edge 2 (corners 2 and 3, along x at y = -b_y) tilted down: F(sigma), the centre of
     # pressure's share with the friction at sigma, from the 2 x 2 system of
-    # body_kernel.edge_share against the full solve on rows built at sigma (tolerance:
+    # body_solve.edge_share against the full solve on rows built at sigma (tolerance:
     # round-off of two eliminations, 1e-9 of the share)
     par = bk.body_parameters(BOX, G)
     y = initial_state(BOX, (tilt, 0.0))
@@ -290,9 +292,9 @@ def test_a_sliding_edge_s_share_map_is_its_full_solve_s(tilt, yaw, velocity, pus
     data[bk.D_SLIP : bk.D_SLIP + 3] = math.cos(stored), math.sin(stored), 0.0
     sc = bk.new_scratch()
     n_normal, n_tangent = bk.prepare(par, record, 1.0, 0.0, y, bk.EDGE, 2, 0.0, sc)
-    bk.edge_slide_terms(par, y, sc, True)
+    body_solve.edge_slide_terms(par, y, sc, True)
     direction = np.zeros(3)
-    quick = bk.edge_share(par, sc, 2, share, direction, True, data)
+    quick = body_solve.edge_share(par, sc, 2, share, direction, True, data)
     ax, ay = bk.box_corner(par, 2)
     bx, by = bk.box_corner(par, 3)
     centre = sc[bk.SC_CENTRE]
@@ -300,7 +302,7 @@ def test_a_sliding_edge_s_share_map_is_its_full_solve_s(tilt, yaw, velocity, pus
     centre[2] = bk.effective_twist_radius(par, bk.EDGE, 2, centre[0], centre[1])
     bk.tangent_rows(par, y, sc)
     u = np.zeros(3)
-    bk.slip_direction(y, n_tangent, data, sc[bk.SC_TANGENT], np.zeros(3), u)
+    body_solve.slip_direction(y, n_tangent, data, sc[bk.SC_TANGENT], np.zeros(3), u)
     assert bk.solve_mode(par, sc, sc[bk.SC_BASE], True, 1, u, n_normal, n_tangent,
                          np.zeros(6), lam := np.zeros(6))  # fmt: skip
     total = lam[0] + lam[1]
@@ -320,7 +322,7 @@ def test_a_sliding_edge_settles_at_its_centre_of_pressure():
     mode = np.array([bk.EDGE, 2, 1], dtype=np.int64)
     data = np.zeros(bk.DATA_SIZE)
     data[bk.D_SLIP] = 1.0
-    ok, _, _ = bk.solve_at(par, np.zeros((3, 2)), 1.0, 0.0, y, mode, data, sc)
+    ok, _, _ = body_solve.solve_at(par, np.zeros((3, 2)), 1.0, 0.0, y, mode, data, sc)
     assert ok
     lam, centre = sc[bk.SC_LAM], sc[bk.SC_CENTRE]
     share = lam[1] / (lam[0] + lam[1])
@@ -335,7 +337,7 @@ def _first_slide_solve(cylinder, gx, gy, yaw, speed, slide, spin, floor):
     """A twisting slide's first solve, its centre moved to its centre of pressure.
 
     Returns (body, par, y, data, sc, model, rows) with ``model`` the kernel's
-    model of the centre of pressure from that solve (``body_kernel.face_model``).
+    model of the centre of pressure from that solve (``body_solve.face_model``).
     """
     shape = Cylinder(0.5, 2.0) if cylinder else Box((1.0, 0.6, 2.0))
     body = Body("flat", shape, 400.0, Friction(0.3, 0.3), centre=(gx, gy, 0.8))
@@ -351,13 +353,13 @@ def _first_slide_solve(cylinder, gx, gy, yaw, speed, slide, spin, floor):
     u = _solve_on_rows(par, y, sc, data, rows)
     cx, cy = bk.face_centre_of_pressure(sc[bk.SC_ROT], sc[bk.SC_LAM])
     _place_centre(par, y, sc, data, rows, cx, cy)
-    return body, par, y, data, sc, bk.face_model(par, sc, u[0], u[1]), rows
+    return body, par, y, data, sc, body_solve.face_model(par, sc, u[0], u[1]), rows
 
 
 def _solve_on_rows(par, y, sc, data, rows):
     """The kinetic slide's solve on the scratch's rows, u the slip's (unit_slip); returns u."""
     u = np.zeros(3)
-    bk.slip_direction(y, rows[1], data, sc[bk.SC_TANGENT], sc[bk.SC_SVEL], u)
+    body_solve.slip_direction(y, rows[1], data, sc[bk.SC_TANGENT], sc[bk.SC_SVEL], u)
     assert bk.solve_mode(par, sc, sc[bk.SC_BASE], True, 1, u, rows[0], rows[1], sc[bk.SC_ACC],
                          sc[bk.SC_LAM])  # fmt: skip
     return u
@@ -369,7 +371,7 @@ def _place_centre(par, y, sc, data, rows, cx, cy):
     centre[0], centre[1] = cx, cy
     centre[2] = bk.effective_twist_radius(par, bk.FACE, 0, cx, cy)
     bk.tangent_rows(par, y, sc)
-    bk.slip_direction(y, rows[1], data, sc[bk.SC_TANGENT], sc[bk.SC_SVEL], np.zeros(3))
+    body_solve.slip_direction(y, rows[1], data, sc[bk.SC_TANGENT], sc[bk.SC_SVEL], np.zeros(3))
 
 
 @settings(max_examples=40, deadline=None)
@@ -392,7 +394,7 @@ def test_the_search_on_the_slip_s_pull_finds_the_slow_slide_s_centre(
     _, par, y, data, sc, model, rows = _first_slide_solve(cylinder, gx, gy, yaw, speed, slide,
                                                           spin, floor)  # fmt: skip
     base = (not cylinder, 0.5, 0.5 if cylinder else 0.3, par[bk.P_RHO_FACE], 0.5 * bk.RHO_FLOOR)
-    floor_ = max(bk.SLIP_FLOOR, floor)
+    floor_ = max(SLIP_FLOOR, floor)
     args = (model, base, sc[bk.SC_ROT], y[12], data, bk.D_SLIP, floor_, np.zeros(3), np.zeros(3))
     cx, cy, settled = ff.pulled_centre(args)
     assert settled

@@ -1,6 +1,6 @@
 """The sliding direction of the 3-D kernel is continuous in the slip velocity (#18).
 
-``body_kernel.slip_direction`` gives the kinetic friction's direction u from
+``body_solve.slip_direction`` gives the kinetic friction's direction u from
 the slip velocity s and the stored direction r (the slip's at the step's
 start): s / |s| while s points on r's side and is faster than ``SLIP_FLOOR``;
 past r's side its component along r reflected; below the floor pulled to r.
@@ -18,9 +18,10 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from freestand.core.contact import body_kernel
+from freestand.core.contact import body_kernel, body_solve
+from freestand.core.contact.slip_law import SLIP_FLOOR
 
-FLOOR = body_kernel.SLIP_FLOOR
+FLOOR = SLIP_FLOOR
 
 # the tangential rows of these tests read the slip velocity s from the state's v
 ROWS = np.zeros((6, 3))
@@ -35,7 +36,7 @@ def direction(slip, stored) -> tuple[np.ndarray, bool]:
     data = np.zeros(body_kernel.DATA_SIZE)
     data[body_kernel.D_SLIP : body_kernel.D_SLIP + 3] = stored
     u = np.zeros(3)
-    own = body_kernel.slip_direction(y, 3, data, ROWS, np.zeros(3), u)
+    own = body_solve.slip_direction(y, 3, data, ROWS, np.zeros(3), u)
     return u, bool(own)
 
 

@@ -81,10 +81,9 @@ from freestand.core.contact.body_kernel import (
     rim_contact,
     scratch_rows,
     sin_tilt,
-    solve_patch,
     tangential_velocity,
-    unit_slip,
 )
+from freestand.core.contact.body_solve import solve_patch, unit_slip
 from freestand.core.contact.compiled import kernel
 from freestand.core.contact.regula_falsi import narrowed, retained_scale
 from freestand.core.contact.slip_law import SLIP_FLOOR
@@ -454,7 +453,7 @@ def _restore_own_slip(sc, n_tangent, stored):
     """Whether a kinetic solve's friction was pulled off its own slip at its centre; if so,
     the slip's direction there becomes the stored one (``stored[D_SLIP:]``), to solve again.
 
-    The slip law (``body_kernel.unit_slip``) gives u along the slip velocity s
+    The slip law (``body_solve.unit_slip``) gives u along the slip velocity s
     at the centre found (``sc[SC_SVEL]``, as the solve left it) while s points
     on the stored direction r's side, and else pulls it towards r. The selection's r is the slip
     at the rows' first centre (an edge's middle, the base's centre), but the

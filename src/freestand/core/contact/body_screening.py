@@ -62,9 +62,9 @@ from freestand.core.contact.body_kernel import (
     body_parameters,
     new_scratch,
     normal_total,
-    solve_at,
 )
 from freestand.core.contact.body_modes import select_mode
+from freestand.core.contact.body_solve import solve_at
 from freestand.core.contact.screening import GRAVITY, Motion, vertical_label
 from freestand.core.dynamics.body_history import initial_state
 from freestand.core.dynamics.results import ContactTolerances

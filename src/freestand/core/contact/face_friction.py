@@ -96,7 +96,7 @@ def twisting_centre(ax, ay, wx, wy, twist, omega, lever, box, half_x, half_y, rh
     shape (:func:`face_twist_radius`); all in one frame turned about the
     vertical (the body's). u is the direction of ``(w(c), omega rho(c) +
     twist)`` (``twist`` [m/s]: 0 for the slip's own direction; a constant
-    added to the slip, as ``body_kernel.unit_slip`` adds its pull towards the
+    added to the slip, as ``body_solve.unit_slip`` adds its pull towards the
     stored direction, enters as a shifted w(a) and this). With c - a = k
     w(c) (k > 0) and w(c) = w(a) + omega e_z x (c - a), ``w(c) = cos(phi)
     R(phi) w(a)`` for ``tan(phi) = omega k``: c runs on the circle through a

@@ -3,7 +3,7 @@
 The 3-D kernel's kinetic friction acts against u, the slip velocity's own
 direction while the slip is fast enough and on the stored direction's side;
 a slip that has turned against the stored direction r, or is slower than a
-floor, is pulled towards r (``body_kernel.slip_direction`` gives the why).
+floor, is pulled towards r (``body_solve.slip_direction`` gives the why).
 u is the direction of ``s + beta(s) r`` with one pull law,
 :func:`slip_pull`, for every patch (a point's, an edge's and a face's
 slip, and a sliding face's model of its friction centre,

@@ -6,7 +6,7 @@ of its own where it is more than a few lines:
 
 - ``advance`` (:mod:`freestand.core.dynamics.body_step`): one RK4 step of
   the held contact mode (the contact forces solved at every stage by
-  :func:`freestand.core.contact.body_kernel.rate`), its references and
+  :func:`freestand.core.contact.body_solve.rate`), its references and
   event functions, or nothing while the body rests flat and sticks (its
   contact multipliers are then affine in the support's accelerations, and a
   step is decided by its ends: :func:`rest_step`);
@@ -100,12 +100,9 @@ from freestand.core.contact.body_kernel import (
     pivot_direction,
     point_velocity,
     prepare,
-    prepare_held,
     reset_friction_centre,
     rotation_matrix,
     row_counts,
-    solve_at,
-    solve_at_centre,
     solve_mode,
     support_acceleration,
     tangential_velocity,
@@ -119,6 +116,7 @@ from freestand.core.contact.body_modes import (
     select_mode,
     touching_points,
 )
+from freestand.core.contact.body_solve import prepare_held, solve_at, solve_at_centre
 from freestand.core.contact.compiled import kernel
 from freestand.core.dynamics.body_events import (
     EVENT_TIME,
@@ -763,7 +761,8 @@ def touched_patch(par, y, sc, reach, velocity_tol, patch):
     (:func:`~freestand.core.contact.body_modes.touching_points`); FREE where
     none does. It slips where a touching point's horizontal speed exceeds
     ``velocity_tol``. The rows a stretch of the remedy records say which
-    contact the time stepping held, not FREE. Returns the kind.
+    contact the time stepping held, not FREE. At the rotation ``sc[SC_ROT]``;
+    the candidates in the scratch's work fields. Returns the kind.
     """
     rot = sc[SC_ROT]
     touching = sc[SC_TOUCHING]

@@ -22,9 +22,9 @@ from freestand.core.contact.body_kernel import (
     STATE_SIZE,
     rotation_matrix,
     row_counts,
-    state_rate,
 )
 from freestand.core.contact.body_modes import RELATIVE_TOLERANCE
+from freestand.core.contact.body_solve import state_rate
 from freestand.core.contact.compiled import kernel
 from freestand.core.contact.regula_falsi import narrowed
 from freestand.core.dynamics.body_step import (
@@ -256,7 +256,7 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
     where the seeds do not close the bracket, the regula falsi goes on from
     it. A slip-stop is not seeded: the friction's direction has kinks
     within such a step (where the slip crosses its floor and turns against
-    the stored direction, :func:`~freestand.core.contact.body_kernel.slip_direction`),
+    the stored direction, :func:`~freestand.core.contact.body_solve.slip_direction`),
     and the cubic through the step's ends missed the cask's stops by up to
     3e-5 s.
     ``bracket`` (3, ``MAX_EVENT_FUNCTIONS``) is work space: the functions'

@@ -1,7 +1,7 @@
 """The 3-D engine's ``advance`` phase: one RK4 step of the held contact mode.
 
 :func:`advance` takes one RK4 step of the held mode (the contact forces
-solved at every stage by :func:`freestand.core.contact.body_kernel.rate`);
+solved at every stage by :func:`freestand.core.contact.body_solve.rate`);
 :func:`start_functions` and :func:`event_functions` give a step's references
 (the slip's direction, the pivot's) and its event functions, each >= 0
 while the mode holds (:func:`event_values`); :func:`closing_step`,
@@ -41,7 +41,6 @@ from freestand.core.contact.body_kernel import (
     SC_TANGENT,
     SC_TBIAS,
     SHAPE_BOX,
-    SLIP_FLOOR,
     STATE_SIZE,
     arm,
     corner_gap,
@@ -51,18 +50,17 @@ from freestand.core.contact.body_kernel import (
     lowest_rim_angle,
     normal_margin,
     pivot_direction,
-    rate,
     rotation_matrix,
     row_acceleration,
     row_counts,
     sin_tilt,
-    solve_at,
-    state_rate,
     stored_direction,
     support_acceleration,
     tangential_velocity,
 )
+from freestand.core.contact.body_solve import rate, solve_at, state_rate
 from freestand.core.contact.compiled import kernel
+from freestand.core.contact.slip_law import SLIP_FLOOR
 from freestand.core.contact.vectors import leading_length
 
 MAX_EVENT_FUNCTIONS = 8
@@ -163,7 +161,7 @@ def references(par, record, dt, t, y, mode, data, sc, ref, stop_speed, solved=Fa
     normal and tangential rows of the slip's solve where the scratch holds
     the held mode solved at (t, y) as with the references stored: its solve
     read no stored direction
-    (:func:`~freestand.core.contact.body_kernel.slip_direction`), or the
+    (:func:`~freestand.core.contact.body_solve.slip_direction`), or the
     stored one is kept; else (0, -1).
     ``ref[REF_STOP]`` is ``stop_speed`` [m/s] (the velocity tolerance, within
     which a slip counts as zero) where a flat base's slip starts the step
@@ -519,7 +517,7 @@ def slip_floor(par, mode, sc, h):
     (:func:`_slip_turn_time`) down to ``FACE_MIN_STEP``; below that, and on a
     slip's first step from rest, the slip slower than this floor (the speed
     at which ``h lambda = FLOOR_STABILITY``) is pulled to the step's starting
-    direction (:func:`~freestand.core.contact.body_kernel.unit_slip`), which
+    direction (:func:`~freestand.core.contact.body_solve.unit_slip`), which
     RK4 integrates stably, and the next step keeps that direction as its
     reference while the slip stays below the floor (:func:`references`: the
     step-by-step update to ``s/|s|`` is an explicit step on the same rate).
@@ -587,7 +585,7 @@ def slip_velocity(par, record, dt, t, y, mode, data, sc):
     """The held patch's slip velocity at (t, y), at its centre of pressure, in ``sc[SC_SVEL]``.
 
     The mode is solved there
-    (:func:`~freestand.core.contact.body_kernel.solve_at`, its rows left in
+    (:func:`~freestand.core.contact.body_solve.solve_at`, its rows left in
     the scratch). Returns (its speed [m/s], the patch's normal rows, its
     tangential rows).
     """
