@@ -13,7 +13,7 @@ its slip from rest has no lasting direction: the onset direction is unstable
 none exists. Before the remedy took over such a chatter, the engine restarted
 the slip from rest every 30 to 100 microseconds: 150 restarts in the 0.1 s
 from the stored instant, 158 events. Now three restarts within a millisecond
-(``body_engine.CHATTER_WINDOW``, ``CHATTER_COUNT``) hand the edge to the
+(``body_remedy.CHATTER_WINDOW``, ``CHATTER_COUNT``) hand the edge to the
 velocity-level time stepping until the patch sticks, slips at a speed, or
 another contact holds.
 """
@@ -29,6 +29,7 @@ import pytest
 from freestand.core.body import Body, Box
 from freestand.core.contact import body_kernel
 from freestand.core.dynamics import body_engine as engine
+from freestand.core.dynamics import body_remedy, body_state
 from freestand.core.dynamics.body_history import rotation_matrices
 from freestand.core.model import Friction
 
@@ -48,15 +49,15 @@ def run_from_instant(max_step: float):
     breaks = np.arange(1, record.shape[1]) * dt
     par = body_kernel.body_parameters(CABINET, 9.81, 1.0)
     y = np.array(data["y"])
-    mode, istate = np.zeros(3, dtype=np.int64), np.zeros(engine.I_SIZE, dtype=np.int64)
+    mode, istate = np.zeros(3, dtype=np.int64), np.zeros(body_state.I_SIZE, dtype=np.int64)
     out = (np.empty(ROWS), np.empty((ROWS, body_kernel.STATE_SIZE)),
            np.empty((ROWS, 3), dtype=np.int64), np.empty((ROWS, 2)))  # fmt: skip
     events = (np.empty(ROWS),) + tuple(np.empty(ROWS, dtype=np.int64) for _ in range(3))
     engine.run(par, record, dt, breaks, max_step, t + SPAN, record.shape[1] * dt, GAP, VELOCITY,
                t, y, mode, np.zeros(body_kernel.DATA_SIZE), np.zeros(1, body_kernel.SCRATCH_DTYPE), istate, *out,
                *events)  # fmt: skip
-    count = min(int(istate[engine.I_EVENTS]), ROWS)
-    rows = int(istate[engine.I_RECORDS])
+    count = min(int(istate[body_state.I_EVENTS]), ROWS)
+    rows = int(istate[body_state.I_RECORDS])
     return istate, events[1][:count], out[0][:rows], out[1][:rows], out[2][:rows], out[3][:rows]
 
 
@@ -74,11 +75,11 @@ def test_the_stored_instant_rocks_on_the_long_edge():
 
 def test_the_chatter_is_handed_to_the_remedy(default_run):
     istate, kinds = default_run[:2]
-    assert istate[engine.I_STATUS] == engine.STATUS_COMPLETED
+    assert istate[body_state.I_STATUS] == body_state.STATUS_COMPLETED
     # before: 150 slip restarts ('stick' events) in 0.1 s, 158 events; now 4, 10 events
-    restarts = int(np.count_nonzero(kinds == engine.EV_STICK))
+    restarts = int(np.count_nonzero(kinds == body_state.EV_STICK))
     assert restarts < 30
-    assert istate[engine.I_REMEDIES] >= 1 and istate[engine.I_STRETCH_STEPS] > 0
+    assert istate[body_state.I_REMEDIES] >= 1 and istate[body_state.I_STRETCH_STEPS] > 0
     assert len(kinds) < 100
 
 
@@ -102,7 +103,7 @@ def test_the_remedy_records_the_edge_it_holds_and_its_force(default_run):
     # pressure settled by a secant, body_solve._slide_edge); 17 steps while the centre was a
     # fixed point's iterate, 97 while the slip's direction jumped to the stored one at a slip
     # stop (body_solve.slip_direction)
-    assert istate[engine.I_STRETCH_STEPS] >= 1
+    assert istate[body_state.I_STRETCH_STEPS] >= 1
     assert not np.any(modes[:, 0] == body_kernel.FREE)
     assert np.count_nonzero(modes[:, 0] != body_kernel.EDGE) <= 3  # a corner as it lands
     held = modes[:, 0] == body_kernel.EDGE
@@ -122,12 +123,12 @@ def test_the_tilt_after_the_chatter_does_not_depend_on_the_step():
 
 def _restarts(kind: int, times) -> list[int]:
     """The event kinds watch_chatter makes of slip restarts of a ``kind`` patch at ``times``."""
-    istate = np.zeros(engine.I_SIZE, dtype=np.int64)
+    istate = np.zeros(body_state.I_SIZE, dtype=np.int64)
     chatter = np.array([-math.inf, 0.0])
     kinds = []
     for t in times:
         mode = np.array([kind, 0, 1], dtype=np.int64)  # slipping again after the slip-stop
-        kinds.append(engine.watch_chatter(t, kind, engine.EV_STICK, mode, istate, chatter))
+        kinds.append(body_remedy.watch_chatter(t, kind, body_state.EV_STICK, mode, istate, chatter))
     return kinds
 
 
@@ -145,6 +146,6 @@ def _restarts(kind: int, times) -> list[int]:
     ],
 )
 def test_slip_restarts_in_quick_succession_hand_the_patch_to_the_remedy(kind, spacing, chatters):
-    kinds = _restarts(kind, 1.0 + spacing * np.arange(engine.CHATTER_COUNT))
-    assert kinds[:-1] == [engine.EV_STICK] * (engine.CHATTER_COUNT - 1)
-    assert kinds[-1] == (engine.EV_REMEDY if chatters else engine.EV_STICK)
+    kinds = _restarts(kind, 1.0 + spacing * np.arange(body_remedy.CHATTER_COUNT))
+    assert kinds[:-1] == [body_state.EV_STICK] * (body_remedy.CHATTER_COUNT - 1)
+    assert kinds[-1] == (body_state.EV_REMEDY if chatters else body_state.EV_STICK)

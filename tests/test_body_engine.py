@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact import body_kernel as bk
-from freestand.core.dynamics import body_engine
+from freestand.core.dynamics import body_projection
 from freestand.core.dynamics.body_history import (
     SupportMotion3,
     body_motion,
@@ -276,17 +276,17 @@ def test_an_edge_tilted_along_itself_is_levelled_on_both_corners():
     body = Body("box", Box((0.6, 0.1, 0.2)), 20.0, Friction(1.0, 0.8), centre=(0.01, 0.02, 0.15))
     par = bk.body_parameters(body, 9.81)
     y = initial_state(body).astype(float)
-    body_engine._turn(y, -0.3, 0.0, 0.0)  # the -y side lifts: corners 0 and 1 (+y) stay down
+    body_projection.turn(y, -0.3, 0.0, 0.0)  # the -y side lifts: corners 0 and 1 (+y) stay down
     rot, d = np.zeros((3, 3)), np.zeros(3)
     bk.rotation_matrix(y, rot)
     gaps = [bk.corner_gap(par, y, rot, k, d)[0] for k in range(4)]
     assert gaps[0] == pytest.approx(gaps[1], abs=1e-12) and min(gaps[2:]) > gaps[0] + 0.01
     y[2] -= gaps[0]
-    body_engine._turn(y, 0.0, 2e-6, 0.0)
+    body_projection.turn(y, 0.0, 2e-6, 0.0)
     bk.rotation_matrix(y, rot)
     before = [bk.corner_gap(par, y, rot, k, d)[0] for k in (0, 1)]
     assert abs(before[0] - before[1]) > 1e-6
-    body_engine._level_edge(par, y, rot, 0, np.zeros((3, 6)))
+    body_projection._level_edge(par, y, rot, 0, np.zeros((3, 6)))
     bk.rotation_matrix(y, rot)
     after = [bk.corner_gap(par, y, rot, k, d)[0] for k in (0, 1)]
     assert max(abs(gap) for gap in after) < 1e-11

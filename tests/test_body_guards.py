@@ -34,7 +34,7 @@ import pytest
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact import body_kernel
 from freestand.core.contact.body_modes import _restore_own_slip, select_mode
-from freestand.core.dynamics import body_engine as engine
+from freestand.core.dynamics import body_remedy
 from freestand.core.dynamics.body_events import inconsistent_start
 from freestand.core.dynamics.body_history import SupportMotion3, simulate_body
 from freestand.core.dynamics.body_step import (
@@ -91,7 +91,7 @@ def test_accumulating_impacts_hand_over_to_the_remedy(name, before):
     assert result.status == "completed", result.message
     # the events the engine made before the guard over the same span, in the docstring
     assert result.diagnostics["events"] < 100 < before
-    assert result.diagnostics["stretch_steps"] >= engine.STRETCH_CHECK
+    assert result.diagnostics["stretch_steps"] >= body_remedy.STRETCH_CHECK
 
 
 def test_a_kinetic_slide_is_chosen_only_where_its_own_step_holds_it():

@@ -249,7 +249,7 @@ def test_plot_and_animate_through_the_command(tmp_path):
 
 def test_a_base_point_through_the_support_ends_the_history_as_failed(model):
     """The front end's guard: the histories, events and peaks stop where the contact was lost."""
-    from freestand.core.dynamics import body_engine as engine
+    from freestand.core.dynamics import body_state
     from freestand.core.dynamics.body_history import _result, initial_state
 
     body = model.body_configuration("cabinet").body
@@ -259,8 +259,8 @@ def test_a_base_point_through_the_support_ends_the_history_as_failed(model):
     modes = np.zeros((5, 3), dtype=np.int64)
     modes[:, 0] = 3
     events = (np.array([0.0, 0.35]), np.array([0, 1]), np.array([-1, 3]), np.array([3, 3]))
-    istate = np.zeros(engine.I_SIZE, dtype=np.int64)
-    istate[engine.I_EVENTS] = 2
+    istate = np.zeros(body_state.I_SIZE, dtype=np.int64)
+    istate[body_state.I_EVENTS] = 2
     history = _result(body, None, istate, np.arange(5) * 0.1, state, modes, np.zeros((5, 2)),
                       events)  # fmt: skip
     assert history.status == "failed" and not history.overturned

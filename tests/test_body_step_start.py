@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact import body_kernel as bk
-from freestand.core.dynamics import body_engine as engine
+from freestand.core.dynamics import body_projection
 from freestand.core.dynamics import body_step as step
 from freestand.core.dynamics.body_history import initial_state
 from freestand.core.dynamics.results import ContactTolerances
@@ -159,16 +159,18 @@ def test_a_sliding_flat_base_is_projected_only_past_round_off(body):
     data[bk.D_SLIP] = 1.0
     par, sc = _solve_end(body, flat, sliding, data, np.zeros((3, 2)))  # as at a step's end
     gates = (TOL.gap, TOL.velocity)
-    assert not engine.drifted(par, flat, sliding, sc, *gates)
-    assert engine.drifted(par, _sliding(body, 0.3, 0.4, 0.1, tilt=1e-9), sliding, sc, *gates)
+    assert not body_projection.drifted(par, flat, sliding, sc, *gates)
+    assert body_projection.drifted(
+        par, _sliding(body, 0.3, 0.4, 0.1, tilt=1e-9), sliding, sc, *gates
+    )
     rising = flat.copy()
     rising[9] = 1e-9  # [m/s]
-    assert engine.drifted(par, rising, sliding, sc, *gates)
+    assert body_projection.drifted(par, rising, sliding, sc, *gates)
     sunk = flat.copy()
     sunk[2] -= 1e-9  # [m]
-    assert engine.drifted(par, sunk, sliding, sc, *gates)
+    assert body_projection.drifted(par, sunk, sliding, sc, *gates)
     # a sticking flat base that moves is always projected
-    assert engine.drifted(par, flat, np.array([bk.FACE, 0, 0], dtype=np.int64), sc, *gates)
+    assert body_projection.drifted(par, flat, np.array([bk.FACE, 0, 0], dtype=np.int64), sc, *gates)
 
 
 def _pivoting(body, tilt, omega, edge):
@@ -217,22 +219,25 @@ def test_a_rocking_or_rolling_body_is_projected_only_past_its_drift_gate(edge):
     record = np.zeros((3, 2))
     par, sc = _solve_end(body, y, mode, data, record)
     gates = (TOL.gap, TOL.velocity)
-    assert not engine.drifted(par, y, mode, sc, *gates)
+    assert not body_projection.drifted(par, y, mode, sc, *gates)
     # a gap or a held row's velocity past a thousandth of its tolerance is projected
     for index, size in ((2, TOL.gap), (9, TOL.velocity), (7, TOL.velocity), (8, TOL.velocity)):
         for fraction, projected in ((0.5e-3, False), (2e-3, True)):
             moved = y.copy()
             moved[index] += fraction * size
-            assert engine.drifted(par, moved, mode, sc, *gates) is projected, (index, fraction)
+            assert body_projection.drifted(par, moved, mode, sc, *gates) is projected, (
+                index,
+                fraction,
+            )
     # sliding, the tangential rows are not held: their velocity is the slip
     sliding = mode.copy()
     sliding[bk.M_SLIP] = 1
     moved = y.copy()
     moved[7] += 0.1
-    assert not engine.drifted(par, moved, sliding, sc, *gates)
+    assert not body_projection.drifted(par, moved, sliding, sc, *gates)
     # a FREE body holds no row
     free = np.array([bk.FREE, 0, 0], dtype=np.int64)
-    assert not engine.drifted(par, moved, free, sc, *gates)
+    assert not body_projection.drifted(par, moved, free, sc, *gates)
 
 
 @settings(max_examples=60, deadline=None)

@@ -27,6 +27,7 @@ from freestand.core.contact.body_kernel import (
 )
 from freestand.core.contact.vectors import norm2
 from freestand.core.dynamics import body_engine as engine
+from freestand.core.dynamics import body_state
 from freestand.core.dynamics.results import ContactTolerances, peak_between_samples
 from freestand.core.dynamics.single_block import UPLIFT_GAP_FRACTION
 from freestand.core.dynamics.timehistory import record_breaks
@@ -305,7 +306,7 @@ def simulate_body(
     y = initial_state(body) if initial is None else np.array(initial, dtype=float)
     mode = np.zeros(3, dtype=np.int64)
     data = np.zeros(DATA_SIZE)
-    istate = np.zeros(engine.I_SIZE, dtype=np.int64)
+    istate = np.zeros(body_state.I_SIZE, dtype=np.int64)
     scratch = np.zeros(1, dtype=SCRATCH_DTYPE)  # its record is the kernel's scratch
     capacity = _capacity(end, step, breaks)
     buffers = _buffers(capacity)
@@ -316,13 +317,13 @@ def simulate_body(
         t = engine.run(par, record, motion.time_step, breaks, step, end, motion.duration,
                        tolerances.gap, tolerances.velocity, t, y, mode, data, scratch, istate,
                        *buffers, *events)  # fmt: skip
-        if istate[engine.I_STATUS] != engine.STATUS_BUFFER_FULL:
-            chunks.append(tuple(b[: istate[engine.I_RECORDS]] for b in buffers))
+        if istate[body_state.I_STATUS] != body_state.STATUS_BUFFER_FULL:
+            chunks.append(tuple(b[: istate[body_state.I_RECORDS]] for b in buffers))
             break
         chunks.append(tuple(b.copy() for b in buffers))
-        istate[engine.I_RECORDS] = 1
+        istate[body_state.I_RECORDS] = 1
         buffers = _buffers(capacity)
-        events = _event_buffers(capacity, events, int(istate[engine.I_EVENTS]))
+        events = _event_buffers(capacity, events, int(istate[body_state.I_EVENTS]))
         for b, last in zip(buffers, chunks[-1], strict=True):
             b[0] = last[-1]
     if len(chunks) == 1:
@@ -543,16 +544,16 @@ def _result(
     time, state, modes, forces = time[:rows], state[:rows], modes[:rows], forces[:rows]
     tilt, slide, twist = motion.tilt[:rows], motion.slide[:rows], motion.twist[:rows]
     highest = motion.highest[:rows]
-    count = int(istate[engine.I_EVENTS])
+    count = int(istate[body_state.I_EVENTS])
     names = ("free", "point", "edge", "face")
     kept = min(count, events[0].shape[0])
     last = float(time[-1])
     event_list = tuple(
-        (t, engine.EVENT_KINDS[kind], names[before] if before >= 0 else "", names[after])
+        (t, body_state.EVENT_KINDS[kind], names[before] if before >= 0 else "", names[after])
         for t, kind, before, after in zip(*(e[:kept].tolist() for e in events), strict=True)
         if t <= last
     )
-    overturned = not message and istate[engine.I_STATUS] == engine.STATUS_OVERTURNED
+    overturned = not message and istate[body_state.I_STATUS] == body_state.STATUS_OVERTURNED
     # a row at an event holds the state after it (an impact's velocities): no step ending
     # there is refined on its rates
     rates = np.ascontiguousarray(rates[:, :rows])
@@ -579,12 +580,12 @@ def _result(
         overturned=bool(overturned),
         overturn_time=float(time[-1]) if overturned else None,
         diagnostics={
-            "steps": int(istate[engine.I_STEPS]),
+            "steps": int(istate[body_state.I_STEPS]),
             "events": count,
-            "impacts": int(istate[engine.I_IMPACTS]),
-            "remedies": int(istate[engine.I_REMEDIES]),
-            "stretch_steps": int(istate[engine.I_STRETCH_STEPS]),
-            "event_trials": int(istate[engine.I_TRIALS]),
+            "impacts": int(istate[body_state.I_IMPACTS]),
+            "remedies": int(istate[body_state.I_REMEDIES]),
+            "stretch_steps": int(istate[body_state.I_STRETCH_STEPS]),
+            "event_trials": int(istate[body_state.I_TRIALS]),
         },
         message=message,
     )

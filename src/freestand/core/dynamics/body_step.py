@@ -173,7 +173,7 @@ def references(par, record, dt, t, y, mode, data, sc, ref, stop_speed, solved=Fa
     benchmark's rocking cabinet took 19 % more steps).
     ``solved``: the scratch holds the held mode solved at (t, y) already (a
     step's end left unprojected,
-    :func:`~freestand.core.dynamics.body_engine.drifted`, whose event
+    :func:`~freestand.core.dynamics.body_projection.drifted`, whose event
     functions left the slip velocity in the scratch), and it is not solved
     again; a sticking mode's rows are then returned too, unless a rolling
     cylinder's pivot, moved to the lowest rim point, is not the one solved

@@ -73,6 +73,7 @@ from freestand.core.contact.body_kernel import (
 )
 from freestand.core.contact.body_screening import pivot_label, uplift_threshold
 from freestand.core.dynamics import body_engine as engine
+from freestand.core.dynamics import body_state
 from freestand.core.dynamics.body_history import GRAVITY, default_body_step, initial_state
 from freestand.core.dynamics.results import ContactTolerances
 from freestand.core.motion.ground_motion import half_sine_pulse, one_cosine_pulse, one_sine_pulse
@@ -349,14 +350,14 @@ def _run_to(par, record, dt, breaks, h_max, t_end, record_end, gap_tol, velocity
         t = engine.run(par, record, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol,
                        t, y, mode, data, scratch, istate, out_t, out_y, out_mode, out_force,
                        ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
-        last = istate[engine.I_RECORDS] - 1
+        last = istate[body_state.I_RECORDS] - 1
         work[0] += _inertial_work(par, record, dt, out_t, out_y, last + 1)
         out_t[0] = out_t[last]
         out_y[0] = out_y[last]
         out_mode[0] = out_mode[last]
         out_force[0] = out_force[last]
-        istate[engine.I_RECORDS] = 1
-        if istate[engine.I_STATUS] != engine.STATUS_BUFFER_FULL:
+        istate[body_state.I_RECORDS] = 1
+        if istate[body_state.I_STATUS] != body_state.STATUS_BUFFER_FULL:
             return t
 
 
@@ -408,7 +409,7 @@ def _pulse_outcome(context, amplitude):
     y = rest.copy()
     mode = np.zeros(3, dtype=np.int64)
     data = np.zeros(DATA_SIZE)
-    istate = np.zeros(engine.I_SIZE, dtype=np.int64)
+    istate = np.zeros(body_state.I_SIZE, dtype=np.int64)
     scratch = np.zeros(1, dtype=SCRATCH_DTYPE)  # the engine's scratch, alive for both runs
     buffers = (np.zeros(_BUFFER), np.zeros((_BUFFER, STATE_SIZE)),
                np.zeros((_BUFFER, 3), dtype=np.int64), np.zeros((_BUFFER, 2)))  # fmt: skip
@@ -422,18 +423,18 @@ def _pulse_outcome(context, amplitude):
     e = energy(par, y)
     margin = (e - e_rest) / (e_barrier - e_rest)
     end = length + free_time
-    while (istate[engine.I_STATUS] != engine.STATUS_OVERTURNED and e >= e_barrier and t < end
-           and _sound(e, e_rest, work, slack)):  # fmt: skip
+    while (istate[body_state.I_STATUS] != body_state.STATUS_OVERTURNED and e >= e_barrier
+           and t < end and _sound(e, e_rest, work, slack)):  # fmt: skip
         t_next = min(t + _CHECK_STEPS * h_max, end)
         t = _run_to(par, record, dt, breaks, h_max, t_next, length, gap_tol, velocity_tol, t, y,
                     mode, data, scratch, istate, buffers, events, work)  # fmt: skip
         e = energy(par, y)
-    counters[_REMEDIES] += istate[engine.I_REMEDIES]
-    counters[_STRETCH_STEPS] += istate[engine.I_STRETCH_STEPS]
+    counters[_REMEDIES] += istate[body_state.I_REMEDIES]
+    counters[_STRETCH_STEPS] += istate[body_state.I_STRETCH_STEPS]
     if not _sound(e, e_rest, work, slack):
         counters[_FAILED] += 1
         return False, 0.0
-    if istate[engine.I_STATUS] == engine.STATUS_OVERTURNED:
+    if istate[body_state.I_STATUS] == body_state.STATUS_OVERTURNED:
         return True, 2.0 if t <= length else max(margin, 1.0)
     if e >= e_barrier:
         counters[_UNDECIDED] += 1
