@@ -45,12 +45,8 @@ from freestand.core.contact.body_kernel import (
     solve_mode,
     tangential_velocity,
 )
-from freestand.core.contact.body_solve import (
-    prepare_held,
-)
-from freestand.core.contact.compiled import (
-    kernel,
-)
+from freestand.core.contact.body_solve import prepare_held
+from freestand.core.contact.compiled import kernel
 from freestand.core.dynamics.body_step import (
     PLANAR_PASS,
     _normalise,

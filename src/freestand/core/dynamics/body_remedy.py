@@ -60,9 +60,7 @@ from freestand.core.contact.body_modes import (
     select_mode,
     touching_points,
 )
-from freestand.core.contact.compiled import (
-    kernel,
-)
+from freestand.core.contact.compiled import kernel
 from freestand.core.dynamics.body_projection import (
     project,
     turn,
@@ -77,9 +75,7 @@ from freestand.core.dynamics.body_state import (
     I_STRETCH,
     I_STRETCH_STEPS,
 )
-from freestand.core.dynamics.body_step import (
-    slip_velocity,
-)
+from freestand.core.dynamics.body_step import slip_velocity
 
 STRETCH_STEP = 1e-4  # [s] step of the velocity-level time stepping (the remedy)
 STRETCH_CHECK = 16  # a stretch looks for a consistent mode at its steps 1, 2, 4, 8, 16, 32, 48, ...
