@@ -105,9 +105,16 @@ def test_a_slip_turned_against_the_stored_direction_is_solved_again():
 
 @pytest.mark.parametrize("body", BODIES, ids=lambda b: b.name)
 @pytest.mark.parametrize("speed", [0.3, 2.0 * STOP, 0.5 * STOP])
-def test_a_flat_slip_faster_than_the_tolerance_also_stops_at_that_speed(body, speed):
+@pytest.mark.parametrize("turning", [True, False], ids=["turning", "straight"])
+def test_a_flat_slip_faster_than_the_tolerance_also_stops_at_that_speed(body, speed, turning):
     # body_step.references arms REF_STOP where a flat slip starts faster than the velocity
-    # tolerance; the slip-stop function is then min(s . r, |s| - v_tol), else s . r
+    # tolerance and turns; the slip-stop function is then min(s . r, |s| - v_tol), else s . r.
+    # The slip runs at 0.4 rad; a support acceleration along y turns it, none leaves it on
+    # its line (Newmark's block: it stops where it reverses, at zero speed).
+    record = np.zeros((3, 2))
+    if turning:
+        record[1, :] = 2.0  # a_y [m/s^2]
+    armed = speed > STOP and turning
     par = bk.body_parameters(body, G)
     mode = np.array([bk.FACE, 0, 1], dtype=np.int64)
     data = np.zeros(bk.DATA_SIZE)
@@ -117,23 +124,23 @@ def test_a_flat_slip_faster_than_the_tolerance_also_stops_at_that_speed(body, sp
     values = np.zeros(step.MAX_EVENT_FUNCTIONS)
     kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
     y = _sliding(body, speed, 0.4, 0.0)
-    count = step.start_functions(par, np.zeros((3, 2)), 1.0, 0.0, y, mode, data, sc, ref, STOP,
-                                 values, kinds)  # fmt: skip
+    count = step.start_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, STOP, values,
+                                 kinds)  # fmt: skip
     stop = values[:count][kinds[:count] == step.FN_SLIP_STOP]
-    assert ref[step.REF_STOP] == (STOP if speed > STOP else 0.0)
+    assert step.slip_turns(sc, 3) == turning
+    assert ref[step.REF_STOP] == (STOP if armed else 0.0)
     # the start's reference is the slip's own direction (or, slower than SLIP_FLOOR, the
     # stored +x): s . r there, and |s| - v_tol where armed
     along = y[7] * ref[0] + y[8] * ref[1]
-    expected = min(along, speed - STOP) if speed > STOP else along
+    expected = min(along, speed - STOP) if armed else along
     assert stop == pytest.approx([expected], rel=1e-12, abs=1e-15)
     # later in the step: a slip slowed to half the tolerance, nearly across r (s . r > 0),
     # fires where the speed is armed only
     y[7] = (-0.5 * ref[1] + 1e-3 * ref[0]) * STOP
     y[8] = (0.5 * ref[0] + 1e-3 * ref[1]) * STOP
-    count = step.event_functions(par, np.zeros((3, 2)), 1.0, 0.0, y, mode, data, sc, ref,
-                                 values, kinds)  # fmt: skip
+    count = step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
     stop = values[:count][kinds[:count] == step.FN_SLIP_STOP]
-    assert (stop[0] < 0.0) == (speed > STOP)
+    assert (stop[0] < 0.0) == armed
 
 
 def test_a_rocking_edge_s_slip_stops_where_it_reverses_only():

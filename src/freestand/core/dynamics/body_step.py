@@ -37,6 +37,7 @@ from freestand.core.contact.body_kernel import (
     SC_LAM,
     SC_PROBE,
     SC_ROT,
+    SC_SACC,
     SC_SVEL,
     SC_TANGENT,
     SC_TBIAS,
@@ -77,6 +78,7 @@ SLIP_FRACTION = 0.5  # a step lasts at most this part of a slip's time scale |s|
 FACE_TURN = 0.3  # [rad] a flat base's slip turns by about this much at most in a step
 SLIP_MIN_STEP = 1e-4  # [s] the slip's time scale bounds no step below this
 FACE_MIN_STEP = 3e-4  # [s] a flat base's turn bounds no step below this
+STRAIGHT_SLIP = 1e-9  # a slip whose rate across its velocity is below this part keeps its line
 ONSET_STEP = 1e-3  # [s] a flat base's slip from rest steps at most this far
 FLOOR_STABILITY = 2.0  # h lambda of a flat base's slip turning at its floor (RK4: stable to 2.78)
 ENERGY_GROWTH = 2.0  # a step's sqrt(kinetic energy) may grow by this times its bound at most
@@ -165,10 +167,13 @@ def references(par, record, dt, t, y, mode, data, sc, ref, stop_speed, solved=Fa
     stored one is kept; else (0, -1).
     ``ref[REF_STOP]`` is ``stop_speed`` [m/s] (the velocity tolerance, within
     which a slip counts as zero) where a flat base's slip starts the step
-    faster than that, else 0.0: :func:`event_values` then also stops the
-    slip where its speed falls to it. A slip that starts slower (from rest,
-    after an onset) stops where it reverses only, and so does an edge's or
-    a point's, whose steps the slip's own time scale bounds
+    faster than that and turns (:func:`slip_turns`), else 0.0:
+    :func:`event_values` then also stops the slip where its speed falls to
+    it. A slip that starts slower (from rest, after an onset) stops where it
+    reverses only, and so does a slip that keeps its line (Newmark's block:
+    stopped at the tolerance, squat bodies under one horizontal component of
+    a record slid up to 2e-4 of their slide short of it), an edge's and a
+    point's, whose steps the slip's own time scale bounds
     (:func:`_slip_turn_time`; stopped at the tolerance too, the 3-D
     benchmark's rocking cabinet took 19 % more steps).
     ``solved``: the scratch holds the held mode solved at (t, y) already (a
@@ -214,9 +219,33 @@ def references(par, record, dt, t, y, mode, data, sc, ref, stop_speed, solved=Fa
     for i in range(n_tangent):
         ref[i] = svel[i] / size if size > floor else data[D_SLIP + i]
         data[D_SLIP + i] = ref[i]
-    if mode[M_KIND] == FACE and size > stop_speed:
+    if mode[M_KIND] == FACE and size > stop_speed and slip_turns(sc, n_tangent):
         ref[REF_STOP] = stop_speed
     return n_normal, n_tangent if size <= floor or sc[SC_CENTRE][5] == 0.0 else -1
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def slip_turns(sc, n_tangent):
+    """Whether a flat base's slip turns: its rate s' has a part across its velocity s.
+
+    ``|s' - (s' . u) u| > STRAIGHT_SLIP |s'|``, u = s / |s|, from the held
+    mode's solve in the scratch (its slip velocity and accelerations) at the
+    step's start. A slip that keeps its line (a flat base under one
+    horizontal component, in any direction, as Newmark's block) has none but
+    round-off.
+    """
+    svel, rate = sc[SC_SVEL], sc[SC_SACC]
+    speed = leading_length(svel, n_tangent)
+    if speed == 0.0:
+        return False
+    along = 0.0
+    for k in range(n_tangent):
+        rate[k] = row_acceleration(sc[SC_TANGENT], sc[SC_TBIAS], k, sc[SC_ACC])
+        along += rate[k] * svel[k] / speed
+    across = 0.0
+    for k in range(n_tangent):
+        across += (rate[k] - along * svel[k] / speed) ** 2
+    return math.sqrt(across) > STRAIGHT_SLIP * leading_length(rate, n_tangent)
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -254,7 +283,8 @@ def event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds):
     out (a flat base under two components whose force nears the kinetic
     friction) may pass its stop beside r by the step's truncation error
     without ``s . r`` changing sign; the speed catches it, and the mode is
-    chosen again there (sticking where static friction holds).
+    chosen again there (sticking where static friction holds). A slip that
+    keeps its line is not armed so (:func:`references`): it stops at zero.
     """
     rot = sc[SC_ROT]
     lam = sc[SC_LAM]
