@@ -99,11 +99,11 @@ def test_a_free_fall_s_landing_is_found_on_the_interpolant(tilt, speed, fraction
     trial = np.zeros(bk.STATE_SIZE)
     crossing, fall = events.interpolated_crossing(
         par, record, 1.0, 0.0, h, y, end, mode, data, sc, k, ref, values, kinds,
-        -events.GAP_SLACK, target, start[target] + events.GAP_SLACK,
-        values[target] + events.GAP_SLACK, trial,
+        0.0, target, start[target], values[target], trial,
     )  # fmt: skip
-    # tolerance: the search's bracket (1e-10 s) and the slack of the gap's level (1e-12 m)
-    assert abs(crossing - landing) <= events.INTERPOLANT_TIME + 1e-12 / (speed + G * landing)
+    # tolerance: the search's bracket (1e-10 s); the gap starts 1 mm up, above GAP_SLACK, and
+    # its level is zero (events._levels)
+    assert abs(crossing - landing) <= events.INTERPOLANT_TIME
     # its rate of fall: the corner's speed at the landing; the secant of the last two trials
     # (within 2e-4 here, on a search's last steps), which a seed needs to 1e-2 or so
     assert fall == pytest.approx(speed + G * landing, rel=1e-3)
@@ -175,7 +175,7 @@ def test_a_spinning_fall_s_landing_is_the_crossing_on_rk4_states(
 
     def gap(tau):  # the lowest corner's gap on the RK4 state at tau (k[0]: the start's rate)
         step._rk4(par, record, 1.0, 0.0, tau, y, mode, data, sc, k, state)
-        return _lowest_gap(par, state) + events.GAP_SLACK
+        return _lowest_gap(par, state)  # fires at zero: it starts above GAP_SLACK
 
     ref, values = np.zeros(step.REF_SIZE), np.zeros(step.MAX_EVENT_FUNCTIONS)
     kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)

@@ -315,8 +315,10 @@ def rest_step(par, record, dt, t, h, rest, rot, lam, centre):
 
     The margins are concave in the multipliers (a minimum of linear ones, or
     ``R N - |M|``, ``mu N - |F|``), which are linear in time over a
-    segment: where both ends hold, the whole step holds. Otherwise the
-    crossing is bisected to EVENT_TIME. Returns (step taken, kind fired or -1).
+    segment: where both ends hold, the whole step holds. A margin fires
+    past the admissibility slack (``MARGIN_SLACK`` m g below zero); then the
+    crossing of zero, the threshold, is bisected to EVENT_TIME (``docs/three-d.md``,
+    "Rest"). Returns (step taken, kind fired or -1).
     """
     slack = MARGIN_SLACK * par[P_MASS] * par[P_GRAVITY]
     normal, friction = rest_margins(par, record, dt, t + h, rest, rot, lam, centre)
@@ -327,12 +329,12 @@ def rest_step(par, record, dt, t, h, rest, rot, lam, centre):
     while high - low > EVENT_TIME:
         middle = 0.5 * (low + high)
         normal, friction = rest_margins(par, record, dt, t + middle, rest, rot, lam, centre)
-        if normal < -slack or friction < -slack:
+        if normal < 0.0 or friction < 0.0:
             high = middle
         else:
             low = middle
     normal, friction = rest_margins(par, record, dt, t + high, rest, rot, lam, centre)
-    return high, FN_NORMAL if normal < -slack else FN_FRICTION
+    return high, FN_NORMAL if normal < 0.0 else FN_FRICTION
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)

@@ -28,6 +28,7 @@ from freestand.core.contact.body_kernel import (
 from freestand.core.contact.vectors import norm2
 from freestand.core.dynamics import body_engine as engine
 from freestand.core.dynamics import body_state
+from freestand.core.dynamics.body_projection import FLAT_ROUND_OFF
 from freestand.core.dynamics.results import ContactTolerances, peak_between_samples
 from freestand.core.dynamics.single_block import UPLIFT_GAP_FRACTION
 from freestand.core.dynamics.timehistory import record_breaks
@@ -37,6 +38,9 @@ GRAVITY = 9.81
 
 MOTION_NAMES = {0: "free-flight", 1: "rock-corner", 2: "rock-edge", 3: "rest"}
 EVENT_ROWS = 200_000  # events kept (the engine counts the others)
+#: A tilt below this [rad] is a flat base's round-off, reported as zero: the engine leaves a
+#: sliding flat base's quaternion within FLAT_ROUND_OFF of flat (tilt 2 sqrt(2) times that).
+FLAT_TILT = 4.0 * FLAT_ROUND_OFF
 
 #: After the record, the body is at rest when it sits flat, sticks and no velocity
 #: component exceeds this [m/s, rad/s] (the planar engine's rest test).
@@ -440,6 +444,18 @@ def _read_motion(body: Body, state: np.ndarray, with_rates: bool):
     return BodyMotion(tilt, slide, twist, lowest, highest), (rates if with_rates else None)
 
 
+@nb.njit(cache=True, error_model="numpy", inline="always")
+def _tilt(r20, r21, r22):
+    """The tilt [rad] from the rotation's third row: ``atan2(sin, cos)``, exact near flat.
+
+    ``acos(R_33)`` loses its digits there: below 1e-8 rad it is zero, and a
+    rocking excursion of 1e-6 rad peaked 4e-5 off. Below ``FLAT_TILT`` the
+    tilt is the integration's round-off of a flat base, and zero.
+    """
+    tilt = math.atan2(math.sqrt(r20 * r20 + r21 * r21), r22)
+    return tilt if tilt > FLAT_TILT else 0.0
+
+
 @nb.njit(cache=True, error_model="numpy")
 def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, highest, rates):
     """:func:`body_motion`'s arrays in one pass over the states (its Notes).
@@ -458,7 +474,7 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
             row[j] = state[i, j]
         rotation_matrix(row, rot)
         r20, r21, r22 = rot[2, 0], rot[2, 1], rot[2, 2]
-        tilt[i] = math.acos(min(max(r22, -1.0), 1.0))
+        tilt[i] = _tilt(r20, r21, r22)
         # the base centre r - R c
         bx = state[i, 0] - (rot[0, 0] * centre[0] + rot[0, 1] * centre[1] + rot[0, 2] * centre[2])
         by = state[i, 1] - (rot[1, 0] * centre[0] + rot[1, 1] * centre[1] + rot[1, 2] * centre[2])
@@ -630,14 +646,14 @@ def _row_rates(row, rot, centre, slide_x, slide_y, rates, i):
     c`` moves at ``v - omega x (R c)``, ``|s|' = s . v_b / |s|``; with q =
     (w, x, y, z), ``twist = 2 atan2(z, w)``, ``twist' = 2 (w z' - z w') /
     (w^2 + z^2)``, ``q' = (0, omega) q / 2``. Zero where the quotient's
-    denominator is (no slide, upside down), and the tilt's where the tilt,
-    ``acos(R_33)``, is (below about 1e-8 rad: a flat base's rows).
+    denominator is (no slide, upside down), and the tilt's where the body is
+    flat (``sin(tilt)`` within ``FLAT_TILT``).
     """
     vx, vy = row[7], row[8]
     wx, wy, wz = row[10], row[11], row[12]
     lean = norm2(rot[0, 2], rot[1, 2])
     turn = wx * rot[1, 2] - wy * rot[0, 2]  # (omega x e)_z
-    rates[0, i] = -turn / lean if rot[2, 2] < 1.0 and lean > 0.0 else 0.0
+    rates[0, i] = -turn / lean if lean > FLAT_TILT else 0.0
     # R c, then the base centre's horizontal velocity v - omega x (R c)
     cx = rot[0, 0] * centre[0] + rot[0, 1] * centre[1] + rot[0, 2] * centre[2]
     cy = rot[1, 0] * centre[0] + rot[1, 1] * centre[1] + rot[1, 2] * centre[2]
