@@ -526,9 +526,14 @@ def _slip_turn_time(par, mode, sc):
             # a slip slowing down: at most a part of its time to stop, |s| / (-|s|')
             limit = min(limit, max(SLIP_FRACTION * speed / -along, SLIP_MIN_STEP))
         return limit / CLOSING_OVERSHOOT
-    if change == 0.0:
-        return math.inf
-    limit = SLIP_FRACTION * math.sqrt(speed / change)
+    limit = math.inf
+    if kind == POINT:
+        # RK4's stability on the rate at which the friction turns the slip, as a flat base's
+        limit = FLOOR_STABILITY * math.sqrt(speed) / point_slip_stiffness(par, sc)
+    if change > 0.0:
+        limit = min(limit, SLIP_FRACTION * math.sqrt(speed / change))
+    if limit == math.inf:
+        return limit
     return max(limit, SLIP_MIN_STEP) / CLOSING_OVERSHOOT
 
 
@@ -551,13 +556,24 @@ def slip_floor(par, mode, sc, h):
     RK4 integrates stably, and the next step keeps that direction as its
     reference while the slip stays below the floor (:func:`references`: the
     step-by-step update to ``s/|s|`` is an explicit step on the same rate).
-    A FACE only (an edge's or point's slip steps are bounded by its time
-    scale, ``SLIP_FRACTION``); 0.0 (``SLIP_FLOOR``) otherwise. ``sc`` holds
-    the step's start solved (:func:`start_functions`). Returns [m/s].
+    An EDGE's or POINT's slip turns likewise, at most at
+    :func:`point_slip_stiffness` / |s|: its steps are bounded by the slip's
+    time scale (``SLIP_FRACTION``) only, and the floor alone keeps it
+    stable. Without it a rocking cylinder's slow slip on its rim from rest
+    (1e-5 m/s, 0.1 ms steps, h lambda about 20) grew a slip across its plane
+    of rocking from 1e-17 to 1e-8 m/s in three steps: excited along x, it
+    left the plane, rolled and twisted (0.35 m across, 0.9 rad) and
+    overturned, where the planar engine's block rocks to 0.06 rad. 0.0
+    (``SLIP_FLOOR``) for a mode that does not slip. ``sc`` holds the step's
+    start solved (:func:`start_functions`). Returns [m/s].
     """
-    if mode[M_KIND] != FACE or mode[M_SLIP] != 1:
+    if mode[M_SLIP] != 1:
         return 0.0
-    return slip_stiffness(par, sc) * h / FLOOR_STABILITY
+    if mode[M_KIND] == FACE:
+        return slip_stiffness(par, sc) * h / FLOOR_STABILITY
+    if mode[M_KIND] == POINT:
+        return point_slip_stiffness(par, sc) * h / FLOOR_STABILITY
+    return 0.0
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -573,6 +589,28 @@ def slip_stiffness(par, sc):
     rho = sc[SC_CENTRE][2]
     largest = max(1.0 / par[P_MASS], rho * rho * sc[SC_INV][2, 2])
     return par[P_MU_KINETIC] * max(sc[SC_LAM][0], 0.0) * largest + 1e-300
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def point_slip_stiffness(par, sc):
+    """``mu N tr(W_t M^-1 W_t^T)`` [m/s^2]: a sliding POINT's slip of speed |s| turns at most at
+    this / |s|.
+
+    The kinetic friction ``-mu N u`` on the point's two tangential rows W_t
+    (in the scratch, with the normal multiplier of its solve): a turn of u by
+    d changes the slip's rate by ``mu N W_t M^-1 W_t^T d``, whose largest
+    eigenvalue the trace bounds (the point's mobility through the body's
+    rotation as well as its translation).
+    """
+    tangent, inv = sc[SC_TANGENT], sc[SC_INV]
+    inv_m = 1.0 / par[P_MASS]
+    trace = 0.0
+    for k in range(2):
+        trace += inv_m * (tangent[0, k] ** 2 + tangent[1, k] ** 2 + tangent[2, k] ** 2)
+        for i in range(3):
+            for j in range(3):
+                trace += tangent[3 + i, k] * inv[i, j] * tangent[3 + j, k]
+    return par[P_MU_KINETIC] * max(sc[SC_LAM][0], 0.0) * trace + 1e-300
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
