@@ -485,7 +485,9 @@ def _slip_turn_time(par, mode, sc):
     a slip across the force grew from round-off (a squat cylinder pushed at 1
     rad from its axes slid 1.8 % too far); bounded, the cask's path stays
     0.05 mm from a 0.1 ms run's, where the turn bound alone left 0.47 mm.
-    Not below ``SLIP_MIN_STEP``: a slip
+    A rim point's step is also bounded by RK4's stability on the rate at
+    which friction turns its slip, ``FLOOR_STABILITY |s| /
+    point_slip_stiffness`` (:func:`slip_floor`). Not below ``SLIP_MIN_STEP``: a slip
     that dies away without reversing would otherwise take ever shorter steps
     (its energy is then negligible); a flat base's not below ``FACE_MIN_STEP``,
     whose slow creeps (0.1 mm/s for 10 ms, the support driving across them)
@@ -556,16 +558,19 @@ def slip_floor(par, mode, sc, h):
     RK4 integrates stably, and the next step keeps that direction as its
     reference while the slip stays below the floor (:func:`references`: the
     step-by-step update to ``s/|s|`` is an explicit step on the same rate).
-    An EDGE's or POINT's slip turns likewise, at most at
-    :func:`point_slip_stiffness` / |s|: its steps are bounded by the slip's
-    time scale (``SLIP_FRACTION``) only, and the floor alone keeps it
-    stable. Without it a rocking cylinder's slow slip on its rim from rest
-    (1e-5 m/s, 0.1 ms steps, h lambda about 20) grew a slip across its plane
-    of rocking from 1e-17 to 1e-8 m/s in three steps: excited along x, it
-    left the plane, rolled and twisted (0.35 m across, 0.9 rad) and
-    overturned, where the planar engine's block rocks to 0.06 rad. 0.0
-    (``SLIP_FLOOR``) for a mode that does not slip. ``sc`` holds the step's
-    start solved (:func:`start_functions`). Returns [m/s].
+    A POINT's slip (a rim point) turns likewise, at most at
+    :func:`point_slip_stiffness` / |s|, and is bounded and floored the same
+    way (its steps down to ``SLIP_MIN_STEP``). Without both a rocking
+    cylinder's slow slip on its rim from rest (1e-5 m/s, 0.1 ms steps, h
+    lambda about 20) grew a slip across its plane of rocking from 1e-17 to
+    1e-8 m/s in three steps: excited along x, it left the plane, rolled and
+    twisted (0.35 m across, 0.9 rad) and overturned, where the planar
+    engine's block rocks to 0.06 rad. Not an EDGE's (three rows, with the
+    twist): kept at its step's direction, a cabinet rocking about its long
+    edge under a turned record twisted by 4e-5 rad where it twists by
+    round-off; its steps keep the time-scale bound alone. 0.0
+    (``SLIP_FLOOR``) for an EDGE and for a mode that does not slip. ``sc``
+    holds the step's start solved (:func:`start_functions`). Returns [m/s].
     """
     if mode[M_SLIP] != 1:
         return 0.0
