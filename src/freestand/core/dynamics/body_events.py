@@ -320,6 +320,13 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
         _rk4(par, record, dt, t, middle, y, mode, data, sc, k, trial)
         event_functions(par, record, dt, t + middle, trial, mode, data, sc, ref, values, kinds)
         fired = _fired(n, values, levels, target)
+        if fired < 0 and values[target] == levels[target]:
+            # a trial on the level itself (a gap at zero): the crossing, to round-off; the
+            # regula falsi could not move its bracket's end from there and bisected
+            for i in range(STATE_SIZE):
+                out[i] = trial[i]
+            high = middle
+            break
         if seeding:
             seeded += 1
             previous, g_previous = (last if seeded > 1 else math.nan), g_last
