@@ -173,9 +173,9 @@ def references(par, record, dt, t, y, mode, data, sc, ref, stop_speed, solved=Fa
     reverses only, and so does a slip that keeps its line (Newmark's block:
     stopped at the tolerance, squat bodies under one horizontal component of
     a record slid up to 2e-4 of their slide short of it), an edge's and a
-    point's, whose steps the slip's own time scale bounds
-    (:func:`_slip_turn_time`; stopped at the tolerance too, the 3-D
-    benchmark's rocking cabinet took 19 % more steps).
+    point's, whose steps the slip's own time scale bounds (a point's, also
+    RK4's stability on its turn: :func:`_slip_turn_time`; stopped at the
+    tolerance too, the 3-D benchmark's rocking cabinet took 19 % more steps).
     ``solved``: the scratch holds the held mode solved at (t, y) already (a
     step's end left unprojected,
     :func:`~freestand.core.dynamics.body_projection.drifted`, whose event
