@@ -144,6 +144,37 @@ def test_a_cylinder_slipping_on_its_rim_under_a_record_rocks_in_its_plane():
     assert np.abs(across).max() <= 1e-9
 
 
+def test_a_cylinder_landing_from_free_flight_on_its_slipping_rim_follows_the_planar_block():
+    """A cylinder under the example record (x 5.006, turned to 4.830 rad) and its vertical (x
+    10.39: the support falls faster than g, and the cylinder flies 3 times in 5 s). At 3.805 s
+    it lands on its rim slipping at 0.28 m/s; the sticking impulse needs 0.66 of the normal
+    one, inside mu = 0.716, and both engines stick there (Coulomb's law at velocity level).
+    The planar engine took the kinetic impulse against the slip, which reversed it, and
+    parted from the 3-D engine there: by 1e-2 of the peak tilt at 5 s, 14 % over the record.
+    Tolerance 1e-4 of the peak over the first 5 s (measured 2.2e-5: the planar general path
+    locates its impacts 1e-10 m deep, 1e-7 to 1e-6 s late on the slow ones of a sequence that
+    settles at 1.05 s; its single-block path, which locates them exactly, does not apply in
+    free flight).
+    """
+    record = fs.load_record(RECORDS / "synthetic_H.AT2", vertical=RECORDS / "synthetic_UP.AT2")
+    radius, height, mass = 0.7470195883909309, 2.8733138526684305, 5285.997475552089
+    friction, angle = Friction(0.7164711440938762, 0.7164711440938762), 4.83045738099681
+    x = 5.005896597434115 * record.horizontal
+    v = 5.005896597434115 * 2.0747007298232223 * record.vertical
+    body = Body("c", Cylinder(radius, height), mass, friction)
+    result = simulate_body(body, SupportMotion3(record.dt, x, None, v).rotated(angle), 5.0,
+                           max_step=STEP)  # fmt: skip
+    block = Block("c", mass=mass, inertia=float(np.asarray(body.inertia)[1, 1]),
+                  centre=(0.0, 0.5 * height), base_left=-radius, base_right=radius,
+                  base_level=0.0, friction=friction)  # fmt: skip
+    planar = simulate(Stack("s", (block,)), SupportMotion(record.dt, x, v), 5.0, max_step=STEP)
+    assert sum(event.motions == ("free-flight",) for event in planar.events) >= 3
+    grid = np.linspace(0.0, 5.0, 40001)
+    a = np.interp(grid, result.time, result.tilt)
+    b = np.interp(grid, planar.time, np.abs(planar.position[:, 0, 2]))
+    assert np.max(np.abs(a - b)) <= 1e-4 * np.max(b)
+
+
 def test_a_restitution_factor_rocks_as_the_planar_blocks():
     """The factor e on the velocity after an impact is the planar engine's (docs/timehistory.md).
 
