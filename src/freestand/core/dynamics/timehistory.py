@@ -28,7 +28,8 @@ runs compiled, the whole loop in :mod:`freestand.core.dynamics.engine`:
 * events end a step and are located to ``time_tolerance`` (regula falsi,
   Illinois variant, on the step's Hermite interpolant, Newton steps for a
   closing gap, then a checked bracket of RK4 states; bisection as fallback):
-  a gap closing (impact), a
+  a gap closing (impact: at zero where it was open by more than the event's
+  slack, 1e-3 of the touching tolerance, at the step's start), a
   normal force reaching zero (lift-off), a slip velocity reaching zero
   (possible stick or reversal), a sticking interface's friction reaching the
   static cone (slip), a block sliding back onto its end stop, a block lying on
