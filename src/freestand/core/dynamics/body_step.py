@@ -583,13 +583,11 @@ def slip_floor(par, mode, sc, h):
     floor makes any step stable, and bounding them as a point's cost a rocking
     cabinet 60 % more time), and below its floor the next step's reference is
     the pulled direction the step started with (:func:`references`), not the
-    one kept from before: kept, the reference held the twist of a faster slip,
-    and a cabinet rocking about its long edge under a turned record twisted
-    on. Unfloored, its slow slip grew a twist from round-off (3e-13 to 4e-5
-    rad/s in 0.5 ms at 0.2 ms steps, a box sliding and rocking along its x
-    axis, whose peak tilt then fell 1 % below the planar engine's at the
-    default step), or chattered at its friction limit into the remedy's time
-    stepping. 0.0 (``SLIP_FLOOR``) for a mode that does not slip. ``sc``
+    one kept from before. Unfloored, its slow slip grew a twist from
+    round-off (3e-13 to 4e-5 rad/s in 0.5 ms at 0.2 ms steps, a box sliding
+    and rocking along its x axis, whose peak tilt then fell 1 % below the
+    planar engine's at the default step), or chattered at its friction limit
+    into the remedy's time stepping. 0.0 (``SLIP_FLOOR``) for a mode that does not slip. ``sc``
     holds the step's start solved (:func:`start_functions`). Returns [m/s].
     """
     if mode[M_SLIP] != 1:

@@ -1901,11 +1901,12 @@ def _arm_impacts(params, active, mode, work):
     A contact open at the step's start by more than the gap event's slack
     (``P_GAP_EVENT``) fires, and is located, where its gap reaches zero; one
     within the slack (just lifted, or put back by the projection) where it
-    reaches minus the slack, so that round-off does not fire it again. Its
-    impact was located where the gap reached minus the slack (1e-10 m by
-    default): late by the slack over the closing speed, 1e-7 to 1e-6 s for
-    the slow impacts of a rocking that settles, which a sequence of impacts
-    multiplies (the 3-D engine's events, ``body_events``, locate the zero).
+    reaches minus the slack, so that round-off does not fire it again.
+    Located at minus the slack (1e-10 m by default) wherever they started,
+    impacts came late by the slack over the closing speed, 1e-7 to 1e-6 s
+    for the slow impacts of a rocking that settles, which a sequence of
+    impacts multiplies (the 3-D engine's events, ``body_events``, locate the
+    zero).
     """
     gap = work.contact[GAP]
     level = work.contact[IMPACT_LEVEL]
