@@ -679,13 +679,13 @@ def _needs_impact(model, params, active, slide, work):
     slip_velocity = work.contact[SLIP_VELOCITY]
     tol_gap = params[P_TOL_GAP]
     tol_vel = params[P_TOL_VEL]
-    level = work.contact[IMPACT_LEVEL]  # the step's (_arm_impacts)
+    level = work.contact[IMPACT_LEVEL]  # the step's (_arm_impacts): zero or minus the slack
     for i in range(active):
         for c in range(2):
             approach = gap_velocity[i, c]
             if gap[i, c] <= tol_gap and approach < -tol_vel:
                 return True
-            if gap[i, c] < min(level[i, c], 0.0) and approach < 0.0:
+            if gap[i, c] < level[i, c] and approach < 0.0:
                 return True
         code = sliding_codes[i]
         engaged = _engaged(code, slide[i], params[P_TOL_SLIDE])
