@@ -116,6 +116,7 @@ FAILURES = (
     "contact problem inconsistent (also after a tangential impact)",
     "events repeat without progress",
     "more than the allowed number of events",
+    "events accumulate in a burst",
 )
 (
     NO_FAILURE,
@@ -125,7 +126,8 @@ FAILURES = (
     CONTACT_INCONSISTENT_AFTER,
     STALLED,
     TOO_MANY_EVENTS,
-) = range(7)
+    BURST,
+) = range(8)
 
 #: The stack, made by :func:`freestand.core.dynamics.timehistory.engine_model`:
 #: ``geometry`` (B, 7) (:func:`freestand.core.dynamics.timehistory.stack_geometry`),
@@ -159,14 +161,19 @@ S_DISSIPATIVE_IMPACTS = 17
 #: Stretches begun per cause (indexed by the failure code it replaced: FAILURES)
 S_REMEDY = 18
 #: Zeno sequences of impacts summed (the impact after which the interface lands: :func:`_land`)
-S_ZENO = S_REMEDY + 7
-S_SIZE = S_ZENO + 1
+S_ZENO = S_REMEDY + len(FAILURES)
+#: Events of the current burst (:func:`_in_burst`); the stretches begun by bursts since the
+#: last quiet spell; the least steps of the current stretch (:func:`_stretch_length`)
+S_BURST, S_BURST_STRETCHES, S_STRETCH_LENGTH = S_ZENO + 1, S_ZENO + 2, S_ZENO + 3
+S_SIZE = S_ZENO + 4
 
 # --- float state vector layout -----------------------------------------------------------------
 F_TIME, F_MAX_PENETRATION, F_MAX_PROJECTION = range(3)
 #: Time spent time stepping [s]; the largest ratio T(v+)/T(v_f) of a step's impulses
 F_STEPPED_TIME, F_ENERGY_RATIO = 3, 4
-F_SIZE = 5
+#: Time [s] of the last event resolved, or of the start or the last resume (:func:`_in_burst`)
+F_LAST_EVENT = 5
+F_SIZE = 6
 
 # --- history and event buffers (made by the caller, grown between calls) ------------------------
 #: ``rec``: ``(time (rows,), values (rows, B, R_SIZE))``, per block the coordinates
@@ -183,6 +190,18 @@ EV_MOTIONS = 6
 STEPPING_STEP = 1e-4
 #: Steps of a stretch before events are tried again.
 STRETCH_STEPS = 20
+#: A burst of events: more than :data:`BURST_EVENTS` events in a row, each within
+#: :data:`BURST_INTERVAL` [s] (a stretch's least length) of the one before (or of the
+#: resume of events), begins a stretch (:func:`_in_burst`). At the default tolerances a
+#: homogeneous block's impacts settling on a rigid base come at most about 36 in a row
+#: so close (Housner's ratio against the velocity tolerance, whatever the slenderness;
+#: 33 at most over the random-stack sweep, and the end stop's chatter 51, which the
+#: stall guard takes first).
+BURST_INTERVAL = STRETCH_STEPS * STEPPING_STEP
+BURST_EVENTS = 200
+#: The least length of a burst's stretch doubles with each burst that follows the resume
+#: of the one before without a quiet spell, up to this many times (:func:`_stretch_length`)
+BURST_DOUBLINGS = 10
 #: Relative rise of the kinetic energy [-] an impact's state may show (round-off).
 ENERGY_SLACK = 1e-9
 #: A Zeno sequence of impacts on a quiet support is summed to its accumulation instant
@@ -1724,18 +1743,58 @@ def _record_event(state, kind, interface, contact, status, active_before, qd_bef
 
 
 @nb.njit(cache=True, _nrt=False)
+def _stretch_length(cause, istate):
+    """Least number of steps of a stretch begun because of failure code ``cause``.
+
+    :data:`STRETCH_STEPS` (2 ms), and for a burst (:data:`BURST`) twice as
+    many for each burst's stretch since the last quiet spell (at most
+    2^:data:`BURST_DOUBLINGS` times), so that a stretch comes to outlast a
+    chatter that the first ones did not end; counts the burst's stretch in
+    ``istate``.
+    """
+    if cause != BURST:
+        return STRETCH_STEPS
+    doublings = min(istate[S_BURST_STRETCHES], BURST_DOUBLINGS)
+    istate[S_BURST_STRETCHES] += 1
+    return STRETCH_STEPS << doublings
+
+
+@nb.njit(cache=True, _nrt=False)
+def _in_burst(t, istate, fstate):
+    """Count the event at ``t`` [s] in the burst it continues; whether the burst is too long.
+
+    An event within :data:`BURST_INTERVAL` of the last one (or of the start
+    or the resume of events) continues the burst, any other one ends it and
+    the run of bursts' stretches with it (a quiet spell). True once the
+    burst has more than :data:`BURST_EVENTS` events: events come far faster
+    than the stack's motion (a rocking whose flights are below the gap
+    tolerance, chatter) and would not end.
+    """
+    if t - fstate[F_LAST_EVENT] <= BURST_INTERVAL:
+        istate[S_BURST] += 1
+    else:
+        istate[S_BURST] = 0
+        istate[S_BURST_STRETCHES] = 0
+    fstate[F_LAST_EVENT] = t
+    return istate[S_BURST] > BURST_EVENTS
+
+
+@nb.njit(cache=True, _nrt=False)
 def _begin_stretch(cause, state, ev):
     """Switch to time stepping for a stretch, because of failure code ``cause``.
 
-    Sets the stepping flags and counters of ``istate`` and records a
-    ``time-stepping`` event.
+    Sets the stepping flags and counters of ``istate`` (the stall and burst
+    counts start again after it; its least length: :func:`_stretch_length`)
+    and records a ``time-stepping`` event.
     """
     istate = state.istate
     istate[S_STEPPING] = 1
     istate[S_STRETCH_STEPS] = 0
+    istate[S_STRETCH_LENGTH] = _stretch_length(cause, istate)
     istate[S_STRETCHES] += 1
     istate[S_REMEDY + cause] += 1
     istate[S_STALLED] = 0
+    istate[S_BURST] = 0
     active = istate[S_ACTIVE]
     _record_event(state, TIME_STEPPING, -1, -1, 0, active, state.qd, ev)
 
@@ -1772,6 +1831,7 @@ def _start(model, exc, params, state, work, loop, problem, rec, ev):
         if rec[0].shape[0] < 4 or ev[0].shape[0] < 4:
             return BUFFER_FULL
         istate[S_STARTED] = 1
+        fstate[F_LAST_EVENT] = t
         _copy(velocity_before, qd, qd.shape[0])
         _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate, mode,
                 directions, flags, False, settle)  # fmt: skip
@@ -2335,11 +2395,11 @@ def resolve(model, exc, params, max_events, h, state, work, loop, problem, rec, 
     impact if one is needed, the next contact mode and the projection onto the
     closed contacts (:func:`_settle`), the event, and the new mode's forces,
     recorded. Remedies: where events repeat without progress (more than 50
-    steps of at most twice the time tolerance), no mode is consistent or the
-    new mode is singular, a stretch of time stepping begins
-    (:func:`_begin_stretch`). Returns :data:`COMPLETED` when every block has
-    overturned, :data:`FAILED` after more than ``max_events`` events, else
-    :data:`RUNNING`.
+    steps of at most twice the time tolerance) or come in a burst
+    (:func:`_in_burst`), no mode is consistent or the new mode is singular, a
+    stretch of time stepping begins (:func:`_begin_stretch`). Returns
+    :data:`COMPLETED` when every block has overturned, :data:`FAILED` after
+    more than ``max_events`` events, else :data:`RUNNING`.
     """
     qdd = loop.vectors[QDD]
     q1 = loop.vectors[Q1]
@@ -2364,6 +2424,9 @@ def resolve(model, exc, params, max_events, h, state, work, loop, problem, rec, 
         istate[S_STALLED] = 0
     if istate[S_STALLED] > 50:
         _begin_stretch(STALLED, state, ev)
+        return RUNNING
+    if _in_burst(t, istate, fstate):
+        _begin_stretch(BURST, state, ev)
         return RUNNING
     # state at the event (kinematics and forces of the held mode)
     _evaluate(model, exc, params, active, t, q, qd, mode, work, qdd, lam)
@@ -2451,10 +2514,12 @@ def _overturn_after_excitation(model, exc, params, state, work, loop, problem, e
 def resolve_stretch(model, exc, params, state, work, loop, problem, rec, ev):
     """After a step of time stepping: overturning, and the return to events.
 
-    A block whose rotation reaches pi/2 overturns with those above it. Every
-    ``STRETCH_STEPS`` steps the event-driven contact problem is tried at the
-    state (:func:`_try_resume`); when a mode is consistent the stretch ends
-    with a ``resume`` event and the state is recorded again.
+    A block whose rotation reaches pi/2 overturns with those above it. After
+    the stretch's least length (``S_STRETCH_LENGTH`` steps:
+    :func:`_stretch_length`) the event-driven contact problem is tried at
+    every step at the state (:func:`_try_resume`); when a mode is consistent
+    the stretch ends with a ``resume`` event, from which a burst is counted
+    again, and the state is recorded again.
     """
     qdd = loop.vectors[QDD]
     rates = loop.blockwise[RATES]
@@ -2473,11 +2538,12 @@ def resolve_stretch(model, exc, params, state, work, loop, problem, rec, ev):
             _record_event(state, OVERTURN, i, -1, 0, active, velocity_before, ev)
             active = i
             break
-    if active > 0 and istate[S_STRETCH_STEPS] >= STRETCH_STEPS:
+    if active > 0 and istate[S_STRETCH_STEPS] >= istate[S_STRETCH_LENGTH]:
         _copy(velocity_before, qd, 3 * active)
         if _try_resume(model, exc, params, active, t, q, qd, slide, work, problem, istate, fstate,
                        mode, directions, flags, settle, qdd, lam):  # fmt: skip
             step[L_REST_READY] = 0
+            fstate[F_LAST_EVENT] = t
             _record_event(state, RESUME, -1, -1, 1 if settle[2] > 1 else 0, active,
                           velocity_before, ev)  # fmt: skip
             _slide_rate(active, mode, work.contact[SLIP_VELOCITY], rates)
