@@ -165,7 +165,9 @@ S_ZENO = S_REMEDY + len(FAILURES)
 #: Events of the current burst (:func:`_in_burst`); the stretches begun by bursts since the
 #: last quiet spell; the least steps of the current stretch (:func:`_stretch_length`)
 S_BURST, S_BURST_STRETCHES, S_STRETCH_LENGTH = S_ZENO + 1, S_ZENO + 2, S_ZENO + 3
-S_SIZE = S_ZENO + 4
+#: Impacts in a row on a moving support whose next flight stays within the gap tolerance
+S_LOW_FLIGHTS = S_ZENO + 4
+S_SIZE = S_ZENO + 5
 
 # --- float state vector layout -----------------------------------------------------------------
 F_TIME, F_MAX_PENETRATION, F_MAX_PROJECTION = range(3)
@@ -199,6 +201,12 @@ STRETCH_STEPS = 20
 #: stall guard takes first).
 BURST_INTERVAL = STRETCH_STEPS * STEPPING_STEP
 BURST_EVENTS = 200
+#: While the support moves, an interface lands after more than this many impacts in a row
+#: whose next flight stays within the gap tolerance (:func:`_settle`). At the default
+#: tolerances a homogeneous block settling on a rigid base has at most about 36 such
+#: flights in a row (from a flight of 0.1 micrometre to an impact slower than the velocity
+#: tolerance, by Housner's ratio, whatever the slenderness).
+LOW_FLIGHTS = 100
 #: The least length of a burst's stretch doubles with each burst that follows the resume
 #: of the one before without a quiet spell, up to this many times (:func:`_stretch_length`)
 BURST_DOUBLINGS = 10
@@ -991,8 +999,9 @@ def _select(model, exc, params, active, t, q, qd, slide, work, problem, istate, 
 
 
 @nb.njit(cache=True, _nrt=False)
-def _land(params, active, mode, work, problem):
-    """Close the contacts whose next flight stays within the gap tolerance; whether any.
+def _low_flight(params, mode, work, problem, i):
+    """The open contact of rocking interface ``i`` whose next flight stays within the gap
+    tolerance, or -1.
 
     After an impact, in the chosen state (``problem``: contact accelerations of
     the first state; kinematics in ``work``), a contact of a rocking interface
@@ -1000,22 +1009,41 @@ def _land(params, active, mode, work, problem):
     while its gap accelerates back at ``a < 0`` rises by ``v^2 / (2 |a|)``:
     when that is within the gap tolerance the flight, and every later one of
     the Zeno sequence it starts (each lower than the last), is below the
-    engine's resolution of a gap. ``mode`` gets the contact closed.
+    engine's resolution of a gap.
     """
+    if mode[i, 0] + mode[i, 1] != 1:
+        return -1
     tol_gap = params[P_TOL_GAP]
-    gap = work.contact[GAP]
-    gap_velocity = work.contact[GAP_VELOCITY]
+    c = 1 if mode[i, 0] == 1 else 0
+    opening = work.contact[GAP_VELOCITY][i, c]
+    falling = problem.accelerations[0, i, c]
+    if work.contact[GAP][i, c] <= tol_gap and opening > 0.0 and falling < 0.0:
+        if opening * opening <= -2.0 * falling * tol_gap:
+            return c
+    return -1
+
+
+@nb.njit(cache=True, _nrt=False)
+def _low_flights(params, active, mode, work, problem):
+    """Whether an interface's next flight stays within the gap tolerance (:func:`_low_flight`)."""
+    for i in range(active):
+        if _low_flight(params, mode, work, problem, i) >= 0:
+            return True
+    return False
+
+
+@nb.njit(cache=True, _nrt=False)
+def _land(params, active, mode, work, problem):
+    """Close the contacts whose next flight stays within the gap tolerance; whether any.
+
+    See :func:`_low_flight`; ``mode`` gets the contacts closed.
+    """
     landed = False
     for i in range(active):
-        if mode[i, 0] + mode[i, 1] != 1:
-            continue
-        c = 1 if mode[i, 0] == 1 else 0
-        opening = gap_velocity[i, c]
-        falling = problem.accelerations[0, i, c]
-        if gap[i, c] <= tol_gap and opening > 0.0 and falling < 0.0:
-            if opening * opening <= -2.0 * falling * tol_gap:
-                mode[i, c] = 1
-                landed = True
+        c = _low_flight(params, mode, work, problem, i)
+        if c >= 0:
+            mode[i, c] = 1
+            landed = True
     return landed
 
 
@@ -1156,7 +1184,10 @@ def _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, 
     ever smaller impacts converging on rest: the sequence is summed, the
     contact closed (:func:`_project`: onto both contacts, the relative velocity
     removed in the mass metric, which never raises the kinetic energy) and the
-    mode chosen again.
+    mode chosen again. While the support moves, the impacts whose next flight
+    stays within the gap tolerance are counted in a row (``S_LOW_FLIGHTS``;
+    any other impact ends the row), and after more than :data:`LOW_FLIGHTS`
+    of them the interface lands in the same way (not summed).
     """
     result[0] = NO_FAILURE
     result[1] = 0
@@ -1173,9 +1204,15 @@ def _settle(model, exc, params, active, t, q, qd, slide, work, problem, istate, 
     count = _select(
         model, exc, params, active, t, q, qd, slide, work, problem, istate, mode, directions
     )
-    if count > 0 and result[1] == IMPACT and t >= params[P_QUIET]:
+    quiet = t >= params[P_QUIET]
+    if count > 0 and result[1] == IMPACT and not quiet:
+        if _low_flights(params, active, mode, work, problem):
+            istate[S_LOW_FLIGHTS] += 1
+        else:
+            istate[S_LOW_FLIGHTS] = 0
+    if count > 0 and result[1] == IMPACT and (quiet or istate[S_LOW_FLIGHTS] > LOW_FLIGHTS):
         end = -1.0
-        if sum_to_end:
+        if sum_to_end and quiet:
             end = _zeno_end(model, exc, params, active, t, q, qd, slide, work, problem, istate,
                             mode, flags[4])  # fmt: skip
         if end >= 0.0 or _land(params, active, mode, work, problem):
