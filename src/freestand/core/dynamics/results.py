@@ -232,7 +232,8 @@ class TimeHistoryDiagnostics:
     stretches : tuple of (str, int)
         The stretches of time stepping begun, counted per cause (the
         situation each replaced: ``"contact problem inconsistent"``,
-        ``"events repeat without progress"``, ...).
+        ``"events repeat without progress"``, ``"events accumulate in a
+        burst"`` (more than 200 events, each within 2 ms of the last), ...).
     energy_ratio : float
         Largest ratio of kinetic energies after and before the contact
         impulses of a time step, ``T(v+) / T(v_f)`` [-]: at most 1 (the
@@ -248,7 +249,8 @@ class TimeHistoryDiagnostics:
         rise beyond the gap tolerance before falling back ends its sequence
         there, the interface landing on both contacts (the remaining impacts,
         each lower than the last, would accumulate within about
-        ``flight / (1 - ratio)`` [s]).
+        ``flight / (1 - ratio)`` [s]). While the support moves, an interface
+        lands likewise after more than 100 such impacts in a row.
     """
 
     time_step: float
