@@ -300,6 +300,7 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
     last, g_last, previous, g_previous = first, 0.0, math.nan, 0.0
     side = 0
     trials = 0
+    at_high = False  # the scratch and ``values`` hold the solve at the bracket's high end
     for _ in range(200):
         if high - low <= EVENT_TIME:
             break
@@ -326,12 +327,14 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
             for i in range(STATE_SIZE):
                 out[i] = trial[i]
             high = middle
+            at_high = True
             break
         if seeding:
             seeded += 1
             previous, g_previous = (last if seeded > 1 else math.nan), g_last
             last, g_last = middle, values[target] - levels[target]
             seeding = fired < 0 or fired == target  # another function fired: no more seeds
+        at_high = fired >= 0
         if fired >= 0:
             for i in range(n):
                 high_values[i] = values[i]
@@ -351,6 +354,8 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
             g_trial = values[target] - levels[target]
             low, high, g_low, g_high, side = narrowed(fired >= 0, middle, g_trial, low, high,
                                                       g_low, g_high, side)  # fmt: skip
-    # the solve at the event's state (the caller's next phase reads the scratch)
-    event_functions(par, record, dt, t + high, out, mode, data, sc, ref, values, kinds)
+    # the solve at the event's state (the caller's next phase reads the scratch), unless the
+    # last trial made it
+    if not at_high:
+        event_functions(par, record, dt, t + high, out, mode, data, sc, ref, values, kinds)
     return high, kinds[target], trials
