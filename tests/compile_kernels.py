@@ -8,6 +8,13 @@ Here the 3-D engine and the planar engines compile once, in two processes side
 by side (the 3-D engine alone takes about as long as all the planar ones), and
 the workers load them from the cache. On a warm cache this takes seconds.
 
+numba's cache checks each compiled function against its own source file only:
+a kernel that calls one in another file keeps the callee's old code after that
+file is edited (the callee is linked into the caller's cached object code), and
+the tests would run it. So compiled kernels older than the newest source of the
+numerical core are removed first (:func:`drop_stale_kernels`): after an edit of
+``core/`` everything compiles again, as on a fresh clone.
+
 Each process runs the public API (``import freestand as fs``) on the examples,
 as the README's tour does, for two seconds of a record: the kernels compile for the
 argument types the analyses pass them. Not a test: it asserts nothing, and any
@@ -62,8 +69,26 @@ def planar() -> float:
     return time.perf_counter() - start
 
 
+def drop_stale_kernels(package: Path = ROOT / "src" / "freestand") -> int:
+    """Remove numba's cache files (``.nbi``, ``.nbc``) older than the newest source of
+    ``package/core``; returns how many were removed."""
+    newest = max(path.stat().st_mtime for path in (package / "core").rglob("*.py"))
+    stale = [
+        path
+        for pattern in ("*.nbi", "*.nbc")
+        for path in package.rglob(pattern)
+        if path.stat().st_mtime < newest
+    ]
+    for path in stale:
+        path.unlink(missing_ok=True)
+    return len(stale)
+
+
 def main() -> int:
     start = time.perf_counter()
+    dropped = drop_stale_kernels()
+    if dropped:
+        print(f"{dropped} compiled kernel files older than the core's sources removed")
     with ProcessPoolExecutor(2) as pool:
         jobs = {name: pool.submit(job) for name, job in (("3-D", three_d), ("planar", planar))}
         seconds = {name: job.result() for name, job in jobs.items()}
