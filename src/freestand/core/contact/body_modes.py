@@ -48,6 +48,7 @@ from freestand.core.contact.body_kernel import (
     P_GRAVITY,
     P_HALF_X,
     P_MASS,
+    P_MU_KINETIC,
     P_SHAPE,
     POINT,
     SC_ACC,
@@ -56,9 +57,12 @@ from freestand.core.contact.body_kernel import (
     SC_CENTRE,
     SC_DIR,
     SC_INDICES,
+    SC_INV,
     SC_JACOBIAN,
     SC_KINDS,
     SC_LAM,
+    SC_NBIAS,
+    SC_NORMAL,
     SC_ONSET,
     SC_POINTS,
     SC_ROT,
@@ -69,6 +73,7 @@ from freestand.core.contact.body_kernel import (
     SC_TANGENT,
     SC_TBIAS,
     SC_TOUCHING,
+    SC_WORK,
     SHAPE_BOX,
     arm,
     corner_gap,
@@ -208,23 +213,58 @@ def _onset_consistent(along, across, size, rate_tol):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
+def _point_fixed_point(par, y, sc, level, n_normal, direction, rate_tol):
+    """A point's fixed-point iteration ``u <- s'(u) / |s'(u)|`` from ``direction``, on the
+    closed form (:func:`point_slip_terms`); 1 where it settles on a consistent onset (then
+    confirmed by a solve, which the scratch holds), -1 where D(u) = 0 (singular), else 0.
+
+    The iteration of :func:`_slip_onset`, at no solve: its 20 solves were
+    most of a point's failed onset at an impact once the scan was closed too.
+    """
+    point_slip_terms(par, sc, level)
+    terms = sc[SC_ONSET]
+    mu = par[P_MU_KINETIC]
+    for _ in range(ONSET_ITERATIONS):
+        rx, ry = point_slip_rate(terms, mu, direction[0], direction[1])
+        if not math.isfinite(rx):
+            return -1
+        size = math.hypot(rx, ry)
+        along = rx * direction[0] + ry * direction[1]
+        across = abs(ry * direction[0] - rx * direction[1])
+        if _onset_consistent(along, across, size, rate_tol):
+            along, across, size = _onset_rate(par, y, sc, level, n_normal, 2, direction)
+            return 1 if _onset_consistent(along, across, size, rate_tol) else 0
+        if size == 0.0:
+            return 0
+        direction[0] = rx / size
+        direction[1] = ry / size
+    return 0
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol):
     """Two tangential rows (a point): the onset angle by a scan and regula falsi.
 
     f(theta) = u_perp . s'(u), u = (cos theta, sin theta), changes sign at every
     direction the slip rate is parallel to; of those where it points along u
-    (kappa >= 0), the one nearest ``start`` is returned.
+    (kappa >= 0, confirmed by a solve), the one nearest ``start`` is
+    returned. f is the closed form of :func:`point_slip_terms` (no solve):
+    the 72 solves of the scan and the some 8 of each root took 450 solves
+    of each failed impact of a sliding, rocking cabinet, most of the 600
+    that showed no candidate of the impact law admissible.
     """
+    point_slip_terms(par, sc, level)
+    mu = par[P_MU_KINETIC]
     theta0 = math.atan2(start[1], start[0])
     best = -1.0
     best_theta = 0.0
     previous = 0.0
     for i in range(ONSET_SCAN + 1):
         theta = theta0 + 2.0 * math.pi * i / ONSET_SCAN
-        value = _onset_sign(par, y, sc, level, n_normal, theta, direction)
+        value = point_slip_sign(sc[SC_ONSET], mu, theta)
         if i > 0 and value * previous <= 0.0:
-            root = _onset_root(par, y, sc, level, n_normal, theta - 2.0 * math.pi / ONSET_SCAN,
-                               theta, previous, value, direction)  # fmt: skip
+            root = _onset_root(sc[SC_ONSET], mu, theta - 2.0 * math.pi / ONSET_SCAN, theta,
+                               previous, value)  # fmt: skip
             direction[0] = math.cos(root)
             direction[1] = math.sin(root)
             along, across, size = _onset_rate(par, y, sc, level, n_normal, 2, direction)
@@ -242,25 +282,95 @@ def _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _onset_sign(par, y, sc, level, n_normal, theta, direction):
-    direction[0] = math.cos(theta)
-    direction[1] = math.sin(theta)
-    _, _, size = _onset_rate(par, y, sc, level, n_normal, 2, direction)
-    if size < 0.0:
-        return math.nan
-    rate = sc[SC_SACC]
-    return -direction[1] * rate[0] + direction[0] * rate[1]
+def point_slip_terms(par, sc, level):
+    """A POINT's slip rate as a closed function of its friction's direction, in ``sc[SC_ONSET]``.
+
+    On the point's rows J (normal n, tangential x and y; the scratch's), with
+    the Delassus matrix W = J M^-1 J^T [1/kg] (``docs/nomenclature.md``;
+    Acary and Brogliato 2008, Numerical Methods for Nonsmooth Dynamical
+    Systems, ch. 5) and b the rows' rates without the contact (``J base``
+    plus the biases at the acceleration level [m/s^2]; ``J v^-`` at the
+    velocity level [m/s]),
+    the kinetic friction ``-mu N u`` and the held normal row give
+    ``N(u) = -b_n / D(u)``, ``D(u) = W_nn - mu W_nt . u``, and the slip rate
+    (acceleration, or velocity after)
+
+        s'(u) = b_t + N(u) (W_tn - mu W_tt u) = (c + K u) / D(u),
+
+    ``c = W_nn b_t - b_n W_tn``, ``K u = mu (b_n W_tt u - (W_nt . u) b_t)``:
+    what :func:`_onset_rate`'s solve gives (:func:`~freestand.core.contact.body_kernel.solve_mode`,
+    one held row), to round-off. Rows of ``sc[SC_ONSET]``: (c_x, c_y, W_nn),
+    (K_00, K_01, W_nt,x), (K_10, K_11, W_nt,y).
+    """
+    normal, nbias, tangent, tbias = sc[SC_NORMAL], sc[SC_NBIAS], sc[SC_TANGENT], sc[SC_TBIAS]
+    inv, base, q = sc[SC_INV], sc[SC_BASE], sc[SC_WORK]
+    inv_m = 1.0 / par[P_MASS]
+    # q_r = M^-1 w_r (rows 0-2 of the solve's work array, free between solves)
+    for r in range(3):
+        rows, column = (normal, 0) if r == 0 else (tangent, r - 1)
+        for i in range(3):
+            q[r, i] = rows[i, column] * inv_m
+            q[r, 3 + i] = (inv[i, 0] * rows[3, column] + inv[i, 1] * rows[4, column]
+                           + inv[i, 2] * rows[5, column])  # fmt: skip
+    use_bias = level == ACCELERATION
+    b_n = _row_dot(normal, 0, base) + (nbias[0] if use_bias else 0.0)
+    b_x = _row_dot(tangent, 0, base) + (tbias[0] if use_bias else 0.0)
+    b_y = _row_dot(tangent, 1, base) + (tbias[1] if use_bias else 0.0)
+    w_nn = _row_dot(normal, 0, q[0])
+    w_nx, w_ny = _row_dot(normal, 0, q[1]), _row_dot(normal, 0, q[2])
+    w_xn, w_yn = _row_dot(tangent, 0, q[0]), _row_dot(tangent, 1, q[0])
+    w_xx, w_xy = _row_dot(tangent, 0, q[1]), _row_dot(tangent, 0, q[2])
+    w_yx, w_yy = _row_dot(tangent, 1, q[1]), _row_dot(tangent, 1, q[2])
+    mu = par[P_MU_KINETIC]
+    terms = sc[SC_ONSET]
+    terms[0, 0] = w_nn * b_x - b_n * w_xn
+    terms[0, 1] = w_nn * b_y - b_n * w_yn
+    terms[0, 2] = w_nn
+    terms[1, 0] = mu * (b_n * w_xx - w_nx * b_x)
+    terms[1, 1] = mu * (b_n * w_xy - w_ny * b_x)
+    terms[1, 2] = w_nx
+    terms[2, 0] = mu * (b_n * w_yx - w_nx * b_y)
+    terms[2, 1] = mu * (b_n * w_yy - w_ny * b_y)
+    terms[2, 2] = w_ny
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _row_dot(rows, column, q):
+    total = 0.0
+    for i in range(6):
+        total += rows[i, column] * q[i]
+    return total
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _onset_root(par, y, sc, level, n_normal, low, high, f_low, f_high, direction):
-    """The root of :func:`_onset_sign` in [low, high] (its values there f_low, f_high, of
+def point_slip_rate(terms, mu, ux, uy):
+    """s'(u) = (c + K u) / D(u) of :func:`point_slip_terms` (``terms``) at the unit (ux, uy);
+    NaN where D(u) = 0 (the mode's system singular)."""
+    d = terms[0, 2] - mu * (terms[1, 2] * ux + terms[2, 2] * uy)
+    if d == 0.0:
+        return math.nan, math.nan
+    rx = terms[0, 0] + terms[1, 0] * ux + terms[1, 1] * uy
+    ry = terms[0, 1] + terms[2, 0] * ux + terms[2, 1] * uy
+    return rx / d, ry / d
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def point_slip_sign(terms, mu, theta):
+    """f(theta) = u_perp . s'(u) of :func:`point_slip_terms` (``terms``); NaN where D(u) = 0."""
+    ux, uy = math.cos(theta), math.sin(theta)
+    rx, ry = point_slip_rate(terms, mu, ux, uy)
+    return ux * ry - uy * rx
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _onset_root(terms, mu, low, high, f_low, f_high):
+    """The root of :func:`point_slip_sign` in [low, high] (its values there f_low, f_high, of
     opposite signs or zero) to 1e-14 rad.
 
     Regula falsi, Anderson and Bjorck's variant (BIT 12, 1972: the retained
     end's value scaled by ``1 - f_new / f_old``, else halved), bisecting
-    where a value is not finite (a singular system); some 8 solves per root
-    where bisection took 47.
+    where a value is not finite (D(u) = 0, a singular system); some 8
+    evaluations per root where bisection took 47.
     """
     if f_low == 0.0:
         return low
@@ -275,7 +385,7 @@ def _onset_root(par, y, sc, level, n_normal, low, high, f_low, f_high, direction
             middle = min(max(low - f_low * (high - low) / (f_high - f_low), low), high)
         if not low < middle < high:
             middle = 0.5 * (low + high)
-        f_mid = _onset_sign(par, y, sc, level, n_normal, middle, direction)
+        f_mid = point_slip_sign(terms, mu, middle)
         if f_mid == 0.0:
             return middle
         if f_mid * f_low < 0.0:
@@ -397,6 +507,11 @@ def _slip_onset(par, y, sc, level, n_normal, n_tangent, start, direction, rate_t
     rate = sc[SC_SACC]
     for k in range(n_tangent):
         direction[k] = start[k]
+    if n_tangent == 2:
+        settled = _point_fixed_point(par, y, sc, level, n_normal, direction, rate_tol)
+        if settled != 0:
+            return settled > 0
+        return _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol)
     for _ in range(ONSET_ITERATIONS):
         along, across, size = _onset_rate(par, y, sc, level, n_normal, n_tangent, direction)
         if size < 0.0:
@@ -407,8 +522,6 @@ def _slip_onset(par, y, sc, level, n_normal, n_tangent, start, direction, rate_t
             break
         for k in range(n_tangent):
             direction[k] = rate[k] / size
-    if n_tangent == 2:
-        return _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol)
     return _onset_newton(par, y, sc, level, n_normal, _restart(start, direction), rate_tol,
                          ONSET_NEWTON)  # fmt: skip
 
