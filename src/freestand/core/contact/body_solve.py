@@ -575,9 +575,16 @@ def rate(par, record, dt, t, y, mode, data, sc, ydot):
     """y' of the held mode at (t, y); False when the mode's system is singular.
 
     ``r' = v``, ``q' = (0, omega) q / 2`` (omega in the support frame),
-    ``(v', omega') = x''``.
+    ``(v', omega') = x''``. A sticking mode is solved at its rows' centre
+    (:func:`solve_at_centre`): its accelerations are those of
+    :func:`solve_at` to the last bit, which only expresses the forces
+    about the centre of pressure after the same solve, and an integrator's
+    stage reads none of them.
     """
-    ok, _, _ = solve_at(par, record, dt, t, y, mode, data, sc)
+    if mode[M_SLIP] == 0:
+        ok, _, _ = solve_at_centre(par, record, dt, t, y, mode, data, sc)
+    else:
+        ok, _, _ = solve_at(par, record, dt, t, y, mode, data, sc)
     state_rate(y, sc[SC_ACC], ydot)
     return ok
 

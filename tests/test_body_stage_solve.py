@@ -1,0 +1,50 @@
+"""An RK4 stage of a sticking mode: solved at its rows' centre, the accelerations of the full solve.
+
+``body_solve.rate`` solves a sticking patch with ``solve_at_centre`` (its
+rows at the patch's geometric centre) instead of ``solve_at``, which after
+the same solve expresses the friction about the centre of pressure
+(``centre_stick_friction``); a stage reads the accelerations only, and they
+must be those of ``solve_at`` to the last bit (the engine's runs are then
+unchanged), for a box's face, edges and corners and a cylinder's base and
+rim point, in any state.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from freestand.core.body import Body, Box, Cylinder
+from freestand.core.contact import body_kernel, body_solve
+from freestand.core.model import Friction
+
+BOX = Body("cabinet", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.5, 0.5))
+CYLINDER = Body("cask", Cylinder(1.7, 6.0), 1.8e5, Friction(0.3, 0.3))
+RECORD = np.array([[1.5, -2.0], [0.8, 2.5], [1.0, -0.5]])  # a_x, a_y, a_v at t = 0, 1 s
+PATCHES = [(BOX, body_kernel.FACE, 0)] + [(BOX, body_kernel.EDGE, k) for k in range(4)]
+PATCHES += [(BOX, body_kernel.POINT, k) for k in range(4)]
+PATCHES += [(CYLINDER, body_kernel.FACE, 0), (CYLINDER, body_kernel.POINT, 0)]
+
+
+@pytest.mark.parametrize(("body", "kind", "index"), PATCHES)
+def test_a_sticking_stage_has_the_full_solves_accelerations(body, kind, index):
+    par = body_kernel.body_parameters(body, 9.81, 1.0)
+    rng = np.random.default_rng(7 + 10 * kind + index)
+    for _ in range(20):
+        y = np.zeros(body_kernel.STATE_SIZE)
+        y[0:3] = rng.normal(0.0, 0.3, 3) + (0.0, 0.0, 1.0)
+        q = np.array([1.0, 0.0, 0.0, 0.0]) + rng.normal(0.0, 0.2, 4)
+        y[3:7] = q / np.linalg.norm(q)
+        y[7:13] = rng.normal(0.0, 0.5, 6)
+        mode = np.array([kind, index, 0], dtype=np.int64)
+        data = np.zeros(body_kernel.DATA_SIZE)
+        data[body_kernel.D_PSI] = rng.uniform(-np.pi, np.pi)
+        full, centre = body_kernel.new_scratch(), body_kernel.new_scratch()
+        ok_full, *_ = body_solve.solve_at(par, RECORD, 1.0, 0.4, y, mode, data, full)
+        ok_centre, *_ = body_solve.solve_at_centre(par, RECORD, 1.0, 0.4, y, mode, data, centre)
+        assert ok_full == ok_centre
+        acc_full, acc_centre = full[body_kernel.SC_ACC], centre[body_kernel.SC_ACC]
+        assert np.array_equal(acc_full, acc_centre)  # to the last bit
+        ydot = np.zeros(body_kernel.STATE_SIZE)
+        body_solve.rate(par, RECORD, 1.0, 0.4, y, mode, data, body_kernel.new_scratch(), ydot)
+        assert np.array_equal(ydot[7:13], acc_full)
