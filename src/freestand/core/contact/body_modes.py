@@ -249,9 +249,9 @@ def _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol):
     direction the slip rate is parallel to; of those where it points along u
     (kappa >= 0, confirmed by a solve), the one nearest ``start`` is
     returned. f is the closed form of :func:`point_slip_terms` (no solve):
-    the 72 solves of the scan and the some 8 of each root took 450 solves
-    of each failed impact of a sliding, rocking cabinet, most of the 600
-    that showed no candidate of the impact law admissible.
+    the 73 solves of the scan and the some 8 of each root took 170-230 of
+    the 550-610 solves of a sliding, rocking cabinet's impact at which no
+    candidate of the impact law was admissible (two touching corners).
     """
     point_slip_terms(par, sc, level)
     mu = par[P_MU_KINETIC]
