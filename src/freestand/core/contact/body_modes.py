@@ -75,6 +75,7 @@ from freestand.core.contact.body_kernel import (
     SC_TOUCHING,
     SC_WORK,
     SHAPE_BOX,
+    apply_inverse_mass,
     arm,
     corner_gap,
     cross,
@@ -215,13 +216,13 @@ def _onset_consistent(along, across, size, rate_tol):
 @kernel(cache=True, error_model="numpy", _nrt=False)
 def _point_fixed_point(par, y, sc, level, n_normal, direction, rate_tol):
     """A point's fixed-point iteration ``u <- s'(u) / |s'(u)|`` from ``direction``, on the
-    closed form (:func:`point_slip_terms`); 1 where it settles on a consistent onset (then
-    confirmed by a solve, which the scratch holds), -1 where D(u) = 0 (singular), else 0.
+    closed form (:func:`point_slip_terms`, in the scratch); 1 where it settles on a
+    consistent onset (then confirmed by a solve, which the scratch holds), -1 where
+    D(u) = 0 (singular), else 0.
 
     The iteration of :func:`_slip_onset`, at no solve: its 20 solves were
     most of a point's failed onset at an impact once the scan was closed too.
     """
-    point_slip_terms(par, sc, level)
     terms = sc[SC_ONSET]
     mu = par[P_MU_KINETIC]
     for _ in range(ONSET_ITERATIONS):
@@ -251,9 +252,9 @@ def _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol):
     returned. f is the closed form of :func:`point_slip_terms` (no solve):
     the 73 solves of the scan and the some 8 of each root took 170-230 of
     the 550-610 solves of a sliding, rocking cabinet's impact at which no
-    candidate of the impact law was admissible (two touching corners).
+    candidate of the impact law was admissible (two touching corners). The
+    terms must be in the scratch.
     """
-    point_slip_terms(par, sc, level)
     mu = par[P_MU_KINETIC]
     theta0 = math.atan2(start[1], start[0])
     best = -1.0
@@ -303,24 +304,28 @@ def point_slip_terms(par, sc, level):
     (K_00, K_01, W_nt,x), (K_10, K_11, W_nt,y).
     """
     normal, nbias, tangent, tbias = sc[SC_NORMAL], sc[SC_NBIAS], sc[SC_TANGENT], sc[SC_TBIAS]
-    inv, base, q = sc[SC_INV], sc[SC_BASE], sc[SC_WORK]
-    inv_m = 1.0 / par[P_MASS]
-    # q_r = M^-1 w_r (rows 0-2 of the solve's work array, free between solves)
+    inv, base, work = sc[SC_INV], sc[SC_BASE], sc[SC_WORK]
+    # q_r = M^-1 w_r in rows 0-2 of the solve's work array (free between solves), w_r in 3-5
+    q = work[0:3]
     for r in range(3):
         rows, column = (normal, 0) if r == 0 else (tangent, r - 1)
-        for i in range(3):
-            q[r, i] = rows[i, column] * inv_m
-            q[r, 3 + i] = (inv[i, 0] * rows[3, column] + inv[i, 1] * rows[4, column]
-                           + inv[i, 2] * rows[5, column])  # fmt: skip
+        for i in range(6):
+            work[3 + r, i] = rows[i, column]
+        apply_inverse_mass(par, inv, work[3 + r], q[r])
     use_bias = level == ACCELERATION
-    b_n = _row_dot(normal, 0, base) + (nbias[0] if use_bias else 0.0)
-    b_x = _row_dot(tangent, 0, base) + (tbias[0] if use_bias else 0.0)
-    b_y = _row_dot(tangent, 1, base) + (tbias[1] if use_bias else 0.0)
-    w_nn = _row_dot(normal, 0, q[0])
-    w_nx, w_ny = _row_dot(normal, 0, q[1]), _row_dot(normal, 0, q[2])
-    w_xn, w_yn = _row_dot(tangent, 0, q[0]), _row_dot(tangent, 1, q[0])
-    w_xx, w_xy = _row_dot(tangent, 0, q[1]), _row_dot(tangent, 0, q[2])
-    w_yx, w_yy = _row_dot(tangent, 1, q[1]), _row_dot(tangent, 1, q[2])
+    b_n = _row_rate(normal, nbias, 0, base, False) + (nbias[0] if use_bias else 0.0)
+    b_x = _row_rate(tangent, tbias, 0, base, False) + (tbias[0] if use_bias else 0.0)
+    b_y = _row_rate(tangent, tbias, 1, base, False) + (tbias[1] if use_bias else 0.0)
+    # W_rs = w_r . q_s, the rows' responses to each other's unit multipliers
+    w_nn = _row_rate(normal, nbias, 0, q[0], False)
+    w_nx = _row_rate(normal, nbias, 0, q[1], False)
+    w_ny = _row_rate(normal, nbias, 0, q[2], False)
+    w_xn = _row_rate(tangent, tbias, 0, q[0], False)
+    w_yn = _row_rate(tangent, tbias, 1, q[0], False)
+    w_xx = _row_rate(tangent, tbias, 0, q[1], False)
+    w_xy = _row_rate(tangent, tbias, 0, q[2], False)
+    w_yx = _row_rate(tangent, tbias, 1, q[1], False)
+    w_yy = _row_rate(tangent, tbias, 1, q[2], False)
     mu = par[P_MU_KINETIC]
     terms = sc[SC_ONSET]
     terms[0, 0] = w_nn * b_x - b_n * w_xn
@@ -332,14 +337,6 @@ def point_slip_terms(par, sc, level):
     terms[2, 0] = mu * (b_n * w_yx - w_nx * b_y)
     terms[2, 1] = mu * (b_n * w_yy - w_ny * b_y)
     terms[2, 2] = w_ny
-
-
-@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
-def _row_dot(rows, column, q):
-    total = 0.0
-    for i in range(6):
-        total += rows[i, column] * q[i]
-    return total
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -508,6 +505,7 @@ def _slip_onset(par, y, sc, level, n_normal, n_tangent, start, direction, rate_t
     for k in range(n_tangent):
         direction[k] = start[k]
     if n_tangent == 2:
+        point_slip_terms(par, sc, level)
         settled = _point_fixed_point(par, y, sc, level, n_normal, direction, rate_tol)
         if settled != 0:
             return settled > 0

@@ -562,7 +562,8 @@ def solve_at_centre(par, record, dt, t, y, mode, data, sc):
 
     The multipliers are then linear in the applied load (the rest phase's
     unit solutions, ``body_engine.rest_prepare``); :func:`centre_stick_friction`
-    expresses their friction about the centre of pressure. Returns
+    expresses their friction about the centre of pressure. The accelerations
+    are :func:`solve_at`'s to the last bit (an RK4 stage's solve, :func:`rate`). Returns
     (ok, normal rows, tangential rows).
     """
     n_normal, n_tangent = prepare_held(par, record, dt, t, y, mode, data, sc)
