@@ -13,6 +13,12 @@ run time): 126 s, the same runs to the last bit, 1-2 % slower (the cabinet's, th
 and the slender cylinder's 10 s records, alternated, best of 15). Compiling *every*
 argument for its type took 145 s and made the runs 30-50 % slower: the other constants
 are worth their specialisations.
+
+No fast-math flags are set. ``contract`` alone (fused multiply-adds, rounded once) made
+the 3-D benchmark's three bodies 4-5 % faster, but a run's last bits then depended on
+whether its kernels were compiled in the process or loaded from numba's cache (LLVM fuses
+after inlining, which differs between the two): a resumed campaign's rows no longer
+equalled an uninterrupted one's (``tests/test_body_fragility.py``).
 """
 
 from __future__ import annotations
