@@ -295,16 +295,16 @@ def test_a_sliding_edge_s_share_map_is_its_full_solve_s(tilt, yaw, velocity, pus
     body_solve.edge_slide_terms(par, y, sc, True)
     direction = np.zeros(3)
     quick = body_solve.edge_share(par, sc, 2, share, direction, True, data)
-    # the solution the settled search takes from the same 2 x 2 system (body_solve._edge_solution)
-    rho_share = bk.effective_twist_radius(par, bk.EDGE, 2, *_edge_point(par, share))
-    closed = body_solve._edge_solution(par, sc, share, rho_share, sc[bk.SC_DIR].copy())
-    closed_acc, closed_lam = sc[bk.SC_ACC].copy(), sc[bk.SC_LAM].copy()
+    quick_direction = sc[bk.SC_DIR].copy()
     ax, ay = bk.box_corner(par, 2)
     bx, by = bk.box_corner(par, 3)
     centre = sc[bk.SC_CENTRE]
     centre[0], centre[1] = ax + share * (bx - ax), ay + share * (by - ay)
     centre[2] = bk.effective_twist_radius(par, bk.EDGE, 2, centre[0], centre[1])
     bk.tangent_rows(par, y, sc)
+    # the solution the settled search takes from the same 2 x 2 system (body_solve._edge_solution)
+    closed = body_solve._edge_solution(par, sc, share, quick_direction)
+    closed_acc, closed_lam = sc[bk.SC_ACC].copy(), sc[bk.SC_LAM].copy()
     u = np.zeros(3)
     body_solve.slip_direction(y, n_tangent, data, sc[bk.SC_TANGENT], np.zeros(3), u)
     assert bk.solve_mode(par, sc, sc[bk.SC_BASE], True, 1, u, n_normal, n_tangent,
@@ -319,13 +319,6 @@ def test_a_sliding_edge_s_share_map_is_its_full_solve_s(tilt, yaw, velocity, pus
         assert math.isnan(quick) or total > 0.0  # no centre of pressure
         return
     assert quick == pytest.approx(min(max(lam[1] / total, 0.0), 1.0), abs=1e-9)
-
-
-def _edge_point(par, share):
-    """The point at ``share`` along edge 2 (body frame x, y [m])."""
-    ax, ay = bk.box_corner(par, 2)
-    bx, by = bk.box_corner(par, 3)
-    return ax + share * (bx - ax), ay + share * (by - ay)
 
 
 def test_a_sliding_edge_settles_at_its_centre_of_pressure():

@@ -61,6 +61,7 @@ from freestand.core.contact.body_kernel import (
     SC_TANGENT,
     SC_WORK,
     SHAPE_BOX,
+    apply_inverse_mass,
     box_corner,
     centre_stick_friction,
     cross,
@@ -372,10 +373,10 @@ def _slide_edge(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_ta
         share = following
     _edge_centre(par, index, share, ax, ay, bx, by, centre)
     tangent_rows(par, y, sc)
-    if abs(g) <= tolerance and kinetic:  # settled at the share last tried: its system's solution
-        return _edge_solution(par, sc, share, centre[2], sc[SC_DIR])
-    if abs(g) <= tolerance:
-        return _edge_solution(par, sc, share, centre[2], direction)
+    if abs(g) <= tolerance:  # settled at the share last tried: its system gives the solution
+        if kinetic:
+            return _edge_solution(par, sc, share, sc[SC_DIR])
+        return _edge_solution(par, sc, share, direction)
     return _solve_at_rows(par, y, sc, use_bias, 1, direction, kinetic, stored, n_normal,
                           n_tangent)  # fmt: skip
 
@@ -483,39 +484,32 @@ def _edge_normals(par, edge, share, rho, u):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _edge_solution(par, sc, share, rho, u):
+def _edge_solution(par, sc, share, u):
     """A sliding EDGE's solution at the share its search settled on, from its 2 x 2 system.
 
     The corner forces N_r of :func:`_edge_normals`, then ``x'' = base +
     sum_r N_r (q_r - mu M^-1 G)`` with ``q_r = M^-1 w_r``
-    (:func:`edge_slide_terms`) and G the generalised force of the unit
-    friction ``u`` at the point at ``share`` (its arm the corners' blend,
-    twist radius rho [m]): what :func:`~freestand.core.contact.body_kernel.solve_mode`
-    gives on the EDGE's rows there, to round-off, without assembling and
-    solving them again. Fills ``sc[SC_ACC]`` and ``sc[SC_LAM]`` as it does;
-    False where the system is singular.
+    (:func:`edge_slide_terms`) and ``G = sum_k u_k t_k`` the generalised force
+    of the unit friction ``u`` on the tangential rows t_k, which the scratch
+    holds at the friction centre there (``sc[SC_CENTRE]``, :func:`tangent_rows`):
+    what :func:`~freestand.core.contact.body_kernel.solve_mode` gives on the
+    EDGE's rows, to round-off, without assembling and solving them again.
+    Fills ``sc[SC_ACC]`` and ``sc[SC_LAM]`` as it does; False where the system
+    is singular.
     """
-    det, first, second = _edge_normals(par, sc[SC_EDGE], share, rho, u)
+    det, first, second = _edge_normals(par, sc[SC_EDGE], share, sc[SC_CENTRE][2], u)
     if det == 0.0:
         return False
     n0, n1 = first / det, second / det
-    arms, q, inv, base = sc[SC_ARMS], sc[SC_WORK], sc[SC_INV], sc[SC_BASE]
-    dx = arms[0, 0] + share * (arms[1, 0] - arms[0, 0])
-    dy = arms[0, 1] + share * (arms[1, 1] - arms[0, 1])
-    dz = arms[0, 2] + share * (arms[1, 2] - arms[0, 2])
-    gx, gy, gz = cross(dx, dy, dz, u[0], u[1], 0.0)  # the friction's moment at G
-    gz += rho * u[2]
-    mu = par[P_MU_KINETIC]
-    total = n0 + n1
-    friction = mu * total
-    acc, lam = sc[SC_ACC], sc[SC_LAM]
-    inv_m = 1.0 / par[P_MASS]
-    acc[0] = base[0] + n0 * q[0, 0] + n1 * q[1, 0] - friction * u[0] * inv_m
-    acc[1] = base[1] + n0 * q[0, 1] + n1 * q[1, 1] - friction * u[1] * inv_m
-    acc[2] = base[2] + n0 * q[0, 2] + n1 * q[1, 2]
-    for i in range(3):
-        turn = inv[i, 0] * gx + inv[i, 1] * gy + inv[i, 2] * gz
-        acc[3 + i] = base[3 + i] + n0 * q[0, 3 + i] + n1 * q[1, 3 + i] - friction * turn
+    tangent, work = sc[SC_TANGENT], sc[SC_WORK]
+    q, force, response = work[0:2], work[6], work[7]  # the solve's work rows 6 and 7 are free
+    for i in range(6):
+        force[i] = u[0] * tangent[i, 0] + u[1] * tangent[i, 1] + u[2] * tangent[i, 2]
+    apply_inverse_mass(par, sc[SC_INV], force, response)
+    friction = par[P_MU_KINETIC] * (n0 + n1)
+    acc, lam, base = sc[SC_ACC], sc[SC_LAM], sc[SC_BASE]
+    for i in range(6):
+        acc[i] = base[i] + n0 * q[0, i] + n1 * q[1, i] - friction * response[i]
     lam[0], lam[1] = n0, n1
     for k in range(3):
         lam[2 + k] = -friction * u[k]
