@@ -266,12 +266,12 @@ def _clear_before(par, out, mode, sc, ref, n, values, kinds, levels, target, rat
     ``EVENT_TIME`` with the trial, which stays the event's state: where a
     seeded trial falls just past the crossing, the bracket closes without
     the trial before it that the regula falsi needs (a rocking cabinet's
-    impacts: 3.1 RK4 trials per event before). Other gaps fired with the
+    events: 2.3 RK4 trials each, 3.1 without it). Other gaps fired with the
     target (an edge's two corners landing together, to round-off) lie in the
     same bracket, as a trial of the regula falsi before the crossing would
     find them. The force margins are not checked before the trial, as no
-    trial checks them between trials. ``rate_`` and
-    ``back`` (``STATE_SIZE``,) are work space; the scratch's rotation and
+    trial checks them between trials. ``rate_`` and ``back``
+    (``STATE_SIZE``,) are work space; the scratch's rotation and
     ``values`` are left as they were at the trial.
     """
     for i in range(n):
