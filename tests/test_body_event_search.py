@@ -16,6 +16,7 @@ about two RK4 trials each where the regula falsi alone took nine.
 from __future__ import annotations
 
 import math
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -72,26 +73,35 @@ def _free_fall(tilt, speed):
     return par, y
 
 
+def _falling(tilt, speed):
+    """:func:`_free_fall` with the kernel's work arrays, its event functions at the start
+    (``count`` of them in ``values``), their rate in ``k[0]`` and the landing's time [s]."""
+    par, y = _free_fall(tilt, speed)
+    fall = SimpleNamespace(
+        par=par, y=y, record=np.zeros((3, 2)), mode=np.array([bk.FREE, 0, 0], dtype=np.int64),
+        data=np.zeros(bk.DATA_SIZE), sc=bk.new_scratch(), ref=np.zeros(step.REF_SIZE),
+        values=np.zeros(step.MAX_EVENT_FUNCTIONS),
+        kinds=np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64), k=np.zeros((5, bk.STATE_SIZE)),
+        # 1 mm = speed t + g t^2 / 2
+        landing=(-speed + math.sqrt(speed**2 + 2.0 * G * 1e-3)) / G,
+    )  # fmt: skip
+    fall.count = step.event_functions(par, fall.record, 1.0, 0.0, y, fall.mode, fall.data,
+                                      fall.sc, fall.ref, fall.values, fall.kinds)  # fmt: skip
+    body_solve.state_rate(y, fall.sc[bk.SC_ACC], fall.k[0])
+    return fall
+
+
 @settings(max_examples=30, deadline=None)
 @given(st.floats(0.01, 0.3), st.floats(0.0, 0.5), st.floats(0.3, 1.0))
 def test_a_free_fall_s_landing_is_found_on_the_interpolant(tilt, speed, fraction):
     """A body in free flight with no spin falls as a point: its corners' gaps are quadratic
     in time, the interpolant's gap is exact and so its crossing is the landing itself."""
-    par, y = _free_fall(tilt, speed)
-    record = np.zeros((3, 2))
-    mode = np.array([bk.FREE, 0, 0], dtype=np.int64)
-    data = np.zeros(bk.DATA_SIZE)
-    sc = bk.new_scratch()
-    ref = np.zeros(step.REF_SIZE)
-    values = np.zeros(step.MAX_EVENT_FUNCTIONS)
-    kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
-    k = np.zeros((5, bk.STATE_SIZE))
-    # the landing: 1 mm = speed t + g t^2 / 2
-    landing = (-speed + math.sqrt(speed**2 + 2.0 * G * 1e-3)) / G
+    fall = _falling(tilt, speed)
+    par, y, record, mode, data, sc = fall.par, fall.y, fall.record, fall.mode, fall.data, fall.sc
+    ref, values, kinds, k, count = fall.ref, fall.values, fall.kinds, fall.k, fall.count
+    landing = fall.landing
     h = landing / fraction  # the step ends at or past the landing
-    count = step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
     start = values[:count].copy()
-    body_solve.state_rate(y, sc[bk.SC_ACC], k[0])
     end = np.zeros(bk.STATE_SIZE)
     step._rk4(par, record, 1.0, 0.0, h, y, mode, data, sc, k, end)
     step.event_functions(par, record, 1.0, h, end, mode, data, sc, ref, values, kinds)
@@ -137,19 +147,11 @@ def test_the_back_step_brackets_a_landing_from_just_past_it(tilt, speed, fractio
     """A free fall's landing (its time known): from an RK4 state a fraction of BACK_STEP past
     it the back step finds the state before it clear, and from one more than BACK_STEP past
     it not; the scratch's rotation and the functions' values are left as at the trial."""
-    par, y = _free_fall(tilt, speed)
-    record = np.zeros((3, 2))
-    mode = np.array([bk.FREE, 0, 0], dtype=np.int64)
-    data = np.zeros(bk.DATA_SIZE)
-    sc = bk.new_scratch()
-    ref = np.zeros(step.REF_SIZE)
-    values = np.zeros(step.MAX_EVENT_FUNCTIONS)
-    kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
-    k = np.zeros((5, bk.STATE_SIZE))
-    landing = (-speed + math.sqrt(speed**2 + 2.0 * G * 1e-3)) / G
-    count = step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
+    fall = _falling(tilt, speed)
+    par, y, record, mode, data, sc = fall.par, fall.y, fall.record, fall.mode, fall.data, fall.sc
+    ref, values, kinds, k, count = fall.ref, fall.values, fall.kinds, fall.k, fall.count
+    landing = fall.landing
     levels = np.zeros(step.MAX_EVENT_FUNCTIONS)  # every gap starts 1 mm up: its level is zero
-    body_solve.state_rate(y, sc[bk.SC_ACC], k[0])
     out = np.zeros(bk.STATE_SIZE)
     results = []
     for past in (fraction * events.BACK_STEP, 1.2 * events.BACK_STEP):
