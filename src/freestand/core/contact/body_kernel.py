@@ -603,12 +603,16 @@ def tangential_velocity(y, tangent, n_tangent, out):
 def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, acc, lam):
     """Solve the contact problem of one mode on the scratch's rows; False when singular.
 
-    A sticking POINT (a rim point rolling, a corner held) by its closed
-    form (:func:`solve_sticking_point`), any other mode on its rows
-    (:func:`solve_held_rows`); arguments and results as the latter's.
+    A sticking POINT (a rim point rolling, a corner held) and a sliding
+    FACE (a flat base sliding) by their closed forms
+    (:func:`solve_sticking_point`, :func:`solve_sliding_face`), any other
+    mode on its rows (:func:`solve_held_rows`); arguments and results as the
+    latter's.
     """
     if slip == 0 and n_normal == 1 and n_tangent == 2:
         return solve_sticking_point(par, sc, base, use_bias, acc, lam)
+    if slip == 1 and n_normal == 3:
+        return solve_sliding_face(par, sc, base, use_bias, direction, acc, lam)
     return solve_held_rows(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, acc,
                            lam)  # fmt: skip
 
@@ -668,6 +672,78 @@ def solve_sticking_point(par, sc, base, use_bias, acc, lam):
                       + rhs[2] * work[9, 3 + i])  # fmt: skip
     for k in range(3):
         lam[k] = rhs[k]
+    return True
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def solve_sliding_face(par, sc, base, use_bias, direction, acc, lam):
+    """A sliding FACE's contact problem by elimination of its normal force; False if singular.
+
+    The FACE's normal rows (:func:`patch_rows`) are the base centre's
+    vertical velocity ``w_0 = (e_z, c)``, ``c = d x e_z`` (d the base
+    centre's arm, ``c_z = 0``), and the tilt rates ``w_1 = (0, e_x)``,
+    ``w_2 = (0, e_y)``. Its multipliers N, M_x, M_y act through ``g_0 = w_0
+    - mu sum_k u_k t_k`` (the friction ``-mu N u`` on the tangential rows
+    t_k, which carry no vertical force) and ``g_1 = (0, e_x)``, ``g_2 = (0,
+    e_y)``, each with its twist from the centre of pressure's offset
+    (:func:`face_offset_torques`). Only g_0 has a vertical force, so the
+    combination ``w_0 - c_x w_1 - c_y w_2 = (e_z, 0)`` of the held rows
+    gives N alone, and the tilt rows then the couples:
+
+        N = m (r_0 - c_x r_1 - c_y r_2),
+        [(A g_1)_x (A g_2)_x; (A g_1)_y (A g_2)_y] (M_x, M_y) = (r_1, r_2) - N ((A g_0)_x, (A g_0)_y)
+
+    with ``A = I_w^-1`` (the scratch's inverse inertia) on the rotational
+    parts and ``r_k = -(w_k . base + b_k)`` (the biases ``b_k`` at the
+    acceleration level, ``use_bias``). What :func:`solve_held_rows` gives on
+    the same rows by Cramer's rule on the 3 x 3 system, to round-off, with a
+    2 x 2 one (:func:`solve_small`). ``direction`` is u (u_x, u_y, u_t);
+    ``acc = base + N M^-1 g_0 + M_x M^-1 g_1 + M_y M^-1 g_2``; ``lam`` holds
+    (N, M_x, M_y, -mu N u) [N, N m, or N s and N m s at the velocity level].
+    """
+    inv, normal, nbias, tangent = sc[SC_INV], sc[SC_NORMAL], sc[SC_NBIAS], sc[SC_TANGENT]
+    matrix, rhs = sc[SC_MATRIX], sc[SC_RHS]
+    mu = par[P_MU_KINETIC]
+    mass = par[P_MASS]
+    c_x, c_y = normal[3, 0], normal[4, 0]
+    r0 = -(base[2] + c_x * base[3] + c_y * base[4])
+    r1 = -base[3]
+    r2 = -base[4]
+    if use_bias:
+        r0 -= nbias[0]
+        r1 -= nbias[1]
+        r2 -= nbias[2]
+    n = mass * (r0 - c_x * r1 - c_y * r2)
+    t0, t1, t2 = face_offset_torques(sc, mu, direction)
+    # g_0's force (-mu u_x, -mu u_y, 1) and couple: c minus the friction's moment, and the twist
+    g3 = c_x - mu * (direction[0] * tangent[3, 0] + direction[1] * tangent[3, 1]
+                     + direction[2] * tangent[3, 2])  # fmt: skip
+    g4 = c_y - mu * (direction[0] * tangent[4, 0] + direction[1] * tangent[4, 1]
+                     + direction[2] * tangent[4, 2])  # fmt: skip
+    g5 = normal[5, 0] + t0 - mu * (direction[0] * tangent[5, 0] + direction[1] * tangent[5, 1]
+                                   + direction[2] * tangent[5, 2])  # fmt: skip
+    a0 = (inv[0, 0] * g3 + inv[0, 1] * g4 + inv[0, 2] * g5,
+          inv[1, 0] * g3 + inv[1, 1] * g4 + inv[1, 2] * g5,
+          inv[2, 0] * g3 + inv[2, 1] * g4 + inv[2, 2] * g5)  # fmt: skip
+    # A g_1 and A g_2: A's columns x and y, each with the twist t1, t2 of A's column z
+    a1 = (inv[0, 0] + t1 * inv[0, 2], inv[1, 0] + t1 * inv[1, 2], inv[2, 0] + t1 * inv[2, 2])
+    a2 = (inv[0, 1] + t2 * inv[0, 2], inv[1, 1] + t2 * inv[1, 2], inv[2, 1] + t2 * inv[2, 2])
+    matrix[0, 0], matrix[0, 1] = a1[0], a2[0]
+    matrix[1, 0], matrix[1, 1] = a1[1], a2[1]
+    rhs[0] = r1 - n * a0[0]
+    rhs[1] = r2 - n * a0[1]
+    if not solve_small(matrix, rhs, 2):
+        return False
+    m_x, m_y = rhs[0], rhs[1]
+    inv_m = 1.0 / mass
+    acc[0] = base[0] - n * mu * direction[0] * inv_m
+    acc[1] = base[1] - n * mu * direction[1] * inv_m
+    acc[2] = base[2] + n * inv_m
+    for i in range(3):
+        acc[3 + i] = base[3 + i] + n * a0[i] + m_x * a1[i] + m_y * a2[i]
+    lam[0], lam[1], lam[2] = n, m_x, m_y
+    for k in range(3):
+        lam[3 + k] = -mu * n * direction[k]
     return True
 
 

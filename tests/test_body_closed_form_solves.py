@@ -1,0 +1,122 @@
+"""The closed-form solves of two modes against the general one on their rows (#18).
+
+``solve_mode`` solves a sticking POINT (a cylinder's rim point rolling, a
+box's corner held) from the point's Delassus matrix
+(``body_kernel.solve_sticking_point``), and a sliding FACE (a flat base
+sliding and twisting, its friction at its centre of pressure) by
+eliminating its normal force (``body_kernel.solve_sliding_face``), rather
+than on their rows in general (``solve_held_rows``). Each must agree with
+the general solve to round-off for any body, state and load, at the
+acceleration level and at the velocity level (an impact).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from freestand.core.body import Body, Box, Cylinder
+from freestand.core.contact import body_kernel as bk
+from freestand.core.model import Friction
+
+G = 9.81
+BODIES = (
+    Body("box", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.5, 0.5)),
+    Body("off-centre box", Box((0.4, 1.3, 0.8)), 25.0, Friction(0.9, 0.7), (0.05, -0.2, 0.3)),
+    Body("cylinder", Cylinder(0.4, 3.0), 2000.0, Friction(0.5, 0.5)),
+    Body("hollow cask", Cylinder(1.7, 6.0, 1.2), 1.8e5, Friction(0.3, 0.3)),
+)
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    st.integers(0, len(BODIES) - 1), st.integers(0, 3), st.integers(0, 2**32 - 1),
+    st.booleans(),
+)  # fmt: skip
+def test_a_sticking_point_is_solved_as_on_its_rows(which, corner, seed, acceleration):
+    body = BODIES[which]
+    par = bk.body_parameters(body, G)
+    rng = np.random.default_rng(seed)
+    y = np.zeros(bk.STATE_SIZE)
+    quaternion = rng.normal(size=4)
+    y[3:7] = quaternion / np.linalg.norm(quaternion)
+    y[7:10] = rng.normal(size=3)
+    y[10:13] = rng.normal(size=3) * 3.0
+    record = rng.normal(size=(3, 2)) * 5.0  # a support acceleration [m/s^2]
+    psi = float(rng.uniform(-np.pi, np.pi))  # a cylinder's rim point
+    sc = bk.new_scratch()
+    bk.prepare(par, record, 1.0, 0.5, y, bk.POINT, corner, psi, sc)
+    # the acceleration level from M^-1 f_0, the velocity level from the velocity before
+    base = sc[bk.SC_BASE].copy() if acceleration else y[7:13].copy()
+    results = []
+    for closed in (True, False):
+        acc, lam = np.zeros(6), np.zeros(6)
+        if closed:
+            ok = bk.solve_sticking_point(par, sc, base, acceleration, acc, lam)
+        else:
+            ok = bk.solve_held_rows(par, sc, base, acceleration, 0, np.zeros(3), 1, 2, acc, lam)
+        assert ok
+        results.append((acc, lam[:3]))
+    (acc, lam), (acc_rows, lam_rows) = results
+    # tolerance: round-off of the two orders of the same products, relative to the largest
+    # term (the accelerations or velocities, the forces or impulses)
+    scale = np.max(np.abs(acc_rows)) + np.max(np.abs(base)) + G
+    np.testing.assert_allclose(acc, acc_rows, rtol=0.0, atol=1e-12 * scale)
+    np.testing.assert_allclose(lam, lam_rows, rtol=0.0, atol=1e-12 * np.max(np.abs(lam_rows)))
+    # the held rows: the point's acceleration (or velocity after) is zero along z, x and y
+    rows = np.column_stack([sc[bk.SC_NORMAL][:, 0], sc[bk.SC_TANGENT][:, :2]])
+    bias = np.array([sc[bk.SC_NBIAS][0], *sc[bk.SC_TBIAS][:2]]) if acceleration else 0.0
+    np.testing.assert_allclose(rows.T @ acc + bias, 0.0, atol=1e-11 * scale)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(0, len(BODIES) - 1), st.integers(0, 2**32 - 1), st.booleans(), st.booleans())
+def test_a_sliding_face_is_solved_as_on_its_rows(which, seed, acceleration, flat):
+    body = BODIES[which]
+    par = bk.body_parameters(body, G)
+    rng = np.random.default_rng(seed)
+    y = np.zeros(bk.STATE_SIZE)
+    if flat:  # a yaw only, as a FACE slides; otherwise any attitude (the algebra holds for any)
+        yaw = rng.uniform(-np.pi, np.pi)
+        y[3:7] = np.cos(yaw / 2), 0.0, 0.0, np.sin(yaw / 2)
+    else:
+        quaternion = rng.normal(size=4)
+        y[3:7] = quaternion / np.linalg.norm(quaternion)
+    y[7:10] = rng.normal(size=3)
+    y[10:13] = rng.normal(size=3) * 3.0
+    record = rng.normal(size=(3, 2)) * 5.0  # a support acceleration [m/s^2]
+    sc = bk.new_scratch()
+    bk.prepare(par, record, 1.0, 0.5, y, bk.FACE, 0, 0.0, sc)
+    # the friction centre somewhere on the base, off its centre (the CoP's twist terms)
+    centre = sc[bk.SC_CENTRE]
+    centre[0], centre[1] = rng.uniform(-0.9, 0.9, size=2) * par[bk.P_HALF_X : bk.P_HALF_Y + 1]
+    centre[2] = bk.effective_twist_radius(par, bk.FACE, 0, centre[0], centre[1])
+    bk.tangent_rows(par, y, sc)
+    direction = rng.normal(size=3)
+    direction /= np.linalg.norm(direction)
+    base = sc[bk.SC_BASE].copy() if acceleration else y[7:13].copy()
+    results = []
+    for closed in (True, False):
+        acc, lam = np.zeros(6), np.zeros(6)
+        if closed:
+            ok = bk.solve_sliding_face(par, sc, base, acceleration, direction, acc, lam)
+        else:
+            ok = bk.solve_held_rows(par, sc, base, acceleration, 1, direction, 3, 3, acc, lam)
+        assert ok
+        results.append((acc, lam))
+    (acc, lam), (acc_rows, lam_rows) = results
+    # tolerance: round-off of an elimination against Cramer's rule on the same 3 x 3 system,
+    # relative to the largest term (the accelerations or velocities; N and its couples, whose
+    # lever arms are the base's half-widths)
+    scale = np.max(np.abs(acc_rows)) + np.max(np.abs(base)) + G
+    np.testing.assert_allclose(acc, acc_rows, rtol=0.0, atol=1e-11 * scale)
+    force = abs(lam_rows[0]) + np.max(np.abs(lam_rows[1:3])) / par[bk.P_HALF_X]
+    np.testing.assert_allclose(lam[0], lam_rows[0], rtol=0.0, atol=1e-11 * force)
+    np.testing.assert_allclose(lam[1:3], lam_rows[1:3], rtol=0.0,
+                               atol=1e-11 * force * par[bk.P_HALF_X])  # fmt: skip
+    np.testing.assert_allclose(lam[3:6], lam_rows[3:6], rtol=0.0, atol=1e-11 * force)
+    # the held rows: the base centre's vertical acceleration and the tilt rates' vanish
+    rows = sc[bk.SC_NORMAL][:, :3]
+    bias = sc[bk.SC_NBIAS][:3] if acceleration else 0.0
+    np.testing.assert_allclose(rows.T @ acc + bias, 0.0, atol=1e-10 * scale)
