@@ -328,6 +328,21 @@ def _point_row(y, d, e0, e1, e2, column, rows, bias, k):
 
     ``w = (e, d x e)``, bias ``e . (omega x (omega x d))`` plus ``column``.
     """
+    _point_row_at(d, e0, e1, e2, centripetal(y, d), column, rows, bias, k)
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def centripetal(y, d):
+    """``omega x (omega x d)`` [m/s^2]: the centripetal acceleration of the point at arm d."""
+    wx, wy, wz = y[10], y[11], y[12]
+    ux, uy, uz = cross(wx, wy, wz, d[0], d[1], d[2])
+    return cross(wx, wy, wz, ux, uy, uz)
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _point_row_at(d, e0, e1, e2, acceleration, column, rows, bias, k):
+    """:func:`_point_row` with the point's centripetal acceleration given (:func:`centripetal`):
+    the rows of one point along several axes compute it once."""
     rows[0, k] = e0
     rows[1, k] = e1
     rows[2, k] = e2
@@ -335,9 +350,7 @@ def _point_row(y, d, e0, e1, e2, column, rows, bias, k):
     rows[3, k] = tx
     rows[4, k] = ty
     rows[5, k] = tz
-    wx, wy, wz = y[10], y[11], y[12]
-    ux, uy, uz = cross(wx, wy, wz, d[0], d[1], d[2])
-    cx, cy, cz = cross(wx, wy, wz, ux, uy, uz)
+    cx, cy, cz = acceleration
     bias[k] = e0 * cx + e1 * cy + e2 * cz + column
 
 
@@ -410,9 +423,10 @@ def patch_rows(par, y, sc, kind, index, cos_psi, sin_psi):
             zt, xt, yt = rim_terms(par, y, rot, cos_psi, sin_psi)
         for i in range(3):
             d[i] = arms[0, i]
-        _point_row(y, arms[0], 0.0, 0.0, 1.0, zt, normal, nbias, 0)
-        _point_row(y, d, 1.0, 0.0, 0.0, xt, tangent, tbias, 0)
-        _point_row(y, d, 0.0, 1.0, 0.0, yt, tangent, tbias, 1)
+        acceleration = centripetal(y, d)
+        _point_row_at(d, 0.0, 0.0, 1.0, acceleration, zt, normal, nbias, 0)
+        _point_row_at(d, 1.0, 0.0, 0.0, acceleration, xt, tangent, tbias, 0)
+        _point_row_at(d, 0.0, 1.0, 0.0, acceleration, yt, tangent, tbias, 1)
         return row_counts(POINT)
     if kind == EDGE:
         ax, ay = box_corner(par, index)
@@ -450,8 +464,9 @@ def tangent_rows(par, y, sc):
     """
     centre, tangent, tbias, d = sc[SC_CENTRE], sc[SC_TANGENT], sc[SC_TBIAS], sc[SC_ARMS][3]
     arm(par, sc[SC_ROT], centre[0], centre[1], 0.0, d)
-    _point_row(y, d, 1.0, 0.0, 0.0, 0.0, tangent, tbias, 0)
-    _point_row(y, d, 0.0, 1.0, 0.0, 0.0, tangent, tbias, 1)
+    acceleration = centripetal(y, d)
+    _point_row_at(d, 1.0, 0.0, 0.0, acceleration, 0.0, tangent, tbias, 0)
+    _point_row_at(d, 0.0, 1.0, 0.0, acceleration, 0.0, tangent, tbias, 1)
     _angular_row(0.0, 0.0, centre[2], tangent, tbias, 2)
 
 
@@ -691,7 +706,8 @@ def solve_sliding_face(par, sc, base, use_bias, direction, acc, lam):
     gives N alone, and the tilt rows then the couples:
 
         N = m (r_0 - c_x r_1 - c_y r_2),
-        [(A g_1)_x (A g_2)_x; (A g_1)_y (A g_2)_y] (M_x, M_y) = (r_1, r_2) - N ((A g_0)_x, (A g_0)_y)
+        [(A g_1)_x (A g_2)_x; (A g_1)_y (A g_2)_y] (M_x, M_y)
+            = (r_1, r_2) - N ((A g_0)_x, (A g_0)_y)
 
     with ``A = I_w^-1`` (the scratch's inverse inertia) on the rotational
     parts and ``r_k = -(w_k . base + b_k)`` (the biases ``b_k`` at the
@@ -1093,6 +1109,26 @@ def pivot_direction(par, rot, kind, psi_stored, sc):
     if c * cos_stored + n * sin_stored < 0.0:
         return -c, -n
     return c, n
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def store_lowest_rim_angle(rot, psi_stored, sc):
+    """:func:`lowest_rim_angle`, its cosine and sine kept for :func:`stored_direction`.
+
+    Tilted, they are the rotation's ``-(R_31, R_32) / sin(tilt)`` (equal to
+    ``cos psi`` and ``sin psi`` to round-off), not computed again from the
+    angle: a rolling cylinder stores a new angle at every step.
+    """
+    s = sin_tilt(rot)
+    if s <= PIVOT_LEAN:
+        return psi_stored
+    psi = math.atan2(-rot[2, 1], -rot[2, 0])
+    rim = sc[SC_RIM]
+    rim[0] = 1.0
+    rim[1] = psi
+    rim[2] = -rot[2, 0] / s
+    rim[3] = -rot[2, 1] / s
+    return psi
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)

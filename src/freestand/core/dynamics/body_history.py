@@ -501,7 +501,7 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
                 low, high = min(low, height), max(high, height)
             lowest[i], highest[i] = low, high
         else:
-            reach = radius * math.hypot(r20, r21)
+            reach = radius * math.sqrt(r20 * r20 + r21 * r21)
             lowest[i], highest[i] = bz - reach, bz + reach
         if rates.shape[1] > 0:
             _row_rates(row, rot, centre, slide[i, 0], slide[i, 1], rates, i)

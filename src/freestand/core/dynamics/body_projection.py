@@ -47,6 +47,7 @@ from freestand.core.contact.body_kernel import (
 )
 from freestand.core.contact.body_solve import prepare_held
 from freestand.core.contact.compiled import kernel
+from freestand.core.contact.vectors import norm2
 from freestand.core.dynamics.body_step import (
     PLANAR_PASS,
     _normalise,
@@ -81,7 +82,7 @@ def lean_comes_flat(par, y, mode, sc):
     if ex * ux + ey * uy >= 0.0:
         return False
     # the distance at which the lean passes the vertical, |e_h x e_h'| / |e_h'|
-    return abs(ex * uy - ey * ux) > PLANAR_PASS * PIVOT_LEAN * math.hypot(ux, uy)
+    return abs(ex * uy - ey * ux) > PLANAR_PASS * PIVOT_LEAN * norm2(ux, uy)
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -121,7 +122,7 @@ def _level_edge(par, y, rot, index, probe):
     g0, _ = corner_gap(par, y, rot, index, a)
     g1, _ = corner_gap(par, y, rot, (index + 1) % 4, b)
     ux, uy = b[0] - a[0], b[1] - a[1]
-    length = math.hypot(ux, uy)
+    length = norm2(ux, uy)
     if length > 0.0 and g1 != g0:
         nx, ny = -uy / length, ux / length
         phi = (g1 - g0) / length  # -(g1 - g0) / (n x u)_z, (n x u)_z = -|u_h|

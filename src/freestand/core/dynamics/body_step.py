@@ -49,13 +49,13 @@ from freestand.core.contact.body_kernel import (
     cross,
     friction_margin,
     kinetic_energy,
-    lowest_rim_angle,
     normal_margin,
     pivot_direction,
     rotation_matrix,
     row_acceleration,
     row_counts,
     sin_tilt,
+    store_lowest_rim_angle,
     stored_direction,
     support_acceleration,
     tangential_velocity,
@@ -63,7 +63,7 @@ from freestand.core.contact.body_kernel import (
 from freestand.core.contact.body_solve import rate, solve_at, state_rate
 from freestand.core.contact.compiled import kernel
 from freestand.core.contact.slip_law import SLIP_FLOOR
-from freestand.core.contact.vectors import leading_length
+from freestand.core.contact.vectors import leading_length, norm2
 
 MAX_EVENT_FUNCTIONS = 8
 REF_SIZE = 6  # a step's references (:func:`references`): slip direction, pivot, stop speed
@@ -194,7 +194,7 @@ def references(par, record, dt, t, y, mode, data, sc, ref, stop_speed, solved=Fa
     if mode[M_KIND] == POINT and par[P_SHAPE] != SHAPE_BOX:
         # the step's pivot: the lowest rim point (kept on its side within the step)
         held_cos, held_sin = pivot_direction(par, rot, POINT, data[D_PSI], sc)  # the solve's
-        psi = lowest_rim_angle(rot, data[D_PSI])
+        psi = store_lowest_rim_angle(rot, data[D_PSI], sc)
         data[D_PSI] = psi
         cos_psi, sin_psi = pivot_direction(par, rot, POINT, psi, sc)
         solved = solved and cos_psi == held_cos and sin_psi == held_sin
@@ -207,7 +207,7 @@ def references(par, record, dt, t, y, mode, data, sc, ref, stop_speed, solved=Fa
         arm(par, rot, 0.0, 0.0, 0.0, c)
         px = d[0] - c[0]
         py = d[1] - c[1]
-        size = math.hypot(px, py)
+        size = norm2(px, py)
         ref[3] = px / size
         ref[4] = py / size
     if mode[M_SLIP] == 0:
