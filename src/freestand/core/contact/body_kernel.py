@@ -647,6 +647,10 @@ def solve_sticking_point(par, sc, base, use_bias, acc, lam):
     Systems, ch. 5), ``W lam = -(w_k . base + b_k)`` (``b_k`` the rows'
     biases at the acceleration level, ``use_bias``), and ``acc = base +
     (lam_e / m, sum_k lam_k A c_k)`` with lam_e the force along (x, y, z).
+    W is symmetric positive definite, its pivots at least 1/m: it is solved
+    by ``L D L^T`` without pivoting or square roots
+    (:func:`freestand.core.contact.engine.solve_symmetric_in_place`), and by
+    :func:`solve_small` only where round-off found a pivot not positive.
     What :func:`solve_held_rows` gives on the same rows, to round-off, at
     half its products: a rolling cylinder's stages (its most frequent
     solve) took 8 % less time. ``lam`` holds (N, f_x, f_y) [N, or N s at
@@ -668,16 +672,12 @@ def solve_sticking_point(par, sc, base, use_bias, acc, lam):
         for i in range(6):
             total += rows[i, column] * base[i]
         rhs[k] = -total
-    for r in range(3):
-        for j in range(r, 3):
-            entry = (work[r, 0] * work[7 + j, 3] + work[r, 1] * work[7 + j, 4]
-                     + work[r, 2] * work[7 + j, 5])  # fmt: skip
-            if r == j:
-                entry += inv_m
-            matrix[r, j] = entry
-            matrix[j, r] = entry
-    if not solve_small(matrix, rhs, 3):
-        return False
+    _point_delassus(work, inv_m, matrix)
+    # W is symmetric positive definite (its pivots at least 1 / m): L D L^T, no square root
+    if not solve_symmetric_in_place(matrix, rhs, 3):
+        _point_delassus(work, inv_m, matrix)
+        if not solve_small(matrix, rhs, 3):
+            return False
     # the force along x (row 1), y (row 2) and z (row 0)
     acc[0] = base[0] + rhs[1] * inv_m
     acc[1] = base[1] + rhs[2] * inv_m
@@ -761,6 +761,20 @@ def solve_sliding_face(par, sc, base, use_bias, direction, acc, lam):
     for k in range(3):
         lam[3 + k] = -mu * n * direction[k]
     return True
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _point_delassus(work, inv_m, matrix):
+    """W_jk = delta_jk / m + c_j . A c_k into ``matrix`` (3, 3), from :func:`solve_sticking_point`'s
+    work rows (c_k in ``work[k, 0:3]``, A c_k in ``work[7 + k, 3:6]``)."""
+    for r in range(3):
+        for j in range(r, 3):
+            entry = (work[r, 0] * work[7 + j, 3] + work[r, 1] * work[7 + j, 4]
+                     + work[r, 2] * work[7 + j, 5])  # fmt: skip
+            if r == j:
+                entry += inv_m
+            matrix[r, j] = entry
+            matrix[j, r] = entry
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
