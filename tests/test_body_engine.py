@@ -5,12 +5,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import example, given, settings
+from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact import body_kernel as bk
-from freestand.core.dynamics import body_projection
+from freestand.core.dynamics import body_engine, body_projection
+from freestand.core.dynamics.body_events import EVENT_TIME
 from freestand.core.dynamics.body_history import (
     SupportMotion3,
     body_motion,
@@ -164,7 +165,7 @@ def test_rest_ends_at_the_closed_form_threshold(body, rate, vertical, expected, 
     first = next(event for event in result.events if event[1] != "start")
     assert first[1] == kind
     # located on the affine multipliers to 1e-11 s, at the threshold: a margin fires past the
-    # admissibility slack (-1e-9 m g, reached 1e-9 g / k later), and the step is then bisected
+    # admissibility slack (-1e-9 m g, reached 1e-9 g / k later), and the step is then narrowed
     # on the margins' zero (the planar engine's single-block integrator's uplift, exactly)
     assert expected - 1e-15 <= first[0] <= expected + 1e-11
     resting = result.time < expected - 1e-6
@@ -174,6 +175,49 @@ def test_rest_ends_at_the_closed_form_threshold(body, rate, vertical, expected, 
     np.testing.assert_allclose(result.friction_force[resting],
                                body.mass * rate * result.time[resting], rtol=1e-9,
                                atol=1e-6)  # fmt: skip
+
+
+def _resting(body, record, dt):
+    """(parameters, unit solutions, scratch) of ``body`` resting flat on the support."""
+    par = bk.body_parameters(body, 9.81)
+    y = np.zeros(bk.STATE_SIZE)
+    y[3] = 1.0
+    sc = bk.new_scratch()
+    bk.prepare(par, record, dt, 0.0, y, bk.FACE, 0, 0.0, sc)
+    y[2] = -sc[bk.SC_ARMS][0][2]  # the base centre on the support
+    rest = np.zeros((4, 6))
+    mode = np.array([bk.FACE, 0, 0], dtype=np.int64)
+    body_engine.rest_prepare(par, y, mode, np.zeros(bk.DATA_SIZE), sc, rest)
+    return par, rest, sc
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.floats(1.0, 20.0), st.floats(-3.0, 3.0), st.floats(0.2, 0.8), st.booleans())
+def test_a_rest_ends_at_its_threshold_in_a_few_trials(rate, across, mu, squat):
+    # a ramp a_x = k t with a constant a_y across it: |a| is convex in t and the friction
+    # margin mu_0 m g - m |a| concave, as rest_crossing assumes. A squat cylinder slides at
+    # |a| = mu_0 g, a slender box (b_x = 0.2 m, h = 1 m) lifts at a_x = g b_x / h where its
+    # friction holds; the crossing is located to EVENT_TIME past the closed form (1e-12 s
+    # of round-off of the affine multipliers) in a few trials, where bisection took ~29
+    dt = 0.005
+    time = np.arange(0.0, 2.0 + dt / 2, dt)
+    record = np.vstack([rate * time, np.full(time.size, across), np.zeros(time.size)])
+    if squat:
+        body = Body("c", Cylinder(1.0, 0.5), 500.0, Friction(mu, mu))
+        assume(mu * 9.81 > abs(across) + 0.1)
+        expected = math.sqrt((mu * 9.81) ** 2 - across**2) / rate
+    else:
+        body = Body("b", Box((0.4, 6.0, 2.0)), 500.0, Friction(0.9, 0.9))
+        expected = 9.81 * 0.2 / 1.0 / rate
+    assume(expected < 2.0 - dt)
+    par, rest, sc = _resting(body, record, dt)
+    t = math.floor(expected / dt) * dt
+    rot, lam, centre = sc[bk.SC_ROT], sc[bk.SC_LAM], sc[bk.SC_CENTRE]
+    normal, friction = body_engine.rest_margins(par, record, dt, t + dt, rest, rot, lam, centre)
+    high, trials = body_engine.rest_crossing(par, record, dt, t, dt, rest, rot, lam, centre,
+                                             min(normal, friction))  # fmt: skip
+    assert expected - 1e-12 <= t + high <= expected + EVENT_TIME + 1e-12
+    assert trials <= 8
 
 
 def test_a_cylinder_lifting_from_flat_at_the_default_step_stays_as_small_as_at_fine_steps():
