@@ -473,7 +473,7 @@ def tangent_rows(par, y, sc):
 # --- the friction centre of a FACE or EDGE ---------------------------------------------------
 
 
-@kernel(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def effective_twist_radius(par, kind, index, cx, cy):
     """Twist radius rho [m] of a FACE or EDGE whose centre of pressure is (cx, cy).
 

@@ -64,7 +64,7 @@ def rectangle_twist_radius(half_x: float, half_y: float) -> float:
     return integral / (6.0 * p * q)
 
 
-@kernel(cache=True, error_model="numpy", _nrt=False)
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def face_twist_radius(box, half_x, half_y, rho_face, floor, cx, cy):
     """Twist radius rho [m] of a flat base whose centre of pressure is (cx, cy) [m].
 
