@@ -348,8 +348,7 @@ def rest_crossing(par, record, dt, t, h, rest, rot, lam, centre, g_high):
     trials that have not shrunk the bracket to a quarter. The bisection
     alone took some 30 evaluations per rest's end (the benchmark's sliding
     cask ends a rest 30 times in 10 s); the regula falsi takes 2 to 8.
-    Returns (the
-    high end [s from t], the trials taken).
+    Returns (the high end [s from t], the trials taken).
     """
     normal, friction = rest_margins(par, record, dt, t, rest, rot, lam, centre)
     g_low = min(normal, friction)
