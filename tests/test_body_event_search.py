@@ -162,7 +162,7 @@ def test_the_back_step_brackets_a_landing_from_just_past_it(tilt, speed, fractio
         assume(values[target] < 0.0)  # fired at the trial (the RK4 state's own round-off)
         kept_values, kept_rot = values.copy(), sc[bk.SC_ROT].copy()
         results.append(events._clear_before(par, out, mode, sc, ref, count, values, kinds,
-                                            levels, target, k[3], k[4]))  # fmt: skip
+                                            levels, k[3], k[4]))  # fmt: skip
         np.testing.assert_array_equal(values, kept_values)
         np.testing.assert_array_equal(sc[bk.SC_ROT], kept_rot)
     # tolerance: the landing's time from the closed form, to round-off (some 1e-17 s) of the

@@ -253,10 +253,9 @@ def _state_only(kind):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _clear_before(par, out, mode, sc, ref, n, values, kinds, levels, target, rate_, back):
-    """True where ``BACK_STEP`` before the trial ``out``, past the crossing of ``target`` (a
-    function of the state alone), no such function has fired, and no force margin had at
-    the trial.
+def _clear_before(par, out, mode, sc, ref, n, values, kinds, levels, rate_, back):
+    """True where ``BACK_STEP`` before the trial ``out``, past the crossing of a function of
+    the state alone, no such function has fired, and no force margin had at the trial.
 
     The state there is ``y - BACK_STEP y'`` from the trial's RK4 state y and
     its rate (the scratch's solve at it): it differs from the RK4 state at
@@ -415,8 +414,8 @@ def locate(par, record, dt, t, h, y, mode, data, sc, k, ref, start_values, count
                                                       g_low, g_high, side)  # fmt: skip
             if (fired == target and _state_only(kinds[target]) and middle - BACK_STEP > low
                     and high - low > EVENT_TIME
-                    and _clear_before(par, out, mode, sc, ref, n, values, kinds, levels, target,
-                                      k[3], k[4])):  # fmt: skip
+                    and _clear_before(par, out, mode, sc, ref, n, values, kinds, levels, k[3],
+                                      k[4])):  # fmt: skip
                 break  # the crossing lies within BACK_STEP before the trial, the event's state
     # the solve at the event's state (the caller's next phase reads the scratch), unless the
     # last trial made it
