@@ -1,11 +1,13 @@
-"""The closed-form solves of two modes against the general one on their rows (#18).
+"""The closed-form solves of three modes against the general one on their rows (#18).
 
 ``solve_mode`` solves a sticking POINT (a cylinder's rim point rolling, a
 box's corner held) from the point's Delassus matrix
-(``body_kernel.solve_sticking_point``), and a sliding FACE (a flat base
-sliding and twisting, its friction at its centre of pressure) by
-eliminating its normal force (``body_kernel.solve_sliding_face``), rather
-than on their rows in general (``solve_held_rows``). Each must agree with
+(``body_kernel.solve_sticking_point``), a sticking EDGE (a box rocking on
+it) by the null-space method on its hinge (``body_kernel.solve_sticking_edge``),
+and a sliding FACE (a flat base sliding and twisting, its friction at its
+centre of pressure) by eliminating its normal force
+(``body_kernel.solve_sliding_face``), rather than on their rows in general
+(``solve_held_rows``). Each must agree with
 the general solve to round-off for any body, state and load, at the
 acceleration level and at the velocity level (an impact).
 """
@@ -119,4 +121,54 @@ def test_a_sliding_face_is_solved_as_on_its_rows(which, seed, acceleration, flat
     # the held rows: the base centre's vertical acceleration and the tilt rates' vanish
     rows = sc[bk.SC_NORMAL][:, :3]
     bias = sc[bk.SC_NBIAS][:3] if acceleration else 0.0
+    np.testing.assert_allclose(rows.T @ acc + bias, 0.0, atol=1e-10 * scale)
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    st.integers(0, 1), st.integers(0, 3), st.integers(0, 2**32 - 1), st.booleans(), st.booleans(),
+)  # fmt: skip
+def test_a_sticking_edge_is_solved_as_on_its_rows(which, edge, seed, acceleration, on_base):
+    body = BODIES[which]  # the boxes
+    par = bk.body_parameters(body, G)
+    rng = np.random.default_rng(seed)
+    y = np.zeros(bk.STATE_SIZE)
+    if on_base:  # tilted about the edge's own axis after a yaw, as an EDGE rocks
+        ax, ay = bk.box_corner(par, edge)
+        bx, by = bk.box_corner(par, (edge + 1) % 4)
+        axis = np.array([bx - ax, by - ay, 0.0]) / np.hypot(bx - ax, by - ay)
+        yaw, tilt = rng.uniform(-np.pi, np.pi), rng.uniform(0.0, 1.2)
+        about = np.r_[np.cos(tilt / 2), np.sin(tilt / 2) * axis]  # body-frame tilt, then yaw
+        turn = np.array([np.cos(yaw / 2), 0.0, 0.0, np.sin(yaw / 2)])
+        w0, v0 = turn[0], turn[1:]
+        w1, v1 = about[0], about[1:]
+        y[3:7] = np.r_[w0 * w1 - v0 @ v1, w0 * v1 + w1 * v0 + np.cross(v0, v1)]
+    else:  # any attitude: the algebra holds for any
+        quaternion = rng.normal(size=4)
+        y[3:7] = quaternion / np.linalg.norm(quaternion)
+    y[7:10] = rng.normal(size=3)
+    y[10:13] = rng.normal(size=3) * 3.0
+    record = rng.normal(size=(3, 2)) * 5.0  # a support acceleration [m/s^2]
+    sc = bk.new_scratch()
+    bk.prepare(par, record, 1.0, 0.5, y, bk.EDGE, edge, 0.0, sc)
+    base = sc[bk.SC_BASE].copy() if acceleration else y[7:13].copy()
+    results = []
+    for closed in (True, False):
+        acc, lam = np.zeros(6), np.zeros(6)
+        if closed:
+            ok = bk.solve_sticking_edge(par, sc, base, acceleration, acc, lam)
+        else:
+            ok = bk.solve_held_rows(par, sc, base, acceleration, 0, np.zeros(3), 2, 3, acc, lam)
+        assert ok
+        results.append((acc, lam[:5]))
+    (acc, lam), (acc_rows, lam_rows) = results
+    # tolerance: round-off of the null-space method against L D L^T on the 5 x 5 system, relative
+    # to the largest term (the accelerations or velocities; the forces or impulses, the twist's
+    # over its radius, which is of the base's size)
+    scale = np.max(np.abs(acc_rows)) + np.max(np.abs(base)) + G
+    np.testing.assert_allclose(acc, acc_rows, rtol=0.0, atol=1e-11 * scale)
+    np.testing.assert_allclose(lam, lam_rows, rtol=0.0, atol=1e-10 * np.max(np.abs(lam_rows)))
+    # the held rows: the corners' vertical, the centre's horizontal and the twist rates vanish
+    rows = np.column_stack([sc[bk.SC_NORMAL][:, :2], sc[bk.SC_TANGENT][:, :3]])
+    bias = np.r_[sc[bk.SC_NBIAS][:2], sc[bk.SC_TBIAS][:3]] if acceleration else 0.0
     np.testing.assert_allclose(rows.T @ acc + bias, 0.0, atol=1e-10 * scale)

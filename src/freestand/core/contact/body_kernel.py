@@ -284,21 +284,26 @@ def applied_wrench(par, y, inv_inertia, rot, a_x, a_y, a_v, out):
     out[0] = -m * a_x
     out[1] = -m * a_y
     out[2] = -m * (par[P_GRAVITY] - a_v)
-    # I_w omega = R I R^T omega
     wx, wy, wz = y[10], y[11], y[12]
-    bx = rot[0, 0] * wx + rot[1, 0] * wy + rot[2, 0] * wz
-    by = rot[0, 1] * wx + rot[1, 1] * wy + rot[2, 1] * wz
-    bz = rot[0, 2] * wx + rot[1, 2] * wy + rot[2, 2] * wz
-    hx = par[P_INERTIA] * bx + par[P_INERTIA + 1] * by + par[P_INERTIA + 2] * bz
-    hy = par[P_INERTIA + 3] * bx + par[P_INERTIA + 4] * by + par[P_INERTIA + 5] * bz
-    hz = par[P_INERTIA + 6] * bx + par[P_INERTIA + 7] * by + par[P_INERTIA + 8] * bz
-    lx = rot[0, 0] * hx + rot[0, 1] * hy + rot[0, 2] * hz
-    ly = rot[1, 0] * hx + rot[1, 1] * hy + rot[1, 2] * hz
-    lz = rot[2, 0] * hx + rot[2, 1] * hy + rot[2, 2] * hz
+    lx, ly, lz = world_inertia_times(par, rot, wx, wy, wz)
     gx, gy, gz = cross(wx, wy, wz, lx, ly, lz)
     out[3] = -gx
     out[4] = -gy
     out[5] = -gz
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def world_inertia_times(par, rot, x, y, z):
+    """I_w v = R I R^T v [kg m^2 * v's unit] for v = (x, y, z) in the support frame, as a tuple."""
+    bx = rot[0, 0] * x + rot[1, 0] * y + rot[2, 0] * z
+    by = rot[0, 1] * x + rot[1, 1] * y + rot[2, 1] * z
+    bz = rot[0, 2] * x + rot[1, 2] * y + rot[2, 2] * z
+    hx = par[P_INERTIA] * bx + par[P_INERTIA + 1] * by + par[P_INERTIA + 2] * bz
+    hy = par[P_INERTIA + 3] * bx + par[P_INERTIA + 4] * by + par[P_INERTIA + 5] * bz
+    hz = par[P_INERTIA + 6] * bx + par[P_INERTIA + 7] * by + par[P_INERTIA + 8] * bz
+    return (rot[0, 0] * hx + rot[0, 1] * hy + rot[0, 2] * hz,
+            rot[1, 0] * hx + rot[1, 1] * hy + rot[1, 2] * hz,
+            rot[2, 0] * hx + rot[2, 1] * hy + rot[2, 2] * hz)  # fmt: skip
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -618,14 +623,18 @@ def tangential_velocity(y, tangent, n_tangent, out):
 def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, acc, lam):
     """Solve the contact problem of one mode on the scratch's rows; False when singular.
 
-    A sticking POINT (a rim point rolling, a corner held) and a sliding
-    FACE (a flat base sliding) by their closed forms
-    (:func:`solve_sticking_point`, :func:`solve_sliding_face`), any other
-    mode on its rows (:func:`solve_held_rows`); arguments and results as the
-    latter's.
+    A sticking POINT (a rim point rolling, a corner held), a sticking EDGE
+    (all five rows held: a box rocking on it) and a sliding FACE (a flat
+    base sliding) by their closed forms (:func:`solve_sticking_point`,
+    :func:`solve_sticking_edge`, :func:`solve_sliding_face`), any other mode
+    on its rows (:func:`solve_held_rows`; an EDGE whose tangential rows are
+    not held too, as a projection of a sliding one holds its normal rows
+    alone); arguments and results as the latter's.
     """
     if slip == 0 and n_normal == 1 and n_tangent == 2:
         return solve_sticking_point(par, sc, base, use_bias, acc, lam)
+    if slip == 0 and n_normal == 2 and n_tangent == 3:
+        return solve_sticking_edge(par, sc, base, use_bias, acc, lam)
     if slip == 1 and n_normal == 3:
         return solve_sliding_face(par, sc, base, use_bias, direction, acc, lam)
     return solve_held_rows(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, acc,
@@ -688,6 +697,95 @@ def solve_sticking_point(par, sc, base, use_bias, acc, lam):
     for k in range(3):
         lam[k] = rhs[k]
     return True
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def solve_sticking_edge(par, sc, base, use_bias, acc, lam):
+    """A sticking EDGE's contact problem on its hinge (null-space method); False if singular.
+
+    The EDGE's five held rows (:func:`patch_rows`) are its corners' vertical
+    velocities ``w_r = (e_z, c_r)`` (r = 0, 1), its friction centre's
+    horizontal ones ``(e_x, t_0)``, ``(e_y, t_1)`` and the twist ``(0,
+    t_2)``, ``t_2 = rho e_z``; held, they leave one motion free, the turn
+    about the edge. With x = (a, alpha) (the centre of gravity's
+    acceleration, the angular one) and g_k the rows' targets (minus their
+    biases ``b_k`` at the acceleration level, ``use_bias``; zero at the
+    velocity level), the rows give a from alpha, and on alpha
+
+        k . alpha = g_1 - g_0,   t_2 . alpha = g_4,   k = c_1 - c_0,
+
+    whose least-norm solution ``alpha_p = p k + q t_2`` (the 2 x 2 Gram
+    system G of k and t_2) and free direction ``n_alpha = k x t_2`` make
+    ``x = x_p + s n``. Gauss's principle (the constraint force
+    ``M (x - base)`` lies in the rows' span, orthogonal to n) fixes
+
+        s = n^T M (base - x_p) / n^T M n,   M = diag(m, m, m, I_w)
+
+    (the null-space method: Nocedal and Wright 2006, Numerical
+    Optimization, sec. 16.2), and the multipliers follow from the
+    constraint force ``F = M (x - base)``: the friction (T_0, T_1) = (F_x,
+    F_y), N_0 + N_1 = F_z, and (N_1, T_2) from the couple ``N_1 k + T_2
+    t_2 = F_m - T_0 t_0 - T_1 t_1 - F_z c_0`` on G again. What
+    :func:`solve_held_rows` gives on the same rows, to round-off, without
+    its 5 x 5 system: the sticking EDGE is a rocking box's most frequent
+    solve. ``lam`` holds (N_0, N_1, T_0, T_1, T_2) [N, or N s at the
+    velocity level]; False where G is singular (k parallel to t_2).
+    """
+    normal, tangent, rot = sc[SC_NORMAL], sc[SC_TANGENT], sc[SC_ROT]
+    nbias, tbias = sc[SC_NBIAS], sc[SC_TBIAS]
+    mass = par[P_MASS]
+    g0, g1, g2, g3, g4 = 0.0, 0.0, 0.0, 0.0, 0.0
+    if use_bias:
+        g0, g1, g2, g3, g4 = -nbias[0], -nbias[1], -tbias[0], -tbias[1], -tbias[2]
+    c0 = (normal[3, 0], normal[4, 0], normal[5, 0])
+    t0 = (tangent[3, 0], tangent[4, 0], tangent[5, 0])
+    t1 = (tangent[3, 1], tangent[4, 1], tangent[5, 1])
+    t2 = (tangent[3, 2], tangent[4, 2], tangent[5, 2])
+    k = (normal[3, 1] - c0[0], normal[4, 1] - c0[1], normal[5, 1] - c0[2])
+    kk, kt, tt = _dot3(k, k), _dot3(k, t2), _dot3(t2, t2)
+    det = kk * tt - kt * kt
+    if not det > 1e-12 * kk * tt:
+        return False
+    h = g1 - g0
+    p = (tt * h - kt * g4) / det
+    q = (kk * g4 - kt * h) / det
+    alpha = (p * k[0] + q * t2[0], p * k[1] + q * t2[1], p * k[2] + q * t2[2])
+    n_alpha = cross(k[0], k[1], k[2], t2[0], t2[1], t2[2])
+    # x_p and n: the rows' forces are e_x, e_y (centre) and e_z (corner 0)
+    a_p = (g2 - _dot3(t0, alpha), g3 - _dot3(t1, alpha), g0 - _dot3(c0, alpha))
+    n_a = (-_dot3(t0, n_alpha), -_dot3(t1, n_alpha), -_dot3(c0, n_alpha))
+    off_a = (base[0] - a_p[0], base[1] - a_p[1], base[2] - a_p[2])
+    off_alpha = (base[3] - alpha[0], base[4] - alpha[1], base[5] - alpha[2])
+    inertia_n = world_inertia_times(par, rot, n_alpha[0], n_alpha[1], n_alpha[2])
+    den = mass * _dot3(n_a, n_a) + _dot3(inertia_n, n_alpha)
+    if not den > 0.0:
+        return False
+    s = (mass * _dot3(n_a, off_a) + _dot3(inertia_n, off_alpha)) / den
+    for i in range(3):
+        acc[i] = a_p[i] + s * n_a[i]
+        acc[3 + i] = alpha[i] + s * n_alpha[i]
+    # the constraint force F = M (x - base): (m (s n_a - off_a), I_w (s n_alpha - off_alpha))
+    f_x = mass * (s * n_a[0] - off_a[0])
+    f_y = mass * (s * n_a[1] - off_a[1])
+    f_z = mass * (s * n_a[2] - off_a[2])
+    i_off = world_inertia_times(par, rot, off_alpha[0], off_alpha[1], off_alpha[2])
+    couple = (s * inertia_n[0] - i_off[0] - f_x * t0[0] - f_y * t1[0] - f_z * c0[0],
+              s * inertia_n[1] - i_off[1] - f_x * t0[1] - f_y * t1[1] - f_z * c0[1],
+              s * inertia_n[2] - i_off[2] - f_x * t0[2] - f_y * t1[2] - f_z * c0[2])  # fmt: skip
+    rk, rt = _dot3(couple, k), _dot3(couple, t2)
+    n_1 = (tt * rk - kt * rt) / det
+    lam[0] = f_z - n_1
+    lam[1] = n_1
+    lam[2] = f_x
+    lam[3] = f_y
+    lam[4] = (kk * rt - kt * rk) / det
+    return True
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _dot3(a, b):
+    """a . b of two 3-tuples."""
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
