@@ -452,7 +452,10 @@ def _tilt(r20, r21, r22):
     rocking excursion of 1e-6 rad peaked 4e-5 off. Below ``FLAT_TILT`` the
     tilt is the integration's round-off of a flat base, and zero.
     """
-    tilt = math.atan2(math.sqrt(r20 * r20 + r21 * r21), r22)
+    lean = math.sqrt(r20 * r20 + r21 * r21)
+    if lean <= FLAT_TILT * r22:  # atan2(lean, r22) < lean / r22: a flat base, no atan2
+        return 0.0
+    tilt = math.atan2(lean, r22)
     return tilt if tilt > FLAT_TILT else 0.0
 
 
@@ -464,12 +467,16 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
     the rim's ``radius`` [m]. The twist is unwrapped as ``numpy.unwrap``
     (a jump above pi between two states is taken the other way round).
     ``rates`` (3, K): the rates of the tilt, the slide's size and the twist
-    (:func:`_row_rates`), or (3, 0) for none.
+    (:func:`_row_rates`), or (3, 0) for none. A state equal to the one
+    before (the body at rest on the support) repeats its row.
     """
     first_x, first_y, previous = 0.0, 0.0, 0.0
     rot = np.empty((3, 3))  # body to support frame
     row = np.empty(state.shape[1])  # the state of row i (a copy: a view costs more)
     for i in range(state.shape[0]):
+        if i > 0 and _repeats(state, row, i):
+            _repeat_row(tilt, slide, twist, lowest, highest, rates, i)
+            continue
         for j in range(row.shape[0]):
             row[j] = state[i, j]
         rotation_matrix(row, rot)
@@ -507,6 +514,26 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
             _row_rates(row, rot, centre, slide[i, 0], slide[i, 1], rates, i)
 
 
+@nb.njit(cache=True, error_model="numpy", inline="always")
+def _repeats(state, row, i):
+    """Whether state i equals ``row``, the last state computed (:func:`_motion_rows`)."""
+    for j in range(row.shape[0]):
+        if state[i, j] != row[j]:
+            return False
+    return True
+
+
+@nb.njit(cache=True, error_model="numpy", inline="always")
+def _repeat_row(tilt, slide, twist, lowest, highest, rates, i):
+    """Row i of :func:`_motion_rows`'s arrays as row i - 1 (the same state)."""
+    tilt[i] = tilt[i - 1]
+    slide[i, 0], slide[i, 1] = slide[i - 1, 0], slide[i - 1, 1]
+    twist[i] = twist[i - 1]
+    lowest[i], highest[i] = lowest[i - 1], highest[i - 1]
+    for k in range(rates.shape[0] if rates.shape[1] > 0 else 0):
+        rates[k, i] = rates[k, i - 1]
+
+
 def lost_contact_depth(width: float, gap: float) -> float:
     """Depth [m] of a base point below the support past which the contact was lost.
 
@@ -541,13 +568,22 @@ def _valid_rows(time, state, lowest, depth) -> tuple[int, str]:
 
 @nb.njit(cache=True, error_model="numpy")
 def _first_invalid(state, lowest, depth):
-    """The first row whose state is not finite or whose ``lowest`` is below ``-depth``; -1."""
+    """The first row whose state is not finite or whose ``lowest`` is below ``-depth``; -1.
+
+    A row's sum is finite where its entries are (a NaN or infinity carries
+    into it); only where it is not are they read one by one (a sum may
+    overflow).
+    """
     for i in range(state.shape[0]):
         if not lowest[i] >= -depth:  # below, or NaN
             return i
+        total = 0.0
         for j in range(state.shape[1]):
-            if not math.isfinite(state[i, j]):
-                return i
+            total += state[i, j]
+        if not math.isfinite(total):
+            for j in range(state.shape[1]):
+                if not math.isfinite(state[i, j]):
+                    return i
     return -1
 
 
