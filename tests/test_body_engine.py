@@ -193,6 +193,9 @@ def _resting(body, record, dt):
 
 @settings(max_examples=60, deadline=None)
 @given(st.floats(1.0, 20.0), st.floats(-3.0, 3.0), st.floats(0.2, 0.8), st.booleans())
+# the box's threshold on a sample (t = 1.09 s = 218 dt): the margin below zero, by round-off,
+# at the step's start (bisection took 29 trials to reach it)
+@example(rate=1.8, across=0.0, mu=0.5, squat=False)
 def test_a_rest_ends_at_its_threshold_in_a_few_trials(rate, across, mu, squat):
     # a ramp a_x = k t with a constant a_y across it: |a| is convex in t and the friction
     # margin mu_0 m g - m |a| concave, as rest_crossing assumes. A squat cylinder slides at

@@ -340,8 +340,10 @@ def rest_crossing(par, record, dt, t, h, rest, rot, lam, centre, g_high):
     of zero is narrowed by Anderson and Bjorck's regula falsi
     (``regula_falsi.narrowed``) until it is ``EVENT_TIME`` wide, and the
     high end returned, as bisection gave it (where g fell below zero before
-    the step's start, within the slack, low stays there and each trial
-    bisects). g is concave over the step: the secant lands short of the
+    the step's start, within the slack, the first trial lies 0.9
+    ``EVENT_TIME`` in: below zero there too, that is the end, where
+    bisection took some 30 trials to reach the start; else the search goes
+    on from it). g is concave over the step: the secant lands short of the
     crossing and the high end's value is scaled down; each trial lies at
     least 0.45 ``EVENT_TIME`` inside the bracket, so that a trial lands
     past a crossing the secant has found; a bisection follows any four
@@ -361,7 +363,9 @@ def rest_crossing(par, record, dt, t, h, rest, rot, lam, centre, g_high):
         if trials % 4 == 0:
             bisect = bisect or high - low > 0.25 * width
             width = high - low
-        if bisect:
+        if g_low < 0.0 and trials == 1:
+            middle = 0.9 * EVENT_TIME  # below zero from the start: is it still, EVENT_TIME in?
+        elif bisect:
             middle = 0.5 * (low + high)
         else:
             middle = low + g_low * (high - low) / (g_low - g_high)
