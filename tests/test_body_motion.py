@@ -5,6 +5,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.dynamics import body_history
@@ -134,3 +136,21 @@ def test_the_rates_of_tilt_slide_and_twist_are_their_derivatives(seed):
     for values, rate in ((motion.tilt, rates[0]), (sizes, rates[1]), (motion.twist, rates[2])):
         difference = (values[3] - values[1]) / (2.0 * tau)
         assert rate[2] == pytest.approx(difference, abs=1e-6 * max(1.0, abs(difference)))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.floats(-1.0, 1.0), st.floats(-math.pi, math.pi), st.floats(-math.pi, math.pi),
+       st.floats(0.01, 2.0), st.floats(0.01, 2.0))  # fmt: skip
+def test_small_angles_and_twist_jumps_are_atan2s_to_round_off(tangent, half, turn, size, size0):
+    # the history's series (|x| <= SMALL_ANGLE_TANGENT) against atan; the twist's change
+    # between two states' (w, z) of any scale against atan2's difference, unwrapped (tolerances:
+    # two ulps of the series' Horner sum; the difference's own round-off on angles up to 2 pi)
+    x = tangent * body_history.SMALL_ANGLE_TANGENT
+    assert body_history._atan_small(x) == pytest.approx(math.atan(x), rel=4e-16, abs=1e-300)
+    w0, z0 = size0 * math.cos(half), size0 * math.sin(half)
+    w, z = size * math.cos(half + turn / 2), size * math.sin(half + turn / 2)
+    before, after = 2.0 * math.atan2(z0, w0), 2.0 * math.atan2(z, w)
+    expected = np.unwrap([before, after])[1] - before
+    assert body_history._twist_jump(w, z, w0, z0) == pytest.approx(expected, abs=4e-15)
+    # the same rotation's other quaternion (-q) turns by no twist
+    assert body_history._twist_jump(-w0, -z0, w0, z0) == pytest.approx(0.0, abs=4e-15)

@@ -455,8 +455,53 @@ def _tilt(r20, r21, r22):
     lean = math.sqrt(r20 * r20 + r21 * r21)
     if lean <= FLAT_TILT * r22:  # atan2(lean, r22) < lean / r22: a flat base, no atan2
         return 0.0
-    tilt = math.atan2(lean, r22)
+    if lean <= SMALL_ANGLE_TANGENT * r22:
+        tilt = _atan_small(lean / r22)
+    else:
+        tilt = math.atan2(lean, r22)
     return tilt if tilt > FLAT_TILT else 0.0
+
+
+#: Below this tangent an angle is :func:`_atan_small`'s series, not ``atan2`` [-].
+SMALL_ANGLE_TANGENT = 0.1
+
+
+@nb.njit(cache=True, error_model="numpy", inline="always")
+def _atan_small(x):
+    """atan(x) [rad] for ``|x| <= SMALL_ANGLE_TANGENT``: its Taylor series to x^17.
+
+    ``x (1 - x^2/3 + x^4/5 - ... + x^16/17)``; the first term left out,
+    ``x^19 / 19``, is below 1e-19 of x: ``atan2``'s value to round-off at a
+    quarter of its cost (a rolling body's history takes a tilt and a twist at
+    every row).
+    """
+    t = x * x
+    series = 1.0 / 15.0 - t / 17.0
+    for odd in (13.0, 11.0, 9.0, 7.0, 5.0, 3.0, 1.0):
+        series = 1.0 / odd - t * series
+    return x * series
+
+
+@nb.njit(cache=True, error_model="numpy", inline="always")
+def _twist_jump(w, z, w0, z0):
+    """The twist's change [rad] from a state with quaternion components (w0, z0) to (w, z).
+
+    ``2 atan2(z, w) - 2 atan2(z0, w0)`` taken in [-pi, pi) (a jump above pi
+    is taken the other way round, as ``numpy.unwrap``): where the turn is
+    small, ``2 atan(s / c)`` of the half-angles' difference (``s = z w0 - w
+    z0``, ``c = w w0 + z z0``) by :func:`_atan_small`.
+    """
+    across = z * w0 - w * z0
+    along = w * w0 + z * z0
+    if along > 0.0 and abs(across) <= SMALL_ANGLE_TANGENT * along:
+        return 2.0 * _atan_small(across / along)
+    angle, previous = 2.0 * math.atan2(z, w), 2.0 * math.atan2(z0, w0)
+    jump = angle - previous
+    if abs(jump) >= math.pi:
+        jump = (jump + math.pi) % (2.0 * math.pi) - math.pi
+        if jump == -math.pi and angle > previous:
+            jump = math.pi
+    return jump
 
 
 @nb.njit(cache=True, error_model="numpy")
@@ -470,7 +515,7 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
     (:func:`_row_rates`), or (3, 0) for none. A state equal to the one
     before (the body at rest on the support) repeats its row.
     """
-    first_x, first_y, previous = 0.0, 0.0, 0.0
+    first_x, first_y, w_before, z_before = 0.0, 0.0, 1.0, 0.0
     rot = np.empty((3, 3))  # body to support frame
     row = np.empty(state.shape[1])  # the state of row i (a copy: a view costs more)
     for i in range(state.shape[0]):
@@ -490,17 +535,9 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
             first_x, first_y = bx, by
         slide[i, 0] = bx - first_x
         slide[i, 1] = by - first_y
-        angle = 2.0 * math.atan2(state[i, 6], state[i, 3])
-        if i == 0:
-            twist[i] = 0.0
-        else:
-            jump = angle - previous
-            if abs(jump) >= math.pi:
-                jump = (jump + math.pi) % (2.0 * math.pi) - math.pi
-                if jump == -math.pi and angle > previous:
-                    jump = math.pi
-            twist[i] = twist[i - 1] + jump
-        previous = angle
+        w, z = state[i, 3], state[i, 6]
+        twist[i] = 0.0 if i == 0 else twist[i - 1] + _twist_jump(w, z, w_before, z_before)
+        w_before, z_before = w, z
         if outline.shape[0] > 0:
             low, high = math.inf, -math.inf
             for k in range(outline.shape[0]):
