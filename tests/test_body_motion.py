@@ -154,3 +154,26 @@ def test_small_angles_and_twist_jumps_are_atan2s_to_round_off(tangent, half, tur
     assert body_history._twist_jump(w, z, w0, z0) == pytest.approx(expected, abs=4e-15)
     # the same rotation's other quaternion (-q) turns by no twist
     assert body_history._twist_jump(-w0, -z0, w0, z0) == pytest.approx(0.0, abs=4e-15)
+
+
+def test_a_repeated_state_repeats_its_row():
+    # a body at rest repeats its state: its row is copied, not computed again, and must equal
+    # the row computed alone (tilt, slide, twist, base heights), before and after other states;
+    # equal to the last bit but the twist (1e-12 rad: two histories' unwrapping)
+    rng = np.random.default_rng(7)
+    states = np.tile(initial_state(BOX), (6, 1))
+    for i in (1, 4):
+        quaternion = rng.normal(size=4)
+        states[i, 3:7] = quaternion / np.linalg.norm(quaternion)
+        states[i, :3] += rng.normal(size=3)
+    states = states[[0, 1, 1, 1, 4, 4, 0]]  # runs of equal states
+    together = body_motion(BOX, states)
+    for i in range(states.shape[0]):
+        alone = body_motion(BOX, states[[0, i]])  # the slide is from the first state
+        assert together.tilt[i] == alone.tilt[1]
+        np.testing.assert_array_equal(together.slide[i], alone.slide[1])
+        assert together.lowest[i] == alone.lowest[1] and together.highest[i] == alone.highest[1]
+        # the twist is unwrapped along the history: the same angle, to whole turns
+        assert math.remainder(together.twist[i] - alone.twist[1], 2 * math.pi) == pytest.approx(
+            0.0, abs=1e-12
+        )
