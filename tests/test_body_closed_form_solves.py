@@ -31,6 +31,25 @@ BODIES = (
 )
 
 
+def _moving(rng, y):
+    """Random velocities in the state y [m/s, rad/s] (its attitude the caller's); a random
+    support acceleration [m/s^2], as a record of two samples."""
+    y[7:10] = rng.normal(size=3)
+    y[10:13] = rng.normal(size=3) * 3.0
+    return rng.normal(size=(3, 2)) * 5.0
+
+
+def _closed_and_general(closed, general):
+    """((acc, lam) of the closed-form solve, (acc, lam) of the general one); each solve is a
+    function of the arrays it fills, and must succeed."""
+    results = []
+    for solve in (closed, general):
+        acc, lam = np.zeros(6), np.zeros(6)
+        assert solve(acc, lam)
+        results.append((acc, lam))
+    return results
+
+
 @settings(max_examples=200, deadline=None)
 @given(
     st.integers(0, len(BODIES) - 1), st.integers(0, 3), st.integers(0, 2**32 - 1),
@@ -43,24 +62,19 @@ def test_a_sticking_point_is_solved_as_on_its_rows(which, corner, seed, accelera
     y = np.zeros(bk.STATE_SIZE)
     quaternion = rng.normal(size=4)
     y[3:7] = quaternion / np.linalg.norm(quaternion)
-    y[7:10] = rng.normal(size=3)
-    y[10:13] = rng.normal(size=3) * 3.0
-    record = rng.normal(size=(3, 2)) * 5.0  # a support acceleration [m/s^2]
+    record = _moving(rng, y)
     psi = float(rng.uniform(-np.pi, np.pi))  # a cylinder's rim point
     sc = bk.new_scratch()
     bk.prepare(par, record, 1.0, 0.5, y, bk.POINT, corner, psi, sc)
     # the acceleration level from M^-1 f_0, the velocity level from the velocity before
     base = sc[bk.SC_BASE].copy() if acceleration else y[7:13].copy()
-    results = []
-    for closed in (True, False):
-        acc, lam = np.zeros(6), np.zeros(6)
-        if closed:
-            ok = bk.solve_sticking_point(par, sc, base, acceleration, acc, lam)
-        else:
-            ok = bk.solve_held_rows(par, sc, base, acceleration, 0, np.zeros(3), 1, 2, acc, lam)
-        assert ok
-        results.append((acc, lam[:3]))
-    (acc, lam), (acc_rows, lam_rows) = results
+    (acc, lam), (acc_rows, lam_rows) = _closed_and_general(
+        lambda acc, lam: bk.solve_sticking_point(par, sc, base, acceleration, acc, lam),
+        lambda acc, lam: bk.solve_held_rows(
+            par, sc, base, acceleration, 0, np.zeros(3), 1, 2, acc, lam
+        ),
+    )
+    lam, lam_rows = lam[:3], lam_rows[:3]
     # tolerance: round-off of the two orders of the same products, relative to the largest
     # term (the accelerations or velocities, the forces or impulses)
     scale = np.max(np.abs(acc_rows)) + np.max(np.abs(base)) + G
@@ -85,9 +99,7 @@ def test_a_sliding_face_is_solved_as_on_its_rows(which, seed, acceleration, flat
     else:
         quaternion = rng.normal(size=4)
         y[3:7] = quaternion / np.linalg.norm(quaternion)
-    y[7:10] = rng.normal(size=3)
-    y[10:13] = rng.normal(size=3) * 3.0
-    record = rng.normal(size=(3, 2)) * 5.0  # a support acceleration [m/s^2]
+    record = _moving(rng, y)
     sc = bk.new_scratch()
     bk.prepare(par, record, 1.0, 0.5, y, bk.FACE, 0, 0.0, sc)
     # the friction centre somewhere on the base, off its centre (the CoP's twist terms)
@@ -98,16 +110,12 @@ def test_a_sliding_face_is_solved_as_on_its_rows(which, seed, acceleration, flat
     direction = rng.normal(size=3)
     direction /= np.linalg.norm(direction)
     base = sc[bk.SC_BASE].copy() if acceleration else y[7:13].copy()
-    results = []
-    for closed in (True, False):
-        acc, lam = np.zeros(6), np.zeros(6)
-        if closed:
-            ok = bk.solve_sliding_face(par, sc, base, acceleration, direction, acc, lam)
-        else:
-            ok = bk.solve_held_rows(par, sc, base, acceleration, 1, direction, 3, 3, acc, lam)
-        assert ok
-        results.append((acc, lam))
-    (acc, lam), (acc_rows, lam_rows) = results
+    (acc, lam), (acc_rows, lam_rows) = _closed_and_general(
+        lambda acc, lam: bk.solve_sliding_face(par, sc, base, acceleration, direction, acc, lam),
+        lambda acc, lam: bk.solve_held_rows(
+            par, sc, base, acceleration, 1, direction, 3, 3, acc, lam
+        ),
+    )
     # tolerance: round-off of an elimination against Cramer's rule on the same 3 x 3 system,
     # relative to the largest term (the accelerations or velocities; N and its couples, whose
     # lever arms are the base's half-widths)
@@ -146,22 +154,17 @@ def test_a_sticking_edge_is_solved_as_on_its_rows(which, edge, seed, acceleratio
     else:  # any attitude: the algebra holds for any
         quaternion = rng.normal(size=4)
         y[3:7] = quaternion / np.linalg.norm(quaternion)
-    y[7:10] = rng.normal(size=3)
-    y[10:13] = rng.normal(size=3) * 3.0
-    record = rng.normal(size=(3, 2)) * 5.0  # a support acceleration [m/s^2]
+    record = _moving(rng, y)
     sc = bk.new_scratch()
     bk.prepare(par, record, 1.0, 0.5, y, bk.EDGE, edge, 0.0, sc)
     base = sc[bk.SC_BASE].copy() if acceleration else y[7:13].copy()
-    results = []
-    for closed in (True, False):
-        acc, lam = np.zeros(6), np.zeros(6)
-        if closed:
-            ok = bk.solve_sticking_edge(par, sc, base, acceleration, acc, lam)
-        else:
-            ok = bk.solve_held_rows(par, sc, base, acceleration, 0, np.zeros(3), 2, 3, acc, lam)
-        assert ok
-        results.append((acc, lam[:5]))
-    (acc, lam), (acc_rows, lam_rows) = results
+    (acc, lam), (acc_rows, lam_rows) = _closed_and_general(
+        lambda acc, lam: bk.solve_sticking_edge(par, sc, base, acceleration, acc, lam),
+        lambda acc, lam: bk.solve_held_rows(
+            par, sc, base, acceleration, 0, np.zeros(3), 2, 3, acc, lam
+        ),
+    )
+    lam, lam_rows = lam[:5], lam_rows[:5]
     # tolerance: round-off of the null-space method against L D L^T on the 5 x 5 system, relative
     # to the largest term (the accelerations or velocities; the forces or impulses, the twist's
     # over its radius, which is of the base's size)
