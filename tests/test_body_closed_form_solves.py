@@ -1,7 +1,7 @@
 """The closed-form solves of three modes against the general one on their rows (#18).
 
 ``solve_mode`` solves a sticking POINT (a cylinder's rim point rolling, a
-box's corner held) from the point's Delassus matrix
+box's corner held) about the point, on its inertia there
 (``body_kernel.solve_sticking_point``), a sticking EDGE (a box rocking on
 it) by the null-space method on its hinge (``body_kernel.solve_sticking_edge``),
 and a sliding FACE (a flat base sliding and twisting, its friction at its

@@ -212,12 +212,25 @@ def rotation_matrix(y, out):
 
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def world_inverse_inertia(par, rot, out):
-    """I_w^-1 = R I^-1 R^T (3, 3) [1/(kg m^2)]: T = R I^-1, then T R^T (symmetric)."""
+    """I_w^-1 = R I^-1 R^T (3, 3) [1/(kg m^2)] (:func:`rotated_tensor`)."""
+    rotated_tensor(par, P_INVERSE, rot, out)
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def world_inertia(par, rot, out):
+    """I_w = R I R^T (3, 3) [kg m^2] (:func:`rotated_tensor`)."""
+    rotated_tensor(par, P_INERTIA, rot, out)
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def rotated_tensor(par, offset, rot, out):
+    """R S R^T (3, 3) of the body-frame tensor S in ``par[offset:offset + 9]`` (row-major):
+    T = R S, then T R^T (S symmetric, so is the result)."""
     for i in range(3):
         r0, r1, r2 = rot[i, 0], rot[i, 1], rot[i, 2]
-        t0 = r0 * par[P_INVERSE] + r1 * par[P_INVERSE + 3] + r2 * par[P_INVERSE + 6]
-        t1 = r0 * par[P_INVERSE + 1] + r1 * par[P_INVERSE + 4] + r2 * par[P_INVERSE + 7]
-        t2 = r0 * par[P_INVERSE + 2] + r1 * par[P_INVERSE + 5] + r2 * par[P_INVERSE + 8]
+        t0 = r0 * par[offset] + r1 * par[offset + 3] + r2 * par[offset + 6]
+        t1 = r0 * par[offset + 1] + r1 * par[offset + 4] + r2 * par[offset + 7]
+        t2 = r0 * par[offset + 2] + r1 * par[offset + 5] + r2 * par[offset + 8]
         for j in range(i, 3):
             total = t0 * rot[j, 0] + t1 * rot[j, 1] + t2 * rot[j, 2]
             out[i, j] = total
@@ -278,7 +291,7 @@ def support_acceleration(record, dt, t):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def applied_wrench(par, y, inv_inertia, rot, a_x, a_y, a_v, out):
+def applied_wrench(par, y, rot, a_x, a_y, a_v, out):
     """f_0 = (m g_e, -omega x I_w omega) (6,) [N, N m]."""
     m = par[P_MASS]
     out[0] = -m * a_x
@@ -643,64 +656,95 @@ def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, ac
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
 def solve_sticking_point(par, sc, base, use_bias, acc, lam):
-    """A sticking POINT's contact problem from its point's Delassus matrix; False if singular.
+    """A sticking POINT's contact problem, the free solution x_0 = ``base``; False if singular.
 
-    The point's three rows ``w_k = (e_k, c_k)``, ``c_k = d x e_k`` (d its
-    arm from G, e_k the support's z, x and y: the scratch's normal row and
-    two tangential rows, :func:`patch_rows`), all held. With ``A = I_w^-1``
-    (the scratch's inverse inertia) the Delassus matrix is
-
-        W_jk = delta_jk / m + c_j . A c_k
-
-    (Acary and Brogliato 2008, Numerical Methods for Nonsmooth Dynamical
-    Systems, ch. 5), ``W lam = -(w_k . base + b_k)`` (``b_k`` the rows'
-    biases at the acceleration level, ``use_bias``), and ``acc = base +
-    (lam_e / m, sum_k lam_k A c_k)`` with lam_e the force along (x, y, z).
-    W is symmetric positive definite, its pivots at least 1/m: it is solved
-    by ``L D L^T`` without pivoting or square roots
-    (:func:`freestand.core.contact.engine.solve_symmetric_in_place`), and by
-    :func:`solve_small` only where round-off found a pivot not positive.
-    What :func:`solve_held_rows` gives on the same rows, to round-off, at
-    half its products: a rolling cylinder's stages (its most frequent
-    solve) took 8 % less time. ``lam`` holds (N, f_x, f_y) [N, or N s at
-    the velocity level].
+    :func:`sticking_point_from_force` with the generalised force ``f = M
+    x_0`` = (m a_0, I_w alpha_0): the same problem as :func:`solve_held_rows`
+    on the point's three rows, to round-off. ``lam`` holds (N, f_x, f_y) [N,
+    or N s at the velocity level].
     """
-    inv, normal, nbias, tangent, tbias = (sc[SC_INV], sc[SC_NORMAL], sc[SC_NBIAS], sc[SC_TANGENT],
-                                          sc[SC_TBIAS])  # fmt: skip
-    work, matrix, rhs = sc[SC_WORK], sc[SC_MATRIX], sc[SC_RHS]
-    inv_m = 1.0 / par[P_MASS]
-    # c_k in work[k, 0:3], A c_k in work[7 + k, 3:6], the right-hand side in rhs
-    for k in range(3):
-        rows, column, bias = (normal, 0, nbias[0]) if k == 0 else (tangent, k - 1, tbias[k - 1])
-        c0, c1, c2 = rows[3, column], rows[4, column], rows[5, column]
-        work[k, 0], work[k, 1], work[k, 2] = c0, c1, c2
-        out = work[7 + k]
-        for i in range(3):
-            out[3 + i] = inv[i, 0] * c0 + inv[i, 1] * c1 + inv[i, 2] * c2
-        total = bias if use_bias else 0.0
-        for i in range(6):
-            total += rows[i, column] * base[i]
-        rhs[k] = -total
-    _point_delassus(work, inv_m, matrix)
-    # W is symmetric positive definite (its pivots at least 1 / m): L D L^T, no square root
+    mass = par[P_MASS]
+    fx, fy, fz = world_inertia_times(par, sc[SC_ROT], base[3], base[4], base[5])
+    force = (mass * base[0], mass * base[1], mass * base[2], fx, fy, fz)
+    return sticking_point_from_force(par, sc, force, use_bias, acc, lam)
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def sticking_point_from_force(par, sc, force, use_bias, acc, lam):
+    """A sticking POINT solved about the point (a ball joint); False if singular.
+
+    The point's rows (:func:`patch_rows`: its arm d from G in ``sc[SC_ARMS][3]``,
+    the support's z, x and y with their biases b) hold its acceleration
+    ``a + alpha x d = -b`` (b zero at the velocity level, ``use_bias``
+    False), so ``a = d x alpha - b``. Gauss's principle on the free solution
+    x_0 = M^-1 f, ``f`` the 6-tuple (force [N], moment about G [N m]; at the
+    acceleration level the applied wrench f_0), leaves the turn about the
+    point:
+
+        I_P alpha = f_m + (m b + f_a) x d,   I_P = I_w + m (|d|^2 1 - d d^T)
+
+    (I_P the inertia about the point, Steiner's theorem; Featherstone 2008,
+    Rigid Body Dynamics Algorithms, sec. 2.13), then ``a = d x alpha - b``
+    and the contact force ``F = m a - f_a``: ``lam`` = (F_z, F_x, F_y) [N, or
+    N s]. I_P is symmetric positive definite: ``L D L^T`` without pivoting
+    (:func:`freestand.core.contact.engine.solve_symmetric_in_place`), and
+    :func:`solve_small` only where round-off found a pivot not positive. No
+    inverse inertia and no ``M^-1 f_0``: an RK4 stage of a rolling cylinder
+    (its most frequent solve) gives the wrench alone
+    (``body_solve.sticking_stage``).
+    """
+    rot, arms, matrix, rhs = sc[SC_ROT], sc[SC_ARMS], sc[SC_MATRIX], sc[SC_RHS]
+    nbias, tbias = sc[SC_NBIAS], sc[SC_TBIAS]
+    mass = par[P_MASS]
+    d = (arms[3, 0], arms[3, 1], arms[3, 2])
+    b = (tbias[0], tbias[1], nbias[0]) if use_bias else (0.0, 0.0, 0.0)
+    _point_inertia(par, rot, d, matrix)
+    push = (mass * b[0] + force[0], mass * b[1] + force[1], mass * b[2] + force[2])
+    mx, my, mz = cross(push[0], push[1], push[2], d[0], d[1], d[2])
+    rhs[0], rhs[1], rhs[2] = force[3] + mx, force[4] + my, force[5] + mz
     if not solve_symmetric_in_place(matrix, rhs, 3):
-        _point_delassus(work, inv_m, matrix)
+        _point_inertia(par, rot, d, matrix)
+        rhs[0], rhs[1], rhs[2] = force[3] + mx, force[4] + my, force[5] + mz
         if not solve_small(matrix, rhs, 3):
             return False
-    # the force along x (row 1), y (row 2) and z (row 0)
-    acc[0] = base[0] + rhs[1] * inv_m
-    acc[1] = base[1] + rhs[2] * inv_m
-    acc[2] = base[2] + rhs[0] * inv_m
-    for i in range(3):
-        acc[3 + i] = (base[3 + i] + rhs[0] * work[7, 3 + i] + rhs[1] * work[8, 3 + i]
-                      + rhs[2] * work[9, 3 + i])  # fmt: skip
-    for k in range(3):
-        lam[k] = rhs[k]
+    ax, ay, az = cross(d[0], d[1], d[2], rhs[0], rhs[1], rhs[2])
+    acc[0], acc[1], acc[2] = ax - b[0], ay - b[1], az - b[2]
+    acc[3], acc[4], acc[5] = rhs[0], rhs[1], rhs[2]
+    lam[0] = mass * acc[2] - force[2]
+    lam[1] = mass * acc[0] - force[0]
+    lam[2] = mass * acc[1] - force[1]
     return True
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _point_inertia(par, rot, d, matrix):
+    """I_P = I_w + m (|d|^2 1 - d d^T) (3, 3) [kg m^2] into ``matrix``: about the point at arm d."""
+    world_inertia(par, rot, matrix)
+    mass = par[P_MASS]
+    size = d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
+    for i in range(3):
+        for j in range(i, 3):
+            entry = matrix[i, j] - mass * d[i] * d[j]
+            if i == j:
+                entry += mass * size
+            matrix[i, j] = entry
+            matrix[j, i] = entry
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
 def solve_sticking_edge(par, sc, base, use_bias, acc, lam):
+    """A sticking EDGE's contact problem, the free solution x_0 = ``base``; False if singular.
+
+    :func:`sticking_edge_from_force` with ``f = M x_0`` = (m a_0, I_w alpha_0).
+    """
+    mass = par[P_MASS]
+    fx, fy, fz = world_inertia_times(par, sc[SC_ROT], base[3], base[4], base[5])
+    force = (mass * base[0], mass * base[1], mass * base[2], fx, fy, fz)
+    return sticking_edge_from_force(par, sc, force, use_bias, acc, lam)
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def sticking_edge_from_force(par, sc, force, use_bias, acc, lam):
     """A sticking EDGE's contact problem on its hinge (null-space method); False if singular.
 
     The EDGE's five held rows (:func:`patch_rows`) are its corners' vertical
@@ -716,20 +760,23 @@ def solve_sticking_edge(par, sc, base, use_bias, acc, lam):
 
     whose least-norm solution ``alpha_p = p k + q t_2`` (the 2 x 2 Gram
     system G of k and t_2) and free direction ``n_alpha = k x t_2`` make
-    ``x = x_p + s n``. Gauss's principle (the constraint force
-    ``M (x - base)`` lies in the rows' span, orthogonal to n) fixes
+    ``x = x_p + s n``. Gauss's principle on the free solution x_0 = M^-1 f
+    (``f`` the 6-tuple force [N] and moment about G [N m]; at the
+    acceleration level the applied wrench f_0): the constraint force
+    ``M x - f`` lies in the rows' span, orthogonal to n, which fixes
 
-        s = n^T M (base - x_p) / n^T M n,   M = diag(m, m, m, I_w)
+        s = n^T (f - M x_p) / n^T M n,   M = diag(m, m, m, I_w)
 
     (the null-space method: Nocedal and Wright 2006, Numerical
     Optimization, sec. 16.2), and the multipliers follow from the
-    constraint force ``F = M (x - base)``: the friction (T_0, T_1) = (F_x,
+    constraint force ``F = M x - f``: the friction (T_0, T_1) = (F_x,
     F_y), N_0 + N_1 = F_z, and (N_1, T_2) from the couple ``N_1 k + T_2
     t_2 = F_m - T_0 t_0 - T_1 t_1 - F_z c_0`` on G again. What
     :func:`solve_held_rows` gives on the same rows, to round-off, without
-    its 5 x 5 system: the sticking EDGE is a rocking box's most frequent
-    solve. ``lam`` holds (N_0, N_1, T_0, T_1, T_2) [N, or N s at the
-    velocity level]; False where G is singular (k parallel to t_2).
+    its 5 x 5 system and without the inverse inertia: the sticking EDGE is
+    a rocking box's most frequent solve. ``lam`` holds (N_0, N_1, T_0, T_1,
+    T_2) [N, or N s at the velocity level]; False where G is singular (k
+    parallel to t_2).
     """
     normal, tangent, rot = sc[SC_NORMAL], sc[SC_TANGENT], sc[SC_ROT]
     nbias, tbias = sc[SC_NBIAS], sc[SC_TBIAS]
@@ -754,24 +801,25 @@ def solve_sticking_edge(par, sc, base, use_bias, acc, lam):
     # x_p and n: the rows' forces are e_x, e_y (centre) and e_z (corner 0)
     a_p = (g2 - _dot3(t0, alpha), g3 - _dot3(t1, alpha), g0 - _dot3(c0, alpha))
     n_a = (-_dot3(t0, n_alpha), -_dot3(t1, n_alpha), -_dot3(c0, n_alpha))
-    off_a = (base[0] - a_p[0], base[1] - a_p[1], base[2] - a_p[2])
-    off_alpha = (base[3] - alpha[0], base[4] - alpha[1], base[5] - alpha[2])
+    # the residual force of x_p: f - M x_p, its moment part (f_m - I_w alpha_p)
+    off_a = (force[0] - mass * a_p[0], force[1] - mass * a_p[1], force[2] - mass * a_p[2])
+    inertia_p = world_inertia_times(par, rot, alpha[0], alpha[1], alpha[2])
+    off_m = (force[3] - inertia_p[0], force[4] - inertia_p[1], force[5] - inertia_p[2])
     inertia_n = world_inertia_times(par, rot, n_alpha[0], n_alpha[1], n_alpha[2])
     den = mass * _dot3(n_a, n_a) + _dot3(inertia_n, n_alpha)
     if not den > 0.0:
         return False
-    s = (mass * _dot3(n_a, off_a) + _dot3(inertia_n, off_alpha)) / den
+    s = (_dot3(n_a, off_a) + _dot3(n_alpha, off_m)) / den
     for i in range(3):
         acc[i] = a_p[i] + s * n_a[i]
         acc[3 + i] = alpha[i] + s * n_alpha[i]
-    # the constraint force F = M (x - base): (m (s n_a - off_a), I_w (s n_alpha - off_alpha))
-    f_x = mass * (s * n_a[0] - off_a[0])
-    f_y = mass * (s * n_a[1] - off_a[1])
-    f_z = mass * (s * n_a[2] - off_a[2])
-    i_off = world_inertia_times(par, rot, off_alpha[0], off_alpha[1], off_alpha[2])
-    couple = (s * inertia_n[0] - i_off[0] - f_x * t0[0] - f_y * t1[0] - f_z * c0[0],
-              s * inertia_n[1] - i_off[1] - f_x * t0[1] - f_y * t1[1] - f_z * c0[1],
-              s * inertia_n[2] - i_off[2] - f_x * t0[2] - f_y * t1[2] - f_z * c0[2])  # fmt: skip
+    # the constraint force F = M x - f: (s m n_a - off_a, s I_w n_alpha - off_m)
+    f_x = s * mass * n_a[0] - off_a[0]
+    f_y = s * mass * n_a[1] - off_a[1]
+    f_z = s * mass * n_a[2] - off_a[2]
+    couple = (s * inertia_n[0] - off_m[0] - f_x * t0[0] - f_y * t1[0] - f_z * c0[0],
+              s * inertia_n[1] - off_m[1] - f_x * t0[1] - f_y * t1[1] - f_z * c0[1],
+              s * inertia_n[2] - off_m[2] - f_x * t0[2] - f_y * t1[2] - f_z * c0[2])  # fmt: skip
     rk, rt = _dot3(couple, k), _dot3(couple, t2)
     n_1 = (tt * rk - kt * rt) / det
     lam[0] = f_z - n_1
@@ -859,20 +907,6 @@ def solve_sliding_face(par, sc, base, use_bias, direction, acc, lam):
     for k in range(3):
         lam[3 + k] = -mu * n * direction[k]
     return True
-
-
-@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
-def _point_delassus(work, inv_m, matrix):
-    """W_jk = delta_jk / m + c_j . A c_k into ``matrix`` (3, 3), from :func:`solve_sticking_point`'s
-    work rows (c_k in ``work[k, 0:3]``, A c_k in ``work[7 + k, 3:6]``)."""
-    for r in range(3):
-        for j in range(r, 3):
-            entry = (work[r, 0] * work[7 + j, 3] + work[r, 1] * work[7 + j, 4]
-                     + work[r, 2] * work[7 + j, 5])  # fmt: skip
-            if r == j:
-                entry += inv_m
-            matrix[r, j] = entry
-            matrix[j, r] = entry
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -1274,10 +1308,17 @@ def prepare(par, record, dt, t, y, kind, index, psi, sc):
 def prepare_load(par, record, dt, t, y, sc):
     """Inverse inertia, applied wrench and M^-1 f_0 at ``t``, at the rotation ``sc`` holds."""
     rot, inv, f0 = sc[SC_ROT], sc[SC_INV], sc[SC_F0]
+    prepare_wrench(par, record, dt, t, y, sc)
     world_inverse_inertia(par, rot, inv)
-    a_x, a_y, a_v = support_acceleration(record, dt, t)
-    applied_wrench(par, y, inv, rot, a_x, a_y, a_v, f0)
     apply_inverse_mass(par, inv, f0, sc[SC_BASE])
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def prepare_wrench(par, record, dt, t, y, sc):
+    """The applied wrench f_0 at ``t`` in ``sc[SC_F0]``, at the rotation ``sc`` holds
+    (:func:`applied_wrench`): all a solve in force form needs of the load."""
+    a_x, a_y, a_v = support_acceleration(record, dt, t)
+    applied_wrench(par, y, sc[SC_ROT], a_x, a_y, a_v, sc[SC_F0])
 
 
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)

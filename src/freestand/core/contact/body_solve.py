@@ -45,6 +45,7 @@ from freestand.core.contact.body_kernel import (
     P_MU_KINETIC,
     P_RHO_FACE,
     P_SHAPE,
+    POINT,
     RHO_FLOOR,
     SC_ACC,
     SC_ARMS,
@@ -52,6 +53,7 @@ from freestand.core.contact.body_kernel import (
     SC_CENTRE,
     SC_DIR,
     SC_EDGE,
+    SC_F0,
     SC_INV,
     SC_LAM,
     SC_NBIAS,
@@ -70,9 +72,12 @@ from freestand.core.contact.body_kernel import (
     pivot_direction,
     point_velocity,
     prepare_load,
+    prepare_wrench,
     rotation_matrix,
     scratch_rows,
     solve_mode,
+    sticking_edge_from_force,
+    sticking_point_from_force,
     tangent_rows,
     tangential_velocity,
 )
@@ -623,6 +628,30 @@ def solve_at_centre(par, record, dt, t, y, mode, data, sc):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
+def sticking_stage(par, record, dt, t, y, mode, data, sc):
+    """A sticking POINT's or EDGE's accelerations at (t, y) in ``sc[SC_ACC]``; False if singular.
+
+    Its closed form in force form (``body_kernel.sticking_point_from_force``,
+    ``sticking_edge_from_force``) on the applied wrench f_0 alone: what
+    :func:`solve_at_centre` gives to round-off without the world inverse
+    inertia and ``M^-1 f_0``, which an RK4 stage does not read (the
+    scratch's ``SC_INV`` and ``SC_BASE`` are left as they were: every
+    stage is followed by a full solve before anything reads them). The
+    stage of a rolling cylinder or a rocking box is its most frequent solve.
+    """
+    kind = mode[M_KIND]
+    rot, f0 = sc[SC_ROT], sc[SC_F0]
+    rotation_matrix(y, rot)
+    prepare_wrench(par, record, dt, t, y, sc)
+    cos_psi, sin_psi = pivot_direction(par, rot, kind, data[D_PSI], sc)
+    scratch_rows(par, y, kind, mode[M_INDEX], cos_psi, sin_psi, sc)
+    force = (f0[0], f0[1], f0[2], f0[3], f0[4], f0[5])
+    if kind == POINT:
+        return sticking_point_from_force(par, sc, force, True, sc[SC_ACC], sc[SC_LAM])
+    return sticking_edge_from_force(par, sc, force, True, sc[SC_ACC], sc[SC_LAM])
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def rate(par, record, dt, t, y, mode, data, sc, ydot):
     """y' of the held mode at (t, y); False when the mode's system is singular.
 
@@ -633,7 +662,9 @@ def rate(par, record, dt, t, y, mode, data, sc, ydot):
     about the centre of pressure after the same solve, and an integrator's
     stage reads none of them.
     """
-    if mode[M_SLIP] == 0:
+    if mode[M_SLIP] == 0 and (mode[M_KIND] == POINT or mode[M_KIND] == EDGE):
+        ok = sticking_stage(par, record, dt, t, y, mode, data, sc)
+    elif mode[M_SLIP] == 0:
         ok, _, _ = solve_at_centre(par, record, dt, t, y, mode, data, sc)
     else:
         ok, _, _ = solve_at(par, record, dt, t, y, mode, data, sc)
