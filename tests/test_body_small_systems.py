@@ -82,3 +82,35 @@ def test_held_rows_are_solved_alike_whether_symmetric_or_not(held, seed, symmetr
     assert bk._solve_held(work, matrix, b, held, symmetric)
     delassus = rows @ weights @ rows.T
     np.testing.assert_allclose(delassus @ b[:held], rhs[:held], rtol=1e-9, atol=1e-9)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(0, 2**32 - 1), st.floats(-6.0, 6.0), st.floats(0.0, 12.0))
+def test_an_inertia_about_a_point_is_solved_by_its_adjugate(seed, scale_exponent, spread):
+    """``_solve_inertia`` (a sticking point's I_P alpha = rhs): a symmetric positive
+    definite 3 x 3 system solved as by elimination, to round-off, while its determinant
+    is at least CRAMER_CONDITION of its diagonal's product; below, it declines and leaves
+    the right-hand side for ``solve_small``."""
+    rng = np.random.default_rng(seed)
+    # eigenvalues spread over up to 12 decades: from a well-conditioned inertia to a nearly
+    # singular one
+    rotation, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+    values = 10.0 ** (scale_exponent - spread * rng.uniform(size=3))
+    matrix = (rotation * values) @ rotation.T
+    matrix = 0.5 * (matrix + matrix.T)
+    rhs = rng.normal(size=3)
+    m, b = np.zeros((6, 6)), np.zeros(6)
+    m[:3, :3], b[:3] = matrix, rhs
+    ok = bk._solve_inertia(m, b)
+    ratio = np.linalg.det(matrix) / np.prod(np.diag(matrix))
+    if not ok:
+        assert ratio < 2.0 * bk.CRAMER_CONDITION  # declined only near singular
+        np.testing.assert_array_equal(b[:3], rhs)
+        return
+    assert ratio > 0.5 * bk.CRAMER_CONDITION
+    expected = np.linalg.solve(matrix, rhs)
+    # tolerance: round-off of the adjugate against elimination, relative to the condition
+    # number (at most 1e12 here: the spread of the eigenvalues) times the solution's size
+    condition = np.linalg.cond(matrix)
+    np.testing.assert_allclose(b[:3], expected, rtol=0.0,
+                               atol=1e-14 * condition * np.max(np.abs(expected)))  # fmt: skip

@@ -686,9 +686,9 @@ def sticking_point_from_force(par, sc, force, use_bias, acc, lam):
     (I_P the inertia about the point, Steiner's theorem; Featherstone 2008,
     Rigid Body Dynamics Algorithms, sec. 2.13), then ``a = d x alpha - b``
     and the contact force ``F = m a - f_a``: ``lam`` = (F_z, F_x, F_y) [N, or
-    N s]. I_P is symmetric positive definite: ``L D L^T`` without pivoting
-    (:func:`freestand.core.contact.engine.solve_symmetric_in_place`), and
-    :func:`solve_small` only where round-off found a pivot not positive. No
+    N s]. I_P is symmetric positive definite: its adjugate
+    (:func:`_solve_inertia`, one division), and :func:`solve_small` only
+    where its determinant is below ``CRAMER_CONDITION`` of Hadamard's bound. No
     inverse inertia and no ``M^-1 f_0``: an RK4 stage of a rolling cylinder
     (its most frequent solve) gives the wrench alone
     (``body_solve.sticking_stage``).
@@ -702,17 +702,43 @@ def sticking_point_from_force(par, sc, force, use_bias, acc, lam):
     push = (mass * b[0] + force[0], mass * b[1] + force[1], mass * b[2] + force[2])
     mx, my, mz = cross(push[0], push[1], push[2], d[0], d[1], d[2])
     rhs[0], rhs[1], rhs[2] = force[3] + mx, force[4] + my, force[5] + mz
-    if not solve_symmetric_in_place(matrix, rhs, 3):
-        _point_inertia(par, rot, d, matrix)
-        rhs[0], rhs[1], rhs[2] = force[3] + mx, force[4] + my, force[5] + mz
-        if not solve_small(matrix, rhs, 3):
-            return False
+    if not _solve_inertia(matrix, rhs) and not solve_small(matrix, rhs, 3):
+        return False
     ax, ay, az = cross(d[0], d[1], d[2], rhs[0], rhs[1], rhs[2])
     acc[0], acc[1], acc[2] = ax - b[0], ay - b[1], az - b[2]
     acc[3], acc[4], acc[5] = rhs[0], rhs[1], rhs[2]
     lam[0] = mass * acc[2] - force[2]
     lam[1] = mass * acc[0] - force[0]
     lam[2] = mass * acc[1] - force[1]
+    return True
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _solve_inertia(matrix, rhs):
+    """Solve the symmetric positive definite 3 x 3 ``matrix x = rhs`` by its adjugate; x in ``rhs``.
+
+    ``x = adj(A) rhs / det A``: one division where ``L D L^T`` took six in a
+    chain (the sticking point's solve, a rolling cylinder's most frequent).
+    False, ``rhs`` untouched, where det A is below ``CRAMER_CONDITION`` of Hadamard's
+    bound ``a_00 a_11 a_22`` (a positive definite matrix's determinant is at
+    most the product of its diagonal): then :func:`solve_small`.
+    """
+    a00, a01, a02 = matrix[0, 0], matrix[0, 1], matrix[0, 2]
+    a11, a12, a22 = matrix[1, 1], matrix[1, 2], matrix[2, 2]
+    c00 = a11 * a22 - a12 * a12
+    c01 = a02 * a12 - a01 * a22
+    c02 = a01 * a12 - a02 * a11
+    det = a00 * c00 + a01 * c01 + a02 * c02
+    if not det > CRAMER_CONDITION * a00 * a11 * a22:
+        return False
+    c11 = a00 * a22 - a02 * a02
+    c12 = a01 * a02 - a00 * a12
+    c22 = a00 * a11 - a01 * a01
+    scale = 1.0 / det
+    r0, r1, r2 = rhs[0], rhs[1], rhs[2]
+    rhs[0] = (c00 * r0 + c01 * r1 + c02 * r2) * scale
+    rhs[1] = (c01 * r0 + c11 * r1 + c12 * r2) * scale
+    rhs[2] = (c02 * r0 + c12 * r1 + c22 * r2) * scale
     return True
 
 
