@@ -684,7 +684,7 @@ def sticking_point_from_force(par, sc, force, use_bias, acc, lam):
         I_P alpha = f_m + (m b + f_a) x d,   I_P = I_w + m (|d|^2 1 - d d^T)
 
     (I_P the inertia about the point, Steiner's theorem; Featherstone 2008,
-    Rigid Body Dynamics Algorithms, sec. 2.13), then ``a = d x alpha - b``
+    Rigid Body Dynamics Algorithms, ch. 2), then ``a = d x alpha - b``
     and the contact force ``F = m a - f_a``: ``lam`` = (F_z, F_x, F_y) [N, or
     N s]. I_P is symmetric positive definite: its adjugate
     (:func:`_solve_inertia`, one division), and :func:`solve_small` only

@@ -656,11 +656,12 @@ def rate(par, record, dt, t, y, mode, data, sc, ydot):
     """y' of the held mode at (t, y); False when the mode's system is singular.
 
     ``r' = v``, ``q' = (0, omega) q / 2`` (omega in the support frame),
-    ``(v', omega') = x''``. A sticking mode is solved at its rows' centre
-    (:func:`solve_at_centre`): its accelerations are those of
-    :func:`solve_at` to the last bit, which only expresses the forces
-    about the centre of pressure after the same solve, and an integrator's
-    stage reads none of them.
+    ``(v', omega') = x''``. A sticking POINT or EDGE is solved by its closed
+    form on the applied wrench alone (:func:`sticking_stage`), any other
+    sticking mode at its rows' centre (:func:`solve_at_centre`): their
+    accelerations are those of :func:`solve_at`, to round-off and to the
+    last bit, which only expresses the forces about the centre of pressure
+    after the same solve; an integrator's stage reads none of them.
     """
     if mode[M_SLIP] == 0 and (mode[M_KIND] == POINT or mode[M_KIND] == EDGE):
         ok = sticking_stage(par, record, dt, t, y, mode, data, sc)
