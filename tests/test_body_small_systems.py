@@ -89,8 +89,8 @@ def test_held_rows_are_solved_alike_whether_symmetric_or_not(held, seed, symmetr
 def test_an_inertia_about_a_point_is_solved_by_its_adjugate(seed, scale_exponent, spread):
     """``_solve_inertia`` (a sticking point's I_P alpha = rhs): a symmetric positive
     definite 3 x 3 system solved as by elimination, to round-off, while its determinant
-    is at least CRAMER_CONDITION of its diagonal's product; below, it declines and leaves
-    the right-hand side for ``solve_small``."""
+    is at least ADJUGATE_CONDITION of its diagonal's product; below, it declines and
+    leaves the right-hand side for the caller's factorisation."""
     rng = np.random.default_rng(seed)
     # eigenvalues spread over up to 12 decades: from a well-conditioned inertia to a nearly
     # singular one
@@ -104,13 +104,14 @@ def test_an_inertia_about_a_point_is_solved_by_its_adjugate(seed, scale_exponent
     ok = bk._solve_inertia(m, b)
     ratio = np.linalg.det(matrix) / np.prod(np.diag(matrix))
     if not ok:
-        assert ratio < 2.0 * bk.CRAMER_CONDITION  # declined only near singular
+        assert ratio < 1.01 * bk.ADJUGATE_CONDITION  # declined only where ill-conditioned
         np.testing.assert_array_equal(b[:3], rhs)
         return
-    assert ratio > 0.5 * bk.CRAMER_CONDITION
+    assert ratio > 0.99 * bk.ADJUGATE_CONDITION
     expected = np.linalg.solve(matrix, rhs)
-    # tolerance: round-off of the adjugate against elimination, relative to the condition
-    # number (at most 1e12 here: the spread of the eigenvalues) times the solution's size
+    # tolerance: the adjugate's error, some 10 u / ratio (135 u at the threshold, measured
+    # on 20,000 such systems), plus elimination's u cond(A), relative to the solution
     condition = np.linalg.cond(matrix)
+    unit = np.finfo(float).eps
     np.testing.assert_allclose(b[:3], expected, rtol=0.0,
-                               atol=1e-14 * condition * np.max(np.abs(expected)))  # fmt: skip
+                               atol=(500.0 + condition) * unit * np.max(np.abs(expected)))  # fmt: skip

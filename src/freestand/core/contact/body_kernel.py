@@ -145,6 +145,7 @@ RHO_FLOOR = 1e-9  # smallest twist radius of a FACE or EDGE, relative to the bas
 CENTRE_ITERATIONS = 12  # most solves of a sliding FACE or EDGE to settle its friction centre
 CENTRE_ROUNDOFF = 1e-9  # or a FACE's move below this that no longer shrinks (the solve's round-off)
 CRAMER_CONDITION = 1e-8  # |det| / Hadamard's bound above which solve_small uses Cramer's rule
+ADJUGATE_CONDITION = 1e-2  # det / its diagonal's product above which I_P is solved by adjugate
 EDGE_ITERATIONS = 60  # most trial centres of a sliding EDGE (each a 2 x 2 system, edge_share)
 
 
@@ -687,8 +688,10 @@ def sticking_point_from_force(par, sc, force, use_bias, acc, lam):
     Rigid Body Dynamics Algorithms, ch. 2), then ``a = d x alpha - b``
     and the contact force ``F = m a - f_a``: ``lam`` = (F_z, F_x, F_y) [N, or
     N s]. I_P is symmetric positive definite: its adjugate
-    (:func:`_solve_inertia`, one division), and :func:`solve_small` only
-    where its determinant is below ``CRAMER_CONDITION`` of Hadamard's bound. No
+    (:func:`_solve_inertia`, one division) where it is well conditioned,
+    else ``L D L^T`` without pivoting
+    (:func:`freestand.core.contact.engine.solve_symmetric_in_place`), and
+    :func:`solve_small` only where round-off found a pivot not positive. No
     inverse inertia and no ``M^-1 f_0``: an RK4 stage of a rolling cylinder
     (its most frequent solve) gives the wrench alone
     (``body_solve.sticking_stage``).
@@ -702,8 +705,11 @@ def sticking_point_from_force(par, sc, force, use_bias, acc, lam):
     push = (mass * b[0] + force[0], mass * b[1] + force[1], mass * b[2] + force[2])
     mx, my, mz = cross(push[0], push[1], push[2], d[0], d[1], d[2])
     rhs[0], rhs[1], rhs[2] = force[3] + mx, force[4] + my, force[5] + mz
-    if not _solve_inertia(matrix, rhs) and not solve_small(matrix, rhs, 3):
-        return False
+    if not _solve_inertia(matrix, rhs) and not solve_symmetric_in_place(matrix, rhs, 3):
+        _point_inertia(par, rot, d, matrix)
+        rhs[0], rhs[1], rhs[2] = force[3] + mx, force[4] + my, force[5] + mz
+        if not solve_small(matrix, rhs, 3):
+            return False
     ax, ay, az = cross(d[0], d[1], d[2], rhs[0], rhs[1], rhs[2])
     acc[0], acc[1], acc[2] = ax - b[0], ay - b[1], az - b[2]
     acc[3], acc[4], acc[5] = rhs[0], rhs[1], rhs[2]
@@ -719,9 +725,12 @@ def _solve_inertia(matrix, rhs):
 
     ``x = adj(A) rhs / det A``: one division where ``L D L^T`` took six in a
     chain (the sticking point's solve, a rolling cylinder's most frequent).
-    False, ``rhs`` untouched, where det A is below ``CRAMER_CONDITION`` of Hadamard's
-    bound ``a_00 a_11 a_22`` (a positive definite matrix's determinant is at
-    most the product of its diagonal): then :func:`solve_small`.
+    Its error grows as ``det A / (a_00 a_11 a_22)`` falls (a positive
+    definite matrix's determinant is at most the product of its diagonal,
+    Hadamard's bound): some ``10 u / ratio`` relative (u the unit
+    round-off), 22 u at 0.1 and 135 u at 0.01, where elimination stays
+    near ``u cond(A)``. False, ``rhs`` untouched, where the ratio is below
+    ``ADJUGATE_CONDITION``: the caller then factors A.
     """
     a00, a01, a02 = matrix[0, 0], matrix[0, 1], matrix[0, 2]
     a11, a12, a22 = matrix[1, 1], matrix[1, 2], matrix[2, 2]
@@ -729,7 +738,7 @@ def _solve_inertia(matrix, rhs):
     c01 = a02 * a12 - a01 * a22
     c02 = a01 * a12 - a02 * a11
     det = a00 * c00 + a01 * c01 + a02 * c02
-    if not det > CRAMER_CONDITION * a00 * a11 * a22:
+    if not det > ADJUGATE_CONDITION * a00 * a11 * a22:
         return False
     c11 = a00 * a22 - a02 * a02
     c12 = a01 * a02 - a00 * a12
