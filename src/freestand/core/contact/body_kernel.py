@@ -664,10 +664,16 @@ def solve_sticking_point(par, sc, base, use_bias, acc, lam):
     on the point's three rows, to round-off. ``lam`` holds (N, f_x, f_y) [N,
     or N s at the velocity level].
     """
+    return sticking_point_from_force(par, sc, free_force(par, sc, base), use_bias, acc, lam)
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def free_force(par, sc, base):
+    """f = M x_0 = (m a_0, I_w alpha_0) [N, N m; or N s, N m s] of the free solution
+    x_0 = ``base``, as a 6-tuple (the closed forms' force form), at the scratch's rotation."""
     mass = par[P_MASS]
     fx, fy, fz = world_inertia_times(par, sc[SC_ROT], base[3], base[4], base[5])
-    force = (mass * base[0], mass * base[1], mass * base[2], fx, fy, fz)
-    return sticking_point_from_force(par, sc, force, use_bias, acc, lam)
+    return (mass * base[0], mass * base[1], mass * base[2], fx, fy, fz)
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -772,10 +778,7 @@ def solve_sticking_edge(par, sc, base, use_bias, acc, lam):
 
     :func:`sticking_edge_from_force` with ``f = M x_0`` = (m a_0, I_w alpha_0).
     """
-    mass = par[P_MASS]
-    fx, fy, fz = world_inertia_times(par, sc[SC_ROT], base[3], base[4], base[5])
-    force = (mass * base[0], mass * base[1], mass * base[2], fx, fy, fz)
-    return sticking_edge_from_force(par, sc, force, use_bias, acc, lam)
+    return sticking_edge_from_force(par, sc, free_force(par, sc, base), use_bias, acc, lam)
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
