@@ -731,6 +731,8 @@ def _solve_inertia(matrix, rhs):
 
     ``x = adj(A) rhs / det A``: one division where ``L D L^T`` took six in a
     chain (the sticking point's solve, a rolling cylinder's most frequent).
+    :func:`solve_small`'s Cramer's rule, for a symmetric matrix (six
+    cofactors, not nine) and under a test made for it.
     Its error grows as ``det A / (a_00 a_11 a_22)`` falls (a positive
     definite matrix's determinant is at most the product of its diagonal,
     Hadamard's bound): some ``10 u / ratio`` relative (u the unit

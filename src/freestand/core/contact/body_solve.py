@@ -590,11 +590,17 @@ def unit_slip(svel, n_tangent, data, direction):
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def prepare_held(par, record, dt, t, y, mode, data, sc):
     """:func:`prepare` for the held mode at (t, y), its pivot at the stored rim angle's point."""
-    kind = mode[M_KIND]
-    rot = sc[SC_ROT]
-    rotation_matrix(y, rot)
+    rotation_matrix(y, sc[SC_ROT])
     prepare_load(par, record, dt, t, y, sc)
-    cos_psi, sin_psi = pivot_direction(par, rot, kind, data[D_PSI], sc)
+    return held_rows(par, y, mode, data, sc)
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def held_rows(par, y, mode, data, sc):
+    """The held mode's rows at the rotation the scratch holds, its pivot at the stored rim
+    angle's point (:func:`prepare_held`, :func:`sticking_stage`); (normal, tangential) rows."""
+    kind = mode[M_KIND]
+    cos_psi, sin_psi = pivot_direction(par, sc[SC_ROT], kind, data[D_PSI], sc)
     return scratch_rows(par, y, kind, mode[M_INDEX], cos_psi, sin_psi, sc)
 
 
@@ -639,14 +645,12 @@ def sticking_stage(par, record, dt, t, y, mode, data, sc):
     stage is followed by a full solve before anything reads them). The
     stage of a rolling cylinder or a rocking box is its most frequent solve.
     """
-    kind = mode[M_KIND]
-    rot, f0 = sc[SC_ROT], sc[SC_F0]
-    rotation_matrix(y, rot)
+    f0 = sc[SC_F0]
+    rotation_matrix(y, sc[SC_ROT])
     prepare_wrench(par, record, dt, t, y, sc)
-    cos_psi, sin_psi = pivot_direction(par, rot, kind, data[D_PSI], sc)
-    scratch_rows(par, y, kind, mode[M_INDEX], cos_psi, sin_psi, sc)
+    held_rows(par, y, mode, data, sc)
     force = (f0[0], f0[1], f0[2], f0[3], f0[4], f0[5])
-    if kind == POINT:
+    if mode[M_KIND] == POINT:
         return sticking_point_from_force(par, sc, force, True, sc[SC_ACC], sc[SC_LAM])
     return sticking_edge_from_force(par, sc, force, True, sc[SC_ACC], sc[SC_LAM])
 
