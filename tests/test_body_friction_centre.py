@@ -9,7 +9,8 @@ wrench; a body at rest needs no twist torque wherever its centre of gravity
 lies (so it slides at ``mu_0 (g - a_v)`` in every direction); a body sliding
 flat gets no twist from its friction; a sliding patch's rows settle at its
 centre of pressure; a sliding, twisting face's solve obeys Newton and Euler
-with its friction at the centre of pressure of its own normal force.
+with its friction at the centre of pressure of its own normal force; a slip
+onset's edge solves on the terms it keeps are its solves anew.
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact import body_kernel as bk
-from freestand.core.contact import body_solve
+from freestand.core.contact import body_modes, body_solve
 from freestand.core.contact import face_friction as ff
 from freestand.core.contact.slip_law import SLIP_FLOOR
 from freestand.core.dynamics.body_history import initial_state
@@ -412,3 +413,50 @@ def test_the_search_on_the_slip_s_pull_finds_the_slow_slide_s_centre(
     assert bk.face_centre_of_pressure(sc[bk.SC_ROT], sc[bk.SC_LAM]) == pytest.approx(
         (cx, cy), abs=1e-9
     )
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    tilt=st.floats(0.01, 0.4), yaw=st.floats(-0.3, 0.3),
+    velocity=st.lists(st.floats(-0.5, 0.5), min_size=6, max_size=6),
+    push=st.lists(st.floats(-6.0, 6.0), min_size=3, max_size=3),
+    directions=st.lists(st.floats(-math.pi, math.pi), min_size=2, max_size=8),
+    acceleration=st.booleans(), fallback=st.booleans(),
+)  # fmt: skip
+def test_a_slip_onset_s_edge_solves_on_kept_terms_are_its_solves_anew(
+    tilt, yaw, velocity, push, directions, acceleration, fallback
+):
+    # a slip onset's search (body_modes._slip_onset) solves the same sliding EDGE under many
+    # friction directions, on the terms of its centre's search that the first solve left
+    # (body_solve.slide_edge_on_terms): each must equal the solve that computes them anew,
+    # to the last bit, also after a search that ended in the full solve (its work arrays
+    # overwrite the terms: flagged, and computed again)
+    par = bk.body_parameters(BOX, G)
+    y = initial_state(BOX, (tilt, 0.0))
+    y[3:7] = (y[3] * math.cos(0.5 * yaw), y[4] * math.cos(0.5 * yaw),
+              y[4] * math.sin(0.5 * yaw), y[3] * math.sin(0.5 * yaw))  # fmt: skip
+    y[7:13] = velocity
+    record = np.repeat(np.asarray(push)[:, None], 2, axis=1)
+    level = body_modes.ACCELERATION if acceleration else body_modes.VELOCITY
+    results = []
+    for reuse in (False, True):
+        sc = bk.new_scratch()
+        n_normal, n_tangent = bk.prepare(par, record, 1.0, 0.0, y, bk.EDGE, 2, 0.0, sc)
+        if not acceleration:
+            sc[bk.SC_BASE][:] = y[7:13]
+        rows = []
+        for i, angle in enumerate(directions):
+            u = np.array([math.cos(angle), math.sin(angle), 0.3 * math.sin(3.0 * angle)])
+            u /= np.linalg.norm(u)
+            if fallback and i == 1:
+                sc[bk.SC_EDGE][2, bk.E_INTACT] = 0.0  # as the full solve leaves it
+                sc[bk.SC_WORK][:] = np.nan  # and its work arrays
+            rate = body_modes._onset_rate(par, y, sc, level, n_normal, n_tangent, u,
+                                          reuse and i > 0)  # fmt: skip
+            rows.append((rate, sc[bk.SC_ACC].copy(), sc[bk.SC_LAM].copy(),
+                         sc[bk.SC_CENTRE].copy()))  # fmt: skip
+        results.append(rows)
+    for anew, kept in zip(*results, strict=True):
+        assert np.array_equal(np.asarray(anew[0]), np.asarray(kept[0]), equal_nan=True)
+        for a, b in zip(anew[1:], kept[1:], strict=True):
+            assert np.array_equal(a, b, equal_nan=True)

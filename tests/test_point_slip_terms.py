@@ -65,7 +65,7 @@ def test_the_closed_form_is_the_solve(seed, shape, level):
     direction = np.zeros(3)
     for theta in rng.uniform(-math.pi, math.pi, 6):
         direction[:2] = math.cos(theta), math.sin(theta)
-        *_, size = body_modes._onset_rate(par, y, sc, level, 1, 2, direction)
+        *_, size = body_modes._onset_rate(par, y, sc, level, 1, 2, direction, False)
         if size < 0.0:  # singular: D(u) = 0, a measure-zero event for random states
             continue
         rate = sc[body_kernel.SC_SACC]
@@ -97,7 +97,7 @@ def test_an_onset_found_on_the_closed_form_is_consistent(search):
             continue
         found += 1
         kept = sc[body_kernel.SC_SACC][:2].copy()  # the search's own solve at its onset
-        along, across, size = body_modes._onset_rate(par, y, sc, level, 1, 2, direction)
+        along, across, size = body_modes._onset_rate(par, y, sc, level, 1, 2, direction, False)
         assert np.array_equal(kept, sc[body_kernel.SC_SACC][:2])  # the scratch holds it
         assert along >= -1e-9 and across <= 1e-9 + 1e-10 * size
         assert abs(math.hypot(direction[0], direction[1]) - 1.0) < 1e-15

@@ -1234,6 +1234,7 @@ E_AY = 7
 E_BX = 8  # (q_r's moment x d_b), x and y: at the second corner
 E_BY = 9
 # row 2: the corners' horizontal velocities (a x, a y, b x, b y) [m/s], then omega_z [rad/s]
+E_INTACT = 5  # row 2: 1.0 while rows 0-1 and q_r (``sc[SC_WORK][0:2]``) hold the terms
 
 
 #: the scratch's fields, in the order of the SC_* indices: one record, passed to a compiled

@@ -38,6 +38,7 @@ from freestand.core.contact.body_kernel import (
     D_ONSET,
     D_PSI,
     D_SLIP,
+    E_INTACT,
     EDGE,
     FACE,
     FREE,
@@ -56,6 +57,7 @@ from freestand.core.contact.body_kernel import (
     SC_BASE,
     SC_CENTRE,
     SC_DIR,
+    SC_EDGE,
     SC_INDICES,
     SC_INV,
     SC_JACOBIAN,
@@ -87,7 +89,7 @@ from freestand.core.contact.body_kernel import (
     sin_tilt,
     tangential_velocity,
 )
-from freestand.core.contact.body_solve import solve_patch, unit_slip
+from freestand.core.contact.body_solve import slide_edge_on_terms, solve_patch, unit_slip
 from freestand.core.contact.compiled import kernel
 from freestand.core.contact.regula_falsi import narrowed, retained_scale
 from freestand.core.contact.slip_law import SLIP_FLOOR
@@ -188,15 +190,25 @@ def _tangential_rate(sc, n_tangent, level, out):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _onset_rate(par, y, sc, level, n_normal, n_tangent, direction):
+def _onset_rate(par, y, sc, level, n_normal, n_tangent, direction, reuse_terms):
     """Slip rate under the kinetic friction along ``-direction``: (along, across, size).
 
     ``along`` is its component along the direction, ``across`` the length of
     the rest, ``size`` its length; ``size`` is -1 when the mode's system is
-    singular. The rate itself is left in ``sc[SC_SACC]``.
+    singular. The rate itself is left in ``sc[SC_SACC]``. ``reuse_terms``: an
+    EDGE's solve on the terms of its centre's search that the solve before it
+    on the same rows left (``body_solve.slide_edge_on_terms``; the same
+    solution to the last bit), where they are intact; else computed anew.
     """
     rate = sc[SC_SACC]
-    if not _solve(par, y, sc, level, 1, direction, n_normal, n_tangent):
+    if reuse_terms and n_normal == 2 and sc[SC_EDGE][2, E_INTACT] == 1.0:
+        centre = sc[SC_CENTRE]
+        centre[5] = 0.0  # as solve_patch
+        ok = slide_edge_on_terms(par, y, sc, level == ACCELERATION, direction, False, centre,
+                                 n_normal, n_tangent)  # fmt: skip
+    else:
+        ok = _solve(par, y, sc, level, 1, direction, n_normal, n_tangent)
+    if not ok:
         return 0.0, 0.0, -1.0
     size = _tangential_rate(sc, n_tangent, level, rate)
     along = 0.0
@@ -233,7 +245,7 @@ def _point_fixed_point(par, y, sc, level, n_normal, direction, rate_tol):
         along = rx * direction[0] + ry * direction[1]
         across = abs(ry * direction[0] - rx * direction[1])
         if _onset_consistent(along, across, size, rate_tol):
-            along, across, size = _onset_rate(par, y, sc, level, n_normal, 2, direction)
+            along, across, size = _onset_rate(par, y, sc, level, n_normal, 2, direction, False)
             return 1 if _onset_consistent(along, across, size, rate_tol) else 0
         if size == 0.0:
             return 0
@@ -268,7 +280,7 @@ def _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol):
                                previous, value)  # fmt: skip
             direction[0] = math.cos(root)
             direction[1] = math.sin(root)
-            along, across, size = _onset_rate(par, y, sc, level, n_normal, 2, direction)
+            along, across, size = _onset_rate(par, y, sc, level, n_normal, 2, direction, False)
             distance = abs(math.atan2(math.sin(root - theta0), math.cos(root - theta0)))
             if _onset_consistent(along, across, size, rate_tol) and (best < 0.0 or distance < best):
                 best = distance
@@ -278,7 +290,7 @@ def _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol):
         return False
     direction[0] = math.cos(best_theta)
     direction[1] = math.sin(best_theta)
-    along, across, size = _onset_rate(par, y, sc, level, n_normal, 2, direction)
+    along, across, size = _onset_rate(par, y, sc, level, n_normal, 2, direction, False)
     return True
 
 
@@ -426,7 +438,7 @@ def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol, iterations):
     e1, e2, trial = onset[0], onset[1], onset[2]
     jac = sc[SC_JACOBIAN]
     for _ in range(iterations):
-        along, across, size = _onset_rate(par, y, sc, level, n_normal, 3, direction)
+        along, across, size = _onset_rate(par, y, sc, level, n_normal, 3, direction, True)
         if size < 0.0:
             return False
         if _onset_consistent(along, across, size, rate_tol):
@@ -438,7 +450,7 @@ def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol, iterations):
             for k in range(3):
                 trial[k] = direction[k] + h * (e1[k] if j == 0 else e2[k])
             _normalise3(trial)
-            _onset_rate(par, y, sc, level, n_normal, 3, trial)
+            _onset_rate(par, y, sc, level, n_normal, 3, trial, True)
             f1, f2 = _onset_across(sc, e1, e2)
             jac[0, j] = (f1 - r1) / h
             jac[1, j] = (f2 - r2) / h
@@ -454,7 +466,7 @@ def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol, iterations):
             for k in range(3):
                 trial[k] = direction[k] + factor * (da * e1[k] + db * e2[k])
             _normalise3(trial)
-            _onset_rate(par, y, sc, level, n_normal, 3, trial)
+            _onset_rate(par, y, sc, level, n_normal, 3, trial, True)
             f1, f2 = _onset_across(sc, e1, e2)
             if math.hypot(f1, f2) < norm0:
                 decreased = True
@@ -464,7 +476,7 @@ def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol, iterations):
             break  # stalled: no step along Newton's direction lowers the residual
         for k in range(3):
             direction[k] = trial[k]
-    along, across, size = _onset_rate(par, y, sc, level, n_normal, 3, direction)
+    along, across, size = _onset_rate(par, y, sc, level, n_normal, 3, direction, True)
     return _onset_consistent(along, across, size, rate_tol)
 
 
@@ -510,8 +522,8 @@ def _slip_onset(par, y, sc, level, n_normal, n_tangent, start, direction, rate_t
         if settled != 0:
             return settled > 0
         return _onset_on_circle(par, y, sc, level, n_normal, start, direction, rate_tol)
-    for _ in range(ONSET_ITERATIONS):
-        along, across, size = _onset_rate(par, y, sc, level, n_normal, n_tangent, direction)
+    for i in range(ONSET_ITERATIONS):
+        along, across, size = _onset_rate(par, y, sc, level, n_normal, n_tangent, direction, i > 0)
         if size < 0.0:
             return False
         if _onset_consistent(along, across, size, rate_tol):

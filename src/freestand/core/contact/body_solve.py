@@ -28,6 +28,7 @@ from freestand.core.contact.body_kernel import (
     E_AY,
     E_BX,
     E_BY,
+    E_INTACT,
     E_QT,
     E_QX,
     E_QY,
@@ -344,6 +345,24 @@ def _slide_edge(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_ta
     average, up to ``CENTRE_ITERATIONS``, more than half of a rocking
     cabinet's solves: the map F is rough where the slip turns at the centre.
     """
+    edge_slide_terms(par, y, sc, use_bias)
+    return slide_edge_on_terms(par, y, sc, use_bias, direction, kinetic, stored, n_normal,
+                               n_tangent)  # fmt: skip
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def slide_edge_on_terms(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent):
+    """:func:`_slide_edge` on the terms the scratch holds (:func:`edge_slide_terms`).
+
+    The terms depend on the state and the EDGE's normal rows alone, not on
+    the friction's direction or centre: a slip onset's search, which solves
+    the same rows under many directions
+    (:func:`~freestand.core.contact.body_modes._slip_onset`), computes them
+    once. ``sc[SC_EDGE][2, E_INTACT]`` is left 0.0 where the search ended in
+    the full solve, whose work arrays hold q_r
+    (:func:`~freestand.core.contact.body_kernel.solve_held_rows`): the terms
+    must then be computed again.
+    """
     centre = sc[SC_CENTRE]
     index = int(centre[4])
     ax, ay = box_corner(par, index)
@@ -351,7 +370,6 @@ def _slide_edge(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_ta
     length = math.sqrt((bx - ax) ** 2 + (by - ay) ** 2)
     tolerance = CENTRE_TOLERANCE * par[P_HALF_X] / length  # on sigma
     share = ((centre[0] - ax) * (bx - ax) + (centre[1] - ay) * (by - ay)) / (length * length)
-    edge_slide_terms(par, y, sc, use_bias)
     low, high = 0.0, 1.0
     previous, g_previous = math.nan, math.nan
     for i in range(EDGE_ITERATIONS):
@@ -382,6 +400,7 @@ def _slide_edge(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_ta
         if kinetic:
             return _edge_solution(par, sc, share, sc[SC_DIR])
         return _edge_solution(par, sc, share, direction)
+    sc[SC_EDGE][2, E_INTACT] = 0.0
     return _solve_at_rows(par, y, sc, use_bias, 1, direction, kinetic, stored, n_normal,
                           n_tangent)  # fmt: skip
 
@@ -430,6 +449,7 @@ def edge_slide_terms(par, y, sc, use_bias):
         velocity[2 * c] = point_velocity(y, d, 1.0, 0.0, 0.0)
         velocity[2 * c + 1] = point_velocity(y, d, 0.0, 1.0, 0.0)
     velocity[4] = y[12]
+    velocity[E_INTACT] = 1.0
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)

@@ -43,6 +43,7 @@ RUNTIME_ARGUMENTS = frozenset(
         "index",  # which edge or corner
         "n_tangent",  # a mode's tangential rows
         "n_normal",  # a mode's normal rows
+        "reuse_terms",  # a sliding EDGE's solve on the terms the solve before it left
     }
 )
 
