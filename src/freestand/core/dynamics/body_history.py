@@ -51,6 +51,9 @@ FLAT_TILT = 4.0 * FLAT_ROUND_OFF
 #: component exceeds this [m/s, rad/s] (the planar engine's rest test).
 REST_VELOCITY = 1e-9
 
+#: The contact tolerances of :func:`simulate_body` where none are given.
+DEFAULT_TOLERANCES = ContactTolerances()
+
 #: A base point deeper below the support than this many times the depth the engine's
 #: tolerances allow (:func:`lost_contact_depth`) means the contact was lost [-].
 LOST_CONTACT_MARGIN = 10.0
@@ -114,8 +117,8 @@ class SupportMotion3:
                               self.vertical)  # fmt: skip
 
     def array(self) -> np.ndarray:
-        """(3, n): x, y, vertical."""
-        return np.vstack([self.x, self.y, self.vertical])
+        """(3, n), C-contiguous: x, y, vertical."""
+        return np.array((self.x, self.y, self.vertical))
 
     def at(self, time) -> np.ndarray:
         """(3, K): x, y, vertical [m/s^2] at the times ``time`` [s] (linear, zero outside)."""
@@ -298,7 +301,7 @@ def simulate_body(
     (Housner's law in a plane), then scaled by ``restitution``; see
     ``docs/three-d.md``.
     """
-    tolerances = tolerances or ContactTolerances()
+    tolerances = tolerances or DEFAULT_TOLERANCES
     end = motion.duration if duration is None else float(duration)
     if not (end > 0.0 and math.isfinite(end)):
         raise FreestandError(f"duration must be positive, not {duration!r} s")
@@ -311,7 +314,7 @@ def simulate_body(
             source="restitution",
         )
     par = body_parameters(body, gravity, float(restitution))
-    record = np.ascontiguousarray(motion.array())
+    record = motion.array()
     breaks = record_row_breaks(float(motion.time_step), record)
     y = initial_state(body) if initial is None else np.array(initial, dtype=float)
     mode = np.zeros(3, dtype=np.int64)
