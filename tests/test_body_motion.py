@@ -9,10 +9,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
+from freestand.core.contact.body_kernel import EDGE, FACE, FREE, POINT, body_parameters
 from freestand.core.dynamics import body_history
 from freestand.core.dynamics.body_history import (
     SupportMotion3,
-    _valid_rows,
+    _first_invalid,
+    _kept_rows,
     body_motion,
     initial_state,
     lost_contact_depth,
@@ -66,6 +68,10 @@ def test_a_yaw_is_a_twist_and_turns_the_slide_with_it():
         turned = (math.cos(angle) * slide[0] - math.sin(angle) * slide[1],
                   math.sin(angle) * slide[0] + math.cos(angle) * slide[1])  # fmt: skip
         np.testing.assert_allclose(motion.slide[k], turned, atol=1e-12)
+
+
+def _valid_rows(time, state, lowest, depth):
+    return _kept_rows(time, state, lowest, _first_invalid(state, lowest, depth))
 
 
 def test_a_history_is_cut_before_a_state_below_the_support_or_not_finite():
@@ -177,3 +183,69 @@ def test_a_repeated_state_repeats_its_row():
         assert math.remainder(together.twist[i] - alone.twist[1], 2 * math.pi) == pytest.approx(
             0.0, abs=1e-12
         )
+
+
+def _separate_rows(body, par, time, state, modes, forces, event_times, depth):
+    """The result's rows and peaks as the front end computed them call by call before
+    :func:`body_history._history_rows` did it in one."""
+    motion, rates = body_history._read_motion(body, state, True)
+    first = _first_invalid(state, motion.lowest, depth)
+    rows, _ = _kept_rows(time, state, motion.lowest, first)
+    shown = int(np.count_nonzero(event_times <= time[rows - 1]))
+    rates = np.ascontiguousarray(rates[:, :rows])
+    body_history._skip_event_rows(time[:rows], event_times[:shown], rates)
+    peaks = body_history._peaks(time[:rows], motion.tilt[:rows], motion.slide[:rows],
+                                motion.twist[:rows], rates[0], rates[1], rates[2],
+                                motion.highest[:rows], modes[:rows])  # fmt: skip
+    return (first, shown, motion.lowest, motion.tilt[:rows], motion.slide[:rows],
+            motion.twist[:rows], modes[:rows, 0].copy(), modes[:rows, 2] == 1,
+            forces[:rows, 0].copy(), forces[:rows, 1].copy(), peaks)  # fmt: skip
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(0, 2**32 - 1), st.sampled_from([BOX, CASK]), st.integers(1, 40),
+       st.sampled_from(["valid", "below", "not finite"]))  # fmt: skip
+def test_the_history_s_rows_in_one_call_are_the_separate_calls_to_the_bit(seed, body, count, bad):
+    # _history_rows (the body from its parameter vector) against _read_motion, _first_invalid,
+    # _kept_rows, _skip_event_rows and _peaks on random states: tilted, turned, repeated, some
+    # below the support or not finite; events at some rows and between them
+    rng = np.random.default_rng(seed)
+    state = np.tile(initial_state(body), (count, 1))
+    quaternion = rng.normal(size=(count, 4)) * rng.choice([0.0, 1e-9, 0.05, 1.0], size=(count, 1))
+    quaternion[:, 0] += 1.0
+    state[:, 3:7] = quaternion / np.linalg.norm(quaternion, axis=1)[:, None]
+    state[:, 0:3] += rng.normal(size=(count, 3)) * rng.choice([0.0, 1e-3], size=(count, 1))
+    state[:, 7:13] = rng.normal(size=(count, 6))
+    repeated = rng.random(count) < 0.3
+    repeated[0] = False
+    for i in np.flatnonzero(repeated):
+        state[i] = state[i - 1]
+    row = int(rng.integers(count))
+    if bad == "below":
+        state[row:, 2] -= 0.5
+    elif bad == "not finite":
+        state[row, int(rng.integers(13))] = rng.choice([math.nan, math.inf, -math.inf])
+    time = np.cumsum(rng.choice([0.0, 0.01], size=count))
+    modes = rng.integers(0, 4, size=(count, 3))
+    forces = rng.normal(size=(count, 2))
+    event_times = np.sort(np.concatenate([rng.choice(time, 3), rng.uniform(0.0, 0.5, 2)]))
+    depth = lost_contact_depth(0.6, 1e-7)
+    par = body_parameters(body, 9.81)
+    together = body_history._history_rows(par, time, state, modes, forces, event_times, depth)
+    separate = _separate_rows(body, par, time, state, modes, forces, event_times, depth)
+    assert together[:2] == separate[:2]
+    for one, other in zip(together[2:-1], separate[2:-1], strict=True):
+        assert one.dtype == other.dtype
+        assert one.tobytes() == other.tobytes()
+    assert np.array(together[-1]).tobytes() == np.array(separate[-1]).tobytes()
+
+
+def test_the_events_are_named_by_their_codes():
+    events = (np.array([0.0, 0.5, 1.0]), np.array([0, 1, 3]), np.array([-1, FACE, 1]),
+              np.array([FACE, 0, 2]))  # fmt: skip
+    assert body_history._event_tuples(events, 2) == (
+        (0.0, "start", "", "face"),
+        (0.5, "impact", "face", "free"),
+    )
+    names = [body_history.PATCH_NAMES[code] for code in (FREE, POINT, EDGE, FACE)]
+    assert names == ["free", "point", "edge", "face"]

@@ -252,8 +252,9 @@ def test_plot_and_animate_through_the_command(tmp_path):
 
 def test_a_base_point_through_the_support_ends_the_history_as_failed(model):
     """The front end's guard: the histories, events and peaks stop where the contact was lost."""
+    from freestand.core.contact.body_kernel import body_parameters
     from freestand.core.dynamics import body_state
-    from freestand.core.dynamics.body_history import _result, initial_state
+    from freestand.core.dynamics.body_history import GRAVITY, _result, initial_state
 
     body = model.body_configuration("cabinet").body
     state = np.tile(initial_state(body), (5, 1))
@@ -264,7 +265,7 @@ def test_a_base_point_through_the_support_ends_the_history_as_failed(model):
     events = (np.array([0.0, 0.35]), np.array([0, 1]), np.array([-1, 3]), np.array([3, 3]))
     istate = np.zeros(body_state.I_SIZE, dtype=np.int64)
     istate[body_state.I_EVENTS] = 2
-    history = _result(body, None, istate, np.arange(5) * 0.1, state, modes, np.zeros((5, 2)),
+    history = _result(body, body_parameters(body, GRAVITY), istate, np.arange(5) * 0.1, state, modes, np.zeros((5, 2)),
                       events)  # fmt: skip
     assert history.status == "failed" and not history.overturned
     assert history.message.startswith("a base point went 0.001 m below the support at t = 0.3 s")

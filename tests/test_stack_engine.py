@@ -14,9 +14,11 @@ from freestand.core.dynamics import engine
 from freestand.core.dynamics.timehistory import (
     ContactTolerances,
     SupportMotion,
+    _mark_kinks,
     contact_problem_in_motion,
     engine_model,
     record_breaks,
+    record_row_breaks,
     simulate,
     stack_kinematics,
 )
@@ -218,3 +220,23 @@ def test_rectangle_is_a_homogeneous_block():
     assert box.inertia == 1200.0 * (0.6**2 + 2.0**2) / 12.0
     assert box.centre == (0.0, 1.5)
     assert (box.base_left, box.base_right, box.base_level) == (-0.3, 0.3, 0.5)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(0, 2**32 - 1), st.integers(2, 60), st.integers(1, 3),
+       st.sampled_from([0.005, 0.01, 0.02, 1.0 / 3.0]))  # fmt: skip
+def test_the_break_points_in_one_call_are_numpy_s_to_the_bit(seed, count, components, step):
+    # record_row_breaks against the kinks marked per component and numpy's flatnonzero times
+    # the step: records straight on stretches, with zeros, repeated and tiny values
+    rng = np.random.default_rng(seed)
+    knots = rng.choice([0.0, 1e-13, 1.0, -2.5], size=(components, count))
+    straight = rng.random((components, count)) < 0.5
+    scale = rng.normal(size=(components, 1))
+    record = np.where(straight, np.linspace(0.0, 1.0, count), knots) * scale
+    kinks = np.zeros(count, dtype=bool)
+    for values in record:
+        _mark_kinks(values.copy(), kinks)
+    kinks[-1] = True
+    expected = np.flatnonzero(kinks) * step
+    for breaks in (record_row_breaks(step, record), record_breaks(step, *record)):
+        assert breaks.dtype == expected.dtype and breaks.tobytes() == expected.tobytes()

@@ -19,8 +19,13 @@ from freestand.core.contact.body_kernel import (
     DATA_SIZE,
     FACE,
     FREE,
+    P_CENTRE,
+    P_HALF_X,
+    P_HALF_Y,
+    P_SHAPE,
     PIVOT_LEAN,
     SCRATCH_DTYPE,
+    SHAPE_BOX,
     STATE_SIZE,
     body_parameters,
     rotation_matrix,
@@ -31,7 +36,7 @@ from freestand.core.dynamics import body_state
 from freestand.core.dynamics.body_projection import FLAT_ROUND_OFF
 from freestand.core.dynamics.results import ContactTolerances, peak_between_samples
 from freestand.core.dynamics.single_block import UPLIFT_GAP_FRACTION
-from freestand.core.dynamics.timehistory import record_breaks
+from freestand.core.dynamics.timehistory import record_row_breaks
 from freestand.errors import FreestandError
 
 GRAVITY = 9.81
@@ -45,6 +50,9 @@ FLAT_TILT = 4.0 * FLAT_ROUND_OFF
 #: After the record, the body is at rest when it sits flat, sticks and no velocity
 #: component exceeds this [m/s, rad/s] (the planar engine's rest test).
 REST_VELOCITY = 1e-9
+
+#: The contact tolerances of :func:`simulate_body` where none are given.
+DEFAULT_TOLERANCES = ContactTolerances()
 
 #: A base point deeper below the support than this many times the depth the engine's
 #: tolerances allow (:func:`lost_contact_depth`) means the contact was lost [-].
@@ -109,8 +117,8 @@ class SupportMotion3:
                               self.vertical)  # fmt: skip
 
     def array(self) -> np.ndarray:
-        """(3, n): x, y, vertical."""
-        return np.vstack([self.x, self.y, self.vertical])
+        """(3, n), C-contiguous: x, y, vertical."""
+        return np.array((self.x, self.y, self.vertical))
 
     def at(self, time) -> np.ndarray:
         """(3, K): x, y, vertical [m/s^2] at the times ``time`` [s] (linear, zero outside)."""
@@ -202,19 +210,20 @@ def default_body_step(body: Body, gravity: float = GRAVITY) -> float:
     (cylinder) in x and y (Housner 1963), at most 20 ms; as the planar
     engine's :func:`freestand.core.dynamics.timehistory.default_step`.
     """
-    inertia = np.asarray(body.inertia)
-    height = body.centre_height
-    if isinstance(body.shape, Box):
-        half_x, half_y = 0.5 * body.shape.size[0], 0.5 * body.shape.size[1]
+    shape, mass, inertia = body.shape, body.mass, body.inertia
+    centre_x, centre_y, height = body.centre
+    if isinstance(shape, Box):
+        half_x, half_y = 0.5 * shape.size[0], 0.5 * shape.size[1]
     else:
-        half_x = half_y = body.shape.radius
+        half_x = half_y = shape.radius
     largest = 0.0
     # rocking in the x-z plane (about y) and in the y-z plane (about x)
-    for axis, half, offset in ((1, half_x, body.centre[0]), (0, half_y, body.centre[1])):
+    for moment, half, offset in ((float(inertia[1, 1]), half_x, centre_x),
+                                 (float(inertia[0, 0]), half_y, centre_y)):  # fmt: skip
         for lever in (half - offset, half + offset):
             rho = math.hypot(lever, height)
-            i_o = inertia[axis, axis] + body.mass * rho**2
-            largest = max(largest, math.sqrt(body.mass * gravity * rho / i_o))
+            i_o = moment + mass * rho**2
+            largest = max(largest, math.sqrt(mass * gravity * rho / i_o))
     return min(0.05 / largest, 0.02)
 
 
@@ -292,7 +301,7 @@ def simulate_body(
     (Housner's law in a plane), then scaled by ``restitution``; see
     ``docs/three-d.md``.
     """
-    tolerances = tolerances or ContactTolerances()
+    tolerances = tolerances or DEFAULT_TOLERANCES
     end = motion.duration if duration is None else float(duration)
     if not (end > 0.0 and math.isfinite(end)):
         raise FreestandError(f"duration must be positive, not {duration!r} s")
@@ -305,8 +314,8 @@ def simulate_body(
             source="restitution",
         )
     par = body_parameters(body, gravity, float(restitution))
-    record = np.ascontiguousarray(motion.array())
-    breaks = record_breaks(motion.time_step, motion.x, motion.y, motion.vertical)
+    record = motion.array()
+    breaks = record_row_breaks(float(motion.time_step), record)
     y = initial_state(body) if initial is None else np.array(initial, dtype=float)
     mode = np.zeros(3, dtype=np.int64)
     data = np.zeros(DATA_SIZE)
@@ -314,7 +323,7 @@ def simulate_body(
     scratch = np.zeros(1, dtype=SCRATCH_DTYPE)  # its record is the kernel's scratch
     capacity = _capacity(end, step, breaks)
     buffers = _buffers(capacity)
-    events = _event_buffers(capacity, (np.empty(0),) * 4, 0)
+    events = _event_buffers(capacity)
     t = 0.0
     chunks = []
     while True:
@@ -322,7 +331,9 @@ def simulate_body(
                        tolerances.gap, tolerances.velocity, t, y, mode, data, scratch, istate,
                        *buffers, *events)  # fmt: skip
         if istate[body_state.I_STATUS] != body_state.STATUS_BUFFER_FULL:
-            chunks.append(tuple(b[: istate[body_state.I_RECORDS]] for b in buffers))
+            rows = int(istate[body_state.I_RECORDS])
+            chunks.append((buffers[0][:rows], buffers[1][:rows], buffers[2][:rows],
+                           buffers[3][:rows]))  # fmt: skip
             break
         chunks.append(tuple(b.copy() for b in buffers))
         istate[body_state.I_RECORDS] = 1
@@ -346,7 +357,7 @@ def _capacity(end: float, step: float, breaks: np.ndarray) -> int:
     A step ends at ``step`` [s], at every break of the record and at every
     event, up to ``end`` [s].
     """
-    return int(end / step * 1.1) + 2 * int(np.count_nonzero(breaks < end)) + 64
+    return int(end / step * 1.1) + 2 * int(breaks.searchsorted(end)) + 64  # breaks ascend
 
 
 def _buffers(capacity: int):
@@ -355,23 +366,26 @@ def _buffers(capacity: int):
             np.empty((capacity, 3), dtype=np.int64), np.empty((capacity, 2)))  # fmt: skip
 
 
-def _event_buffers(capacity: int, events: tuple, count: int) -> tuple:
+def _event_buffers(capacity: int, events: tuple | None = None, count: int = 0) -> tuple:
     """The engine's event arrays (time, kind, patch before, after) for its next call.
 
     A call of the engine writes at most ``capacity`` rows and an event per
     row, with one more at the start and one at an overturn: the arrays hold
-    the ``count`` events so far and that many more (up to ``EVENT_ROWS``;
-    the engine counts the others). They grow as needed, keeping what they
-    hold: every run allocated (and freed) ``EVENT_ROWS`` of each at once
-    before, 6.4 MB, for the few hundred events a record makes.
+    the ``count`` events so far in ``events`` (None for none) and that many
+    more (up to ``EVENT_ROWS``; the engine counts the others). They grow as
+    needed, keeping what they hold: every run allocated (and freed)
+    ``EVENT_ROWS`` of each at once before, 6.4 MB, for the few hundred events
+    a record makes.
     """
     size = min(EVENT_ROWS, count + capacity + 2)
-    if events[0].shape[0] >= size:
+    if events is not None and events[0].shape[0] >= size:
         return events
-    grown = (np.empty(size),) + tuple(np.empty(size, dtype=np.int64) for _ in range(3))
-    kept = min(count, events[0].shape[0])
-    for new, old in zip(grown, events, strict=True):
-        new[:kept] = old[:kept]
+    grown = (np.empty(size), np.empty(size, dtype=np.int64), np.empty(size, dtype=np.int64),
+             np.empty(size, dtype=np.int64))  # fmt: skip
+    if events is not None:
+        kept = min(count, events[0].shape[0])
+        for new, old in zip(grown, events, strict=True):
+            new[:kept] = old[:kept]
     return grown
 
 
@@ -583,14 +597,12 @@ def lost_contact_depth(width: float, gap: float) -> float:
     return LOST_CONTACT_MARGIN * (gap + PIVOT_LEAN * width)
 
 
-def _valid_rows(time, state, lowest, depth) -> tuple[int, str]:
-    """Rows before the first state that is not finite or lies below the support; why.
+def _kept_rows(time, state, lowest, first: int) -> tuple[int, str]:
+    """Rows before ``first``, the first state that is not finite or lies below the support; why.
 
-    A base point more than ``depth`` [m] below the support
-    (:func:`lost_contact_depth`) means the contact was lost; at least the
-    first row is kept.
+    ``first`` (:func:`_first_invalid`; -1 where every row is valid) is kept where it is
+    the first row; ``lowest`` (K,) the heights of the base's lowest point [m].
     """
-    first = _first_invalid(np.ascontiguousarray(state, dtype=float), lowest, depth)
     if first < 0:
         return time.size, ""
     rows = max(first, 1)
@@ -624,43 +636,39 @@ def _first_invalid(state, lowest, depth):
     return -1
 
 
+#: The events' kinds by code (:data:`~freestand.core.dynamics.body_state.EVENT_KINDS`).
+EVENT_KIND_NAMES = np.array(body_state.EVENT_KINDS, dtype=object)
+#: The patches' names by code (FREE, POINT, EDGE, FACE); the code -1 (no patch before a start
+#: event) takes the last, "".
+PATCH_NAMES = np.array(["free", "point", "edge", "face", ""], dtype=object)
+
+
 def _result(
     body, par, istate, time, state, modes, forces, events, gap=ContactTolerances.gap
 ) -> BodyTimeHistory:
-    motion, rates = _read_motion(body, state, True)
     width = min(body.shape.size[:2]) if isinstance(body.shape, Box) else 2.0 * body.shape.radius
-    rows, message = _valid_rows(time, state, motion.lowest, lost_contact_depth(width, gap))
-    time, state, modes, forces = time[:rows], state[:rows], modes[:rows], forces[:rows]
-    tilt, slide, twist = motion.tilt[:rows], motion.slide[:rows], motion.twist[:rows]
-    highest = motion.highest[:rows]
-    count = int(istate[body_state.I_EVENTS])
-    names = ("free", "point", "edge", "face")
+    counts = istate.tolist()
+    count = counts[body_state.I_EVENTS]
     kept = min(count, events[0].shape[0])
-    last = float(time[-1])
-    event_list = tuple(
-        (t, body_state.EVENT_KINDS[kind], names[before] if before >= 0 else "", names[after])
-        for t, kind, before, after in zip(*(e[:kept].tolist() for e in events), strict=True)
-        if t <= last
-    )
-    overturned = not message and istate[body_state.I_STATUS] == body_state.STATUS_OVERTURNED
-    # a row at an event holds the state after it (an impact's velocities): no step ending
-    # there is refined on its rates
-    rates = np.ascontiguousarray(rates[:, :rows])
-    _skip_event_rows(time, np.array([event[0] for event in event_list], dtype=float), rates)
-    peaks = _peaks(time, tilt, slide, twist, rates[0], rates[1], rates[2], highest, modes)
+    (first, shown, lowest, tilt, slide, twist, patch, sliding, normal_force, friction_force,
+     peaks) = _history_rows(par, time, state, modes, forces, events[0][:kept],
+                            lost_contact_depth(width, gap))  # fmt: skip
+    rows, message = _kept_rows(time, state, lowest, first)
+    time, state = time[:rows], state[:rows]
+    overturned = not message and counts[body_state.I_STATUS] == body_state.STATUS_OVERTURNED
     return BodyTimeHistory(
         body=body.name,
         status="failed" if message else "overturned" if overturned else "completed",
         time=time,
         state=state,
-        patch=modes[:, 0].copy(),
-        sliding=modes[:, 2] == 1,
-        normal_force=forces[:, 0].copy(),
-        friction_force=forces[:, 1].copy(),
+        patch=patch,
+        sliding=sliding,
+        normal_force=normal_force,
+        friction_force=friction_force,
         tilt=tilt,
         slide=slide,
         twist=twist,
-        events=event_list,
+        events=_event_tuples(events, shown),
         max_rotation=peaks[0],
         max_slide=peaks[1],
         max_twist=peaks[2],
@@ -669,15 +677,80 @@ def _result(
         overturned=bool(overturned),
         overturn_time=float(time[-1]) if overturned else None,
         diagnostics={
-            "steps": int(istate[body_state.I_STEPS]),
+            "steps": counts[body_state.I_STEPS],
             "events": count,
-            "impacts": int(istate[body_state.I_IMPACTS]),
-            "remedies": int(istate[body_state.I_REMEDIES]),
-            "stretch_steps": int(istate[body_state.I_STRETCH_STEPS]),
-            "event_trials": int(istate[body_state.I_TRIALS]),
+            "impacts": counts[body_state.I_IMPACTS],
+            "remedies": counts[body_state.I_REMEDIES],
+            "stretch_steps": counts[body_state.I_STRETCH_STEPS],
+            "event_trials": counts[body_state.I_TRIALS],
         },
         message=message,
     )
+
+
+def _event_tuples(events: tuple, shown: int) -> tuple:
+    """The first ``shown`` of the engine's events as (time [s], kind, patch before, after)."""
+    times, kinds, before, after = (e[:shown] for e in events)
+    columns = (times, EVENT_KIND_NAMES[kinds], PATCH_NAMES[before], PATCH_NAMES[after])
+    return tuple(zip(*(column.tolist() for column in columns), strict=True))
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _history_rows(par, time, state, modes, forces, event_times, depth):
+    """The result's rows and peaks from the engine's, in one call.
+
+    :func:`_motion_rows` (with the rates) of the body of parameters ``par``
+    (:func:`~freestand.core.contact.body_kernel.body_parameters`), the rows
+    kept (:func:`_first_invalid` below ``depth`` [m], :func:`_kept_rows`),
+    the events up to the last of them (``event_times`` [s] ascending, as the
+    engine writes them), their rows' rates skipped (:func:`_skip_event_rows`)
+    and :func:`_peaks`.
+
+    Returns
+    -------
+    tuple
+        (first invalid row or -1, events shown, lowest (K,) [m];
+        of the rows kept: tilt [rad], slide [m], twist [rad], patch, sliding,
+        normal force [N], friction force [N]; the peaks of :func:`_peaks`).
+    """
+    count = state.shape[0]
+    outline, radius = _base_outline(par)
+    tilt, twist = np.empty(count), np.empty(count)
+    lowest, highest = np.empty(count), np.empty(count)
+    slide = np.empty((count, 2))
+    rates = np.empty((3, count))
+    _motion_rows(state, par[P_CENTRE : P_CENTRE + 3], outline, radius, tilt, slide, twist,
+                 lowest, highest, rates)  # fmt: skip
+    first = _first_invalid(state, lowest, depth)
+    rows = count if first < 0 else max(first, 1)
+    last = time[rows - 1]
+    shown = 0
+    while shown < event_times.shape[0] and event_times[shown] <= last:
+        shown += 1
+    # a row at an event holds the state after it (an impact's velocities): no step ending
+    # there is refined on its rates
+    rates = rates[:, :rows]
+    _skip_event_rows(time[:rows], event_times[:shown], rates)
+    peaks = _peaks(time[:rows], tilt[:rows], slide[:rows], twist[:rows], rates[0], rates[1],
+                   rates[2], highest[:rows], modes[:rows])  # fmt: skip
+    return (first, shown, lowest, tilt[:rows], slide[:rows], twist[:rows],
+            modes[:rows, 0].copy(), modes[:rows, 2] == 1, forces[:rows, 0].copy(),
+            forces[:rows, 1].copy(), peaks)  # fmt: skip
+
+
+@nb.njit(cache=True, error_model="numpy", inline="always")
+def _base_outline(par):
+    """(a box's base corners (4, 3) in the body frame [m] as :meth:`Box.base_corners`, 0.0),
+    or (none, the rim's radius [m]) of the body of parameters ``par``."""
+    if par[P_SHAPE] != SHAPE_BOX:
+        return np.zeros((0, 3)), par[P_HALF_X]
+    half_x, half_y = par[P_HALF_X], par[P_HALF_Y]
+    outline = np.zeros((4, 3))
+    outline[0, 0], outline[0, 1] = half_x, half_y
+    outline[1, 0], outline[1, 1] = -half_x, half_y
+    outline[2, 0], outline[2, 1] = -half_x, -half_y
+    outline[3, 0], outline[3, 1] = half_x, -half_y
+    return outline, 0.0
 
 
 @nb.njit(cache=True, error_model="numpy")

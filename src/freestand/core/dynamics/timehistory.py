@@ -798,12 +798,27 @@ def record_breaks(time_step: float, *components: np.ndarray) -> np.ndarray:
     exactly, and a record resampled finely from a coarser one costs no more
     steps than the coarse one.
     """
-    count = components[0].size
-    kinks = np.zeros(count, dtype=bool)
-    for values in components:
-        _mark_kinks(np.ascontiguousarray(values, dtype=float), kinks)
-    kinks[-1] = True
-    return np.array(np.flatnonzero(kinks) * time_step, dtype=float)
+    return record_row_breaks(float(time_step), np.array(components, dtype=float))
+
+
+@nb.njit(cache=True, error_model="numpy")
+def record_row_breaks(time_step, record):
+    """:func:`record_breaks` of the components in the rows of ``record`` (C, n), in one call.
+
+    ``time_step`` [s]; returns the times [s] of the break points, ascending.
+    """
+    count = record.shape[1]
+    kinks = np.zeros(count, dtype=np.bool_)
+    for row in range(record.shape[0]):
+        _mark_kinks(record[row], kinks)
+    kinks[count - 1] = True
+    breaks = np.empty(np.count_nonzero(kinks))
+    found = 0
+    for i in range(count):
+        if kinks[i]:
+            breaks[found] = i * time_step
+            found += 1
+    return breaks
 
 
 @nb.njit(cache=True, error_model="numpy")
