@@ -1,10 +1,11 @@
-"""The closed-form solves of three modes against the general one on their rows (#18).
+"""The closed-form solves of four modes against the general one on their rows (#18).
 
 ``solve_mode`` solves a sticking POINT (a cylinder's rim point rolling, a
 box's corner held) about the point, on its inertia there
 (``body_kernel.solve_sticking_point``), a sticking EDGE (a box rocking on
 it) by the null-space method on its hinge (``body_kernel.solve_sticking_edge``),
-and a sliding FACE (a flat base sliding and twisting, its friction at its
+a sticking FACE by back substitution on its six rows
+(``body_kernel.solve_sticking_face``), and a sliding FACE (a flat base sliding and twisting, its friction at its
 centre of pressure) by eliminating its normal force
 (``body_kernel.solve_sliding_face``), rather than on their rows in general
 (``solve_held_rows``). Each must agree with
@@ -129,6 +130,46 @@ def test_a_sliding_face_is_solved_as_on_its_rows(which, seed, acceleration, flat
     # the held rows: the base centre's vertical acceleration and the tilt rates' vanish
     rows = sc[bk.SC_NORMAL][:, :3]
     bias = sc[bk.SC_NBIAS][:3] if acceleration else 0.0
+    np.testing.assert_allclose(rows.T @ acc + bias, 0.0, atol=1e-10 * scale)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(0, len(BODIES) - 1), st.integers(0, 2**32 - 1), st.booleans(), st.booleans())
+def test_a_sticking_face_is_solved_as_on_its_rows(which, seed, acceleration, centred):
+    body = BODIES[which]
+    par = bk.body_parameters(body, G)
+    rng = np.random.default_rng(seed)
+    y = np.zeros(bk.STATE_SIZE)
+    quaternion = rng.normal(size=4)  # any attitude: the algebra holds for any
+    y[3:7] = quaternion / np.linalg.norm(quaternion)
+    record = _moving(rng, y)
+    sc = bk.new_scratch()
+    bk.prepare(par, record, 1.0, 0.5, y, bk.FACE, 0, 0.0, sc)
+    if not centred:  # the friction centre off the base centre, as a CoP puts it
+        centre = sc[bk.SC_CENTRE]
+        centre[0], centre[1] = rng.uniform(-0.9, 0.9, size=2) * par[bk.P_HALF_X : bk.P_HALF_Y + 1]
+        centre[2] = bk.effective_twist_radius(par, bk.FACE, 0, centre[0], centre[1])
+        bk.tangent_rows(par, y, sc)
+    base = sc[bk.SC_BASE].copy() if acceleration else y[7:13].copy()
+    (acc, lam), (acc_rows, lam_rows) = _closed_and_general(
+        lambda acc, lam: bk.solve_sticking_face(par, sc, base, acceleration, acc, lam),
+        lambda acc, lam: bk.solve_held_rows(
+            par, sc, base, acceleration, 0, np.zeros(3), 3, 3, acc, lam
+        ),
+    )
+    # tolerance: round-off of back substitution against L D L^T on the same 6 x 6 system,
+    # relative to the largest term (the accelerations or velocities; the forces, and the
+    # couples over the base's half-width)
+    scale = np.max(np.abs(acc_rows)) + np.max(np.abs(base)) + G
+    np.testing.assert_allclose(acc, acc_rows, rtol=0.0, atol=1e-11 * scale)
+    arm = par[bk.P_HALF_X]
+    force = np.max(np.abs(lam_rows[[0, 3, 4]])) + np.max(np.abs(lam_rows[[1, 2, 5]])) / arm
+    np.testing.assert_allclose(lam[[0, 3, 4]], lam_rows[[0, 3, 4]], rtol=0.0, atol=1e-11 * force)
+    np.testing.assert_allclose(lam[[1, 2]], lam_rows[[1, 2]], rtol=0.0, atol=1e-11 * force * arm)
+    np.testing.assert_allclose(lam[5], lam_rows[5], rtol=0.0, atol=1e-11 * force)
+    # the six held rows: every motion of the base vanishes
+    rows = np.column_stack([sc[bk.SC_NORMAL][:, :3], sc[bk.SC_TANGENT][:, :3]])
+    bias = np.r_[sc[bk.SC_NBIAS][:3], sc[bk.SC_TBIAS][:3]] if acceleration else 0.0
     np.testing.assert_allclose(rows.T @ acc + bias, 0.0, atol=1e-10 * scale)
 
 

@@ -638,9 +638,10 @@ def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, ac
     """Solve the contact problem of one mode on the scratch's rows; False when singular.
 
     A sticking POINT (a rim point rolling, a corner held), a sticking EDGE
-    (all five rows held: a box rocking on it) and a sliding FACE (a flat
-    base sliding) by their closed forms (:func:`solve_sticking_point`,
-    :func:`solve_sticking_edge`, :func:`solve_sliding_face`), any other mode
+    (all five rows held: a box rocking on it), a sticking FACE (all six held)
+    and a sliding FACE (a flat base sliding) by their closed forms
+    (:func:`solve_sticking_point`, :func:`solve_sticking_edge`,
+    :func:`solve_sticking_face`, :func:`solve_sliding_face`), any other mode
     on its rows (:func:`solve_held_rows`; an EDGE whose tangential rows are
     not held too, as a projection of a sliding one holds its normal rows
     alone); arguments and results as the latter's.
@@ -649,6 +650,8 @@ def solve_mode(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, ac
         return solve_sticking_point(par, sc, base, use_bias, acc, lam)
     if slip == 0 and n_normal == 2 and n_tangent == 3:
         return solve_sticking_edge(par, sc, base, use_bias, acc, lam)
+    if slip == 0 and n_normal == 3 and n_tangent == 3:
+        return solve_sticking_face(par, sc, base, use_bias, acc, lam)
     if slip == 1 and n_normal == 3:
         return solve_sliding_face(par, sc, base, use_bias, direction, acc, lam)
     return solve_held_rows(par, sc, base, use_bias, slip, direction, n_normal, n_tangent, acc,
@@ -874,6 +877,61 @@ def sticking_edge_from_force(par, sc, force, use_bias, acc, lam):
 def _dot3(a, b):
     """a . b of two 3-tuples."""
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def solve_sticking_face(par, sc, base, use_bias, acc, lam):
+    """A sticking FACE's contact problem by back substitution on its rows; False if singular.
+
+    The FACE's six rows (:func:`patch_rows`) hold every motion: the base
+    centre's vertical ``(e_z, c_0)``, the tilt rates ``(0, e_x)``, ``(0,
+    e_y)``, the friction centre's horizontals ``(e_x, c_1)``, ``(e_y, c_2)``
+    and the twist ``(0, rho e_z)``. With the targets g_k (minus the rows'
+    biases at the acceleration level, ``use_bias``; zero at the velocity
+    level) the angular part follows from the angular rows and the linear
+    part from the point rows:
+
+        alpha = (g_1, g_2, g_5 / rho),   a = (g_3, g_4, g_0) - (c_1, c_2, c_0) . alpha,
+
+    and the multipliers from the constraint force ``F = M (x - x_0)``, x_0 =
+    ``base`` (``J^T lam = F``, J the rows): the friction (T_0, T_1) = (F_x,
+    F_y), N_0 = F_z, and the couples N_1, N_2 and the twist's T_2 from the
+    moment ``F_m - N_0 c_0 - T_0 c_1 - T_1 c_2`` along e_x, e_y and rho e_z.
+    What :func:`solve_held_rows` gives on the same rows to round-off,
+    without its 6 x 6 system: the FACE is the first candidate of every
+    impact of a box's edge that lands while the other edge holds
+    (:func:`~freestand.core.contact.body_modes.impact`). ``lam`` holds (N_0,
+    N_1, N_2, T_0, T_1, T_2) [N, N m; or N s, N m s]; False where the twist
+    radius is not positive.
+    """
+    normal, tangent, nbias, tbias = sc[SC_NORMAL], sc[SC_TANGENT], sc[SC_NBIAS], sc[SC_TBIAS]
+    rho = tangent[5, 2]
+    if not rho > 0.0:
+        return False
+    g = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    if use_bias:
+        g = (-nbias[0], -nbias[1], -nbias[2], -tbias[0], -tbias[1], -tbias[2])
+    c0 = (normal[3, 0], normal[4, 0], normal[5, 0])
+    c1 = (tangent[3, 0], tangent[4, 0], tangent[5, 0])
+    c2 = (tangent[3, 1], tangent[4, 1], tangent[5, 1])
+    alpha = (g[1], g[2], g[5] / rho)
+    acc[0] = g[3] - _dot3(c1, alpha)
+    acc[1] = g[4] - _dot3(c2, alpha)
+    acc[2] = g[0] - _dot3(c0, alpha)
+    acc[3], acc[4], acc[5] = alpha
+    mass = par[P_MASS]
+    f_x = mass * (acc[0] - base[0])
+    f_y = mass * (acc[1] - base[1])
+    f_z = mass * (acc[2] - base[2])
+    mx, my, mz = world_inertia_times(par, sc[SC_ROT], alpha[0] - base[3], alpha[1] - base[4],
+                                     alpha[2] - base[5])  # fmt: skip
+    lam[0] = f_z
+    lam[1] = mx - (f_z * c0[0] + f_x * c1[0] + f_y * c2[0])
+    lam[2] = my - (f_z * c0[1] + f_x * c1[1] + f_y * c2[1])
+    lam[3] = f_x
+    lam[4] = f_y
+    lam[5] = (mz - (f_z * c0[2] + f_x * c1[2] + f_y * c2[2])) / rho
+    return True
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
