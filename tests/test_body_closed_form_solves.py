@@ -40,6 +40,17 @@ def _moving(rng, y):
     return rng.normal(size=(3, 2)) * 5.0
 
 
+def _turned_at_random(which, seed):
+    """(parameters of body ``which``, the seed's generator, a state at rest at a random
+    attitude)."""
+    par = bk.body_parameters(BODIES[which], G)
+    rng = np.random.default_rng(seed)
+    y = np.zeros(bk.STATE_SIZE)
+    quaternion = rng.normal(size=4)
+    y[3:7] = quaternion / np.linalg.norm(quaternion)
+    return par, rng, y
+
+
 def _closed_and_general(closed, general):
     """((acc, lam) of the closed-form solve, (acc, lam) of the general one); each solve is a
     function of the arrays it fills, and must succeed."""
@@ -57,12 +68,7 @@ def _closed_and_general(closed, general):
     st.booleans(),
 )  # fmt: skip
 def test_a_sticking_point_is_solved_as_on_its_rows(which, corner, seed, acceleration):
-    body = BODIES[which]
-    par = bk.body_parameters(body, G)
-    rng = np.random.default_rng(seed)
-    y = np.zeros(bk.STATE_SIZE)
-    quaternion = rng.normal(size=4)
-    y[3:7] = quaternion / np.linalg.norm(quaternion)
+    par, rng, y = _turned_at_random(which, seed)
     record = _moving(rng, y)
     psi = float(rng.uniform(-np.pi, np.pi))  # a cylinder's rim point
     sc = bk.new_scratch()
@@ -136,12 +142,7 @@ def test_a_sliding_face_is_solved_as_on_its_rows(which, seed, acceleration, flat
 @settings(max_examples=200, deadline=None)
 @given(st.integers(0, len(BODIES) - 1), st.integers(0, 2**32 - 1), st.booleans(), st.booleans())
 def test_a_sticking_face_is_solved_as_on_its_rows(which, seed, acceleration, centred):
-    body = BODIES[which]
-    par = bk.body_parameters(body, G)
-    rng = np.random.default_rng(seed)
-    y = np.zeros(bk.STATE_SIZE)
-    quaternion = rng.normal(size=4)  # any attitude: the algebra holds for any
-    y[3:7] = quaternion / np.linalg.norm(quaternion)
+    par, rng, y = _turned_at_random(which, seed)  # any attitude: the algebra holds for any
     record = _moving(rng, y)
     sc = bk.new_scratch()
     bk.prepare(par, record, 1.0, 0.5, y, bk.FACE, 0, 0.0, sc)
