@@ -176,7 +176,7 @@ def _others_separate(par, y, sc, kind, index, psi, touching, level, tolerance):
 def _solve(par, y, sc, level, slip, direction, n_normal, n_tangent):
     """The mode on the scratch's rows, sliding along ``direction`` (friction about the CoP)."""
     return solve_patch(par, y, sc, level == ACCELERATION, slip, direction, False, sc[SC_CENTRE],
-                       n_normal, n_tangent)  # fmt: skip
+                       n_normal, n_tangent, False)  # fmt: skip
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -609,7 +609,7 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
                 stored[D_SLIP + k] = svel[k] / speed
             for _ in range(KINETIC_PASSES):
                 if not solve_patch(par, y, sc, True, 1, direction, True, stored, n_normal,
-                                   n_tangent):  # fmt: skip
+                                   n_tangent, False):  # fmt: skip
                     return False
                 if not _restore_own_slip(sc, n_tangent, stored):
                     break

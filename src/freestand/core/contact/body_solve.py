@@ -89,7 +89,7 @@ from freestand.core.contact.vectors import norm2
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal, n_tangent):
+def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal, n_tangent, stage):
     """Solve a mode on the rows in the scratch, its friction about the centre of pressure.
 
     A FACE's or EDGE's friction acts about its centre of pressure, with the
@@ -110,7 +110,10 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     holds (``sc[SC_CENTRE][3:5]``, :func:`scratch_rows`); the rows and
     ``sc[SC_CENTRE]`` are left at the final centre, and ``sc[SC_CENTRE][5]``
     is 1.0 where the stored direction was read (at any centre), else 0.0.
-    False when a system is singular.
+    ``stage``: an RK4 stage's solve, which reads the accelerations alone: a
+    sliding FACE's rows and slip direction are then left at the centre of its
+    last solve where its slip direction provably holds at its centre of
+    pressure (:func:`_kept_by_bound`). False when a system is singular.
     """
     centre = sc[SC_CENTRE]
     kind = int(centre[3])
@@ -122,7 +125,8 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
     if kind == EDGE and slip == 1:
         return _slide_edge(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent)
     if slip == 1:
-        return _slide_face(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent)
+        return _slide_face(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent,
+                           stage)  # fmt: skip
     if not _solve_at_rows(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal,
                           n_tangent):  # fmt: skip
         return False
@@ -132,7 +136,7 @@ def solve_patch(par, y, sc, use_bias, slip, direction, kinetic, stored, n_normal
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _slide_face(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent):
+def _slide_face(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_tangent, stage):
     """A sliding FACE solved with its friction at its centre of pressure (:func:`solve_patch`).
 
     Each solve places the friction at the centre of pressure of its own
@@ -153,7 +157,8 @@ def _slide_face(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_ta
     base where it lies there: such a slide is not admissible
     (:func:`normal_margin`), and it is found as such without the search
     creeping along the base's side. ``history`` rows: the last centres and
-    their F.
+    their F. An RK4 stage (``stage``) skips the check at the centre of
+    pressure where :func:`_kept_by_bound` proves that it holds.
     """
     centre, rot, lam = sc[SC_CENTRE], sc[SC_ROT], sc[SC_LAM]
     history = sc[SC_EDGE]  # (3, 10): free while a FACE slides; rows (x, y, F_x, F_y)
@@ -165,12 +170,15 @@ def _slide_face(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_ta
         ux, uy, twist = _face_friction(sc, kinetic, direction)
         row = history[iteration % 3]
         row[0], row[1] = centre[0], centre[1]
+        rho = centre[2]
         moved = _move_to_pressure_centre(par, rot, lam, centre)
         if moved <= CENTRE_TOLERANCE * par[P_HALF_X]:
             return True
         if moved <= CENTRE_ROUNDOFF * par[P_HALF_X] and moved >= last:
             return True
         last = moved
+        if stage and kinetic and _kept_by_bound(par, y, sc, stored, moved, rho):
+            return True
         tangent_rows(par, y, sc)
         if _face_friction_kept(par, y, sc, kinetic, stored, n_tangent, ux, uy, twist, direction):
             return True
@@ -182,6 +190,41 @@ def _slide_face(par, y, sc, use_bias, direction, kinetic, stored, n_normal, n_ta
             _anderson_centre(par, history, iteration, centre)
             tangent_rows(par, y, sc)
     return True
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _kept_by_bound(par, y, sc, stored, moved, rho):
+    """Whether a sliding FACE's slip direction provably holds at its centre of pressure.
+
+    The solve took u from the slip velocity s at its centre c (``sc[SC_SVEL]``,
+    twist radius ``rho`` [m]) and moved the centre ``moved`` [m] to the
+    centre of pressure p (``sc[SC_CENTRE]``, twist radius rho_p). There the
+    slip velocity is ``s' = s + ((omega x (p - c))_x, (omega x (p - c))_y,
+    (rho_p - rho) omega_z)``, within ``B = |omega| moved + |rho_p - rho|
+    |omega_z|`` of s. Where both lie on the slip law's own side (``|s| >
+    floor + B`` and ``s . r > 2 B``, r the stored direction, each with
+    1e-12 |s| to spare: u = s / |s|, u' = s' / |s'|,
+    :func:`slip_direction`), ``|u' - u| <= 2 B / |s|``, and the check of
+    :func:`_face_friction_kept` (u and ``u_t rho`` within ``CENTRE_TOLERANCE``,
+    the twist's of the half-width) holds where half its tolerances bound
+    those changes (the other half covers the round-off of the check's own
+    arithmetic, some 1e-16). An RK4 stage reads the accelerations alone,
+    which the check does not change where it holds: it is skipped there,
+    with its rows and slip direction at the centre of pressure.
+    """
+    svel = sc[SC_SVEL]
+    size = math.sqrt(svel[0] ** 2 + svel[1] ** 2 + svel[2] ** 2)
+    along = svel[0] * stored[D_SLIP] + svel[1] * stored[D_SLIP + 1] + svel[2] * stored[D_SLIP + 2]
+    omega_z = abs(y[12])
+    change = abs(sc[SC_CENTRE][2] - rho)
+    bound = math.sqrt(y[10] ** 2 + y[11] ** 2 + y[12] ** 2) * moved + change * omega_z
+    floor = max(SLIP_FLOOR, stored[D_FLOOR])
+    slack = 1e-12 * size  # the round-off of s and s' as the check computes them, with room
+    if not (size > floor + bound + slack and along > 2.0 * bound + slack):
+        return False
+    turn = 2.0 * bound / size  # |u' - u|
+    twist = turn * sc[SC_CENTRE][2] + change * abs(svel[2]) / size  # |u'_t rho_p - u_t rho|
+    return turn <= 0.5 * CENTRE_TOLERANCE and twist <= 0.5 * CENTRE_TOLERANCE * par[P_HALF_X]
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -632,9 +675,16 @@ def solve_at(par, record, dt, t, y, mode, data, sc):
     and its friction acts about its centre of pressure (:func:`solve_patch`).
     Returns (ok, normal rows, tangential rows).
     """
+    return _solve_held_mode(par, record, dt, t, y, mode, data, sc, False)
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _solve_held_mode(par, record, dt, t, y, mode, data, sc, stage):
+    """:func:`solve_at`; ``stage``: an RK4 stage's, which reads the accelerations alone
+    (:func:`solve_patch`)."""
     n_normal, n_tangent = prepare_held(par, record, dt, t, y, mode, data, sc)
     ok = solve_patch(par, y, sc, True, mode[M_SLIP], sc[SC_DIR], mode[M_SLIP] == 1, data,
-                     n_normal, n_tangent)  # fmt: skip
+                     n_normal, n_tangent, stage)  # fmt: skip
     return ok, n_normal, n_tangent
 
 
@@ -692,7 +742,7 @@ def rate(par, record, dt, t, y, mode, data, sc, ydot):
     elif mode[M_SLIP] == 0:
         ok, _, _ = solve_at_centre(par, record, dt, t, y, mode, data, sc)
     else:
-        ok, _, _ = solve_at(par, record, dt, t, y, mode, data, sc)
+        ok, _, _ = _solve_held_mode(par, record, dt, t, y, mode, data, sc, True)
     state_rate(y, sc[SC_ACC], ydot)
     return ok
 

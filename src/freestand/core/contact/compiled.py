@@ -44,6 +44,7 @@ RUNTIME_ARGUMENTS = frozenset(
         "n_tangent",  # a mode's tangential rows
         "n_normal",  # a mode's normal rows
         "reuse_terms",  # a sliding EDGE's solve on the terms the solve before it left
+        "stage",  # an RK4 stage's solve, which reads the accelerations alone
     }
 )
 
