@@ -210,7 +210,9 @@ def _kept_by_bound(par, y, sc, stored, moved, rho):
     those changes (the other half covers the round-off of the check's own
     arithmetic, some 1e-16). An RK4 stage reads the accelerations alone,
     which the check does not change where it holds: it is skipped there,
-    with its rows and slip direction at the centre of pressure.
+    and the rows and the slip direction are left at the solve's centre, not
+    moved to the centre of pressure. r is a unit vector (the step's stored
+    direction), so ``s' . r >= s . r - B``.
     """
     svel = sc[SC_SVEL]
     size = math.sqrt(svel[0] ** 2 + svel[1] ** 2 + svel[2] ** 2)
