@@ -16,10 +16,12 @@ HERE = Path(__file__).resolve().parent
 
 #: Benchmarks that need an optional dependency (``pip install -e ".[bench]"``).
 OPTIONAL = {"mujoco_rocking": "mujoco", "engine": "mujoco", "mujoco_body": "mujoco"}
+#: Tools kept beside the benchmarks, run by hand with arguments (their docstrings say how).
+TOOLS = {"body_sweep"}
 
 
 def main(names: list[str]) -> int:
-    scripts = sorted(p for p in HERE.glob("*.py") if p.name != "run.py")
+    scripts = sorted(p for p in HERE.glob("*.py") if p.name != "run.py" and p.stem not in TOOLS)
     if names:
         scripts = [p for p in scripts if p.stem in names]
     status = 0
