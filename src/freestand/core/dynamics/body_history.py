@@ -21,13 +21,13 @@ from freestand.core.contact.body_kernel import (
     FREE,
     P_CENTRE,
     P_HALF_X,
-    P_HALF_Y,
     P_SHAPE,
     PIVOT_LEAN,
     SCRATCH_DTYPE,
     SHAPE_BOX,
     STATE_SIZE,
     body_parameters,
+    box_corner,
     rotation_matrix,
 )
 from freestand.core.contact.vectors import norm2
@@ -740,16 +740,15 @@ def _history_rows(par, time, state, modes, forces, event_times, depth):
 
 @nb.njit(cache=True, error_model="numpy", inline="always")
 def _base_outline(par):
-    """(a box's base corners (4, 3) in the body frame [m] as :meth:`Box.base_corners`, 0.0),
-    or (none, the rim's radius [m]) of the body of parameters ``par``."""
+    """(a box's base corners (4, 3) in the body frame [m], the engine's
+    (:func:`~freestand.core.contact.body_kernel.box_corner`, the order of
+    :meth:`Box.base_corners`), 0.0), or (none, the rim's radius [m]) of the body of
+    parameters ``par``."""
     if par[P_SHAPE] != SHAPE_BOX:
         return np.zeros((0, 3)), par[P_HALF_X]
-    half_x, half_y = par[P_HALF_X], par[P_HALF_Y]
     outline = np.zeros((4, 3))
-    outline[0, 0], outline[0, 1] = half_x, half_y
-    outline[1, 0], outline[1, 1] = -half_x, half_y
-    outline[2, 0], outline[2, 1] = -half_x, -half_y
-    outline[3, 0], outline[3, 1] = half_x, -half_y
+    for k in range(4):
+        outline[k, 0], outline[k, 1] = box_corner(par, k)
     return outline, 0.0
 
 
