@@ -58,6 +58,7 @@ from freestand.core.contact.body_kernel import (
     SC_CENTRE,
     SC_DIR,
     SC_EDGE,
+    SC_EXCLUDED,
     SC_INDICES,
     SC_INV,
     SC_JACOBIAN,
@@ -106,6 +107,7 @@ KINETIC_PASSES = 3  # solves of a kinetic slip, its stored direction the last on
 PIVOT_ITERATIONS = 60  # regula falsi steps of a landed cylinder's pivot search at most
 
 NONE_ADMISSIBLE = -1
+SLIPS_FROM_REST = -2  # a chatter's look (:func:`chatter_look`): a patch could only slip from rest
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -570,6 +572,20 @@ def _restart(start, direction):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
+def candidate_speed(par, y, sc, kind, index, psi):
+    """A candidate's rows in the scratch and its slip speed [m/s] at their centre.
+
+    The scaled slip velocity s of the tangential rows at the rows' centre
+    (an edge's middle, the base's centre; the rim point psi [rad]) in
+    ``sc[SC_SVEL]``. Returns (normal rows, tangential rows, |s|).
+    """
+    n_normal, n_tangent = scratch_rows(par, y, kind, index, math.cos(psi), math.sin(psi), sc)
+    svel = sc[SC_SVEL]
+    tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
+    return n_normal, n_tangent, leading_length(svel, n_tangent)
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, scales, data):
     """Solve a candidate mode and test it; True when admissible (its u and psi in ``data``).
 
@@ -582,13 +598,8 @@ def try_mode(par, y, sc, kind, index, psi, slip, level, touching, velocity_tol, 
     rotation, inverse inertia and base of the instant.
     """
     rot = sc[SC_ROT]
-    n_normal, n_tangent = scratch_rows(par, y, kind, index, math.cos(psi), math.sin(psi), sc)
+    n_normal, n_tangent, speed = candidate_speed(par, y, sc, kind, index, psi)
     svel = sc[SC_SVEL]
-    speed = 0.0
-    tangential_velocity(y, sc[SC_TANGENT], n_tangent, svel)
-    for k in range(n_tangent):
-        speed += svel[k] ** 2
-    speed = math.sqrt(speed)
     direction = sc[SC_DIR]
     force_tol, rate_tol = scales[0], scales[1]
     onset = not (level == ACCELERATION and speed > velocity_tol)  # at rest: a slip from rest
@@ -741,6 +752,31 @@ def select_mode(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, ex
     states, kind -1 none. Returns the index of the chosen candidate, or
     NONE_ADMISSIBLE.
     """
+    return _select(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, excluded, False)
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def chatter_look(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data):
+    """:func:`select_mode` in a chatter's stretch of the remedy, which a slip from rest continues.
+
+    The candidates in :func:`select_mode`'s order, none excluded; a candidate
+    that could only slip from rest (its speed within ``velocity_tol`` at its
+    rows' centre) is passed over, its onset not sought (:func:`_slip_onset`:
+    tens of solves where none exists, most of a chatter's look). Where a
+    later candidate or the flight is admissible, the onsets passed over are
+    sought then (:func:`_onset_of_skipped`). Returns :func:`select_mode`'s
+    choice, except ``SLIPS_FROM_REST`` where that would be a slip from rest,
+    or nothing after candidates passed over: the stretch goes on either way
+    (:func:`~freestand.core.dynamics.body_remedy.stretch_step`), as such a
+    slip would chatter again. ``mode`` and ``data`` are then not set.
+    """
+    return _select(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data,
+                   sc[SC_EXCLUDED], True)  # fmt: skip
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _select(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, excluded, chatter):
+    """:func:`select_mode`, or with ``chatter`` :func:`chatter_look` (``excluded`` then none)."""
     prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
     touching = sc[SC_TOUCHING]
     psi = touching_points(par, y, sc, gap_tol, velocity_tol, ACCELERATION, touching)
@@ -755,6 +791,9 @@ def select_mode(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, ex
                 angles[1] = angle
     force_tol = RELATIVE_TOLERANCE * par[P_MASS] * par[P_GRAVITY]
     scales = (force_tol, RELATIVE_TOLERANCE * par[P_GRAVITY])
+    if chatter:
+        excluded[0], excluded[1], excluded[2] = -1, 0, 0
+    skipped = 0  # a chatter's look: the candidates at rest whose onset it has not sought
     for slip in (0, 1):
         for c in range(count):
             if (
@@ -763,18 +802,55 @@ def select_mode(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, ex
                 and (excluded[2] == 2 or excluded[2] == slip)
             ):
                 continue
+            if chatter and slip == 1:
+                _, _, speed = candidate_speed(par, y, sc, kinds[c], indices[c], angles[c])
+                if speed <= velocity_tol:
+                    skipped |= 1 << c
+                    continue
             if try_mode(par, y, sc, kinds[c], indices[c], angles[c], slip, ACCELERATION,
                         touching, velocity_tol, scales, data):  # fmt: skip
+                if skipped != 0 and _onset_of_skipped(par, y, sc, skipped, touching, velocity_tol,
+                                                      scales, data, kinds[c], indices[c],
+                                                      angles[c], slip):  # fmt: skip
+                    return SLIPS_FROM_REST
                 mode[M_KIND] = kinds[c]
                 mode[M_INDEX] = indices[c]
                 mode[M_SLIP] = slip
                 return c
     if try_mode(par, y, sc, FREE, 0, psi, 0, ACCELERATION, touching, velocity_tol, scales, data):
+        if skipped != 0 and _onset_of_skipped(par, y, sc, skipped, touching, velocity_tol,
+                                              scales, data, FREE, 0, psi, 0):  # fmt: skip
+            return SLIPS_FROM_REST
         mode[M_KIND] = FREE
         mode[M_INDEX] = 0
         mode[M_SLIP] = 0
         return count
-    return NONE_ADMISSIBLE
+    return SLIPS_FROM_REST if skipped != 0 else NONE_ADMISSIBLE
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _onset_of_skipped(par, y, sc, skipped, touching, velocity_tol, scales, data, kind, index,
+                      psi, slip):  # fmt: skip
+    """Whether a candidate a chatter's look skipped (a bit of ``skipped``) slips from rest.
+
+    The look (:func:`chatter_look`) has found the mode (``kind``, ``index``,
+    rim angle ``psi``, ``slip``) admissible after candidates at rest whose
+    onset it did not seek: the first of them whose onset is consistent would
+    have been :func:`select_mode`'s choice. Their onsets are sought here, in
+    order; where none is consistent, the mode found is solved again, so that
+    the scratch and ``data`` hold its solution.
+    """
+    kinds, indices, angles = sc[SC_KINDS], sc[SC_INDICES], sc[SC_ANGLES]
+    c = 0
+    while skipped >> c != 0:
+        if (skipped >> c) & 1 and try_mode(par, y, sc, kinds[c], indices[c], angles[c], 1,
+                                            ACCELERATION, touching, velocity_tol, scales,
+                                            data):  # fmt: skip
+            return True
+        c += 1
+    try_mode(par, y, sc, kind, index, psi, slip, ACCELERATION, touching, velocity_tol, scales,
+             data)  # fmt: skip
+    return False
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)

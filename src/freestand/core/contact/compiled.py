@@ -45,6 +45,7 @@ RUNTIME_ARGUMENTS = frozenset(
         "n_normal",  # a mode's normal rows
         "reuse_terms",  # a sliding EDGE's solve on the terms the solve before it left
         "stage",  # an RK4 stage's solve, which reads the accelerations alone
+        "chatter",  # a mode's selection in a chatter's stretch of the remedy, or any other
     }
 )
 

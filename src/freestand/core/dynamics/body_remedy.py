@@ -56,6 +56,7 @@ from freestand.core.contact.body_kernel import (
 from freestand.core.contact.body_modes import (
     ACCELERATION,
     candidates,
+    chatter_look,
     clear_candidates,
     select_mode,
     touching_points,
@@ -205,8 +206,11 @@ def stretch_step(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol
     time-stepping solution all along). After each step the base points it
     holds above the support are set on it (:func:`_settle`). A chatter's stretch
     (:func:`_start_chatter`) looks every ``STRETCH_CHECK`` steps only, and
-    goes on where the mode found is a slip from rest (its speed within
-    ``velocity_tol``): that slip would chatter again.
+    goes on where a patch could only slip from rest (its speed within
+    ``velocity_tol``; :func:`~freestand.core.contact.body_modes.chatter_look`,
+    which does not seek that slip's onset, and a slip under way whose
+    centre of pressure moves within ``velocity_tol``): that slip would
+    chatter again.
     """
     if istate[I_STRETCH] == 1:
         impulses[:, :] = 0.0  # a stretch starts its sweeps from zero
@@ -219,13 +223,17 @@ def stretch_step(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol
     if not early and steps % STRETCH_CHECK != 0:
         set_free(mode)
         return t + h
-    no_exclusion(sc)
-    found = select_mode(par, record, dt, t + h, y, sc, gap_tol, velocity_tol, mode, data,
-                        sc[SC_EXCLUDED])  # fmt: skip
+    if istate[I_CHATTER] == 1:
+        # a chatter's stretch goes on while its patch could only slip from rest
+        found = chatter_look(par, record, dt, t + h, y, sc, gap_tol, velocity_tol, mode, data)
+    else:
+        no_exclusion(sc)
+        found = select_mode(par, record, dt, t + h, y, sc, gap_tol, velocity_tol, mode, data,
+                            sc[SC_EXCLUDED])  # fmt: skip
     if found >= 0 and hovering and mode[M_KIND] == FREE:
         found = -1  # a point the stretch holds is still above the support: not a flight
     if found >= 0 and istate[I_CHATTER] == 1 and mode[M_SLIP] == 1:
-        # a chatter's stretch goes on while its patch could only slip from rest
+        # a slip under way at its rows' centre, but from rest at its centre of pressure
         speed, _, _ = slip_velocity(par, record, dt, t + h, y, mode, data, sc)
         found = -1 if speed <= velocity_tol else 0
     if found >= 0:
