@@ -263,6 +263,7 @@ def solve_alart_curnier(count, mu, delassus, free, impulses, velocity_tolerance,
     step = work["ac_step"][:n3]
     norm = _function(count, mu, rho_n, rho_t, delassus, free, impulses, speeds, residual, jacobian)
     stalled = 0
+    current = True  # ``speeds`` are the velocities after the impulses (the last F evaluated)
     for _iteration in range(NEWTON_ITERATIONS):
         if norm <= impulse_tolerance**2:
             break
@@ -281,6 +282,7 @@ def solve_alart_curnier(count, mu, delassus, free, impulses, velocity_tolerance,
             fraction *= 0.5
             halvings += 1
         stalled = stalled + 1 if halvings >= STALL_HALVINGS else 0
+        current = False  # ``speeds`` now of the last trial
         if not accepted or stalled >= STALL_ITERATIONS:
             break
         for j in range(n3):
@@ -289,7 +291,9 @@ def solve_alart_curnier(count, mu, delassus, free, impulses, velocity_tolerance,
             for column in range(n3):
                 jacobian[j, column] = trial_jacobian[j, column]
         norm = trial_norm
-    _function(count, mu, rho_n, rho_t, delassus, free, impulses, speeds, residual, jacobian)
+        current = True  # the trial taken
+    if not current:
+        _function(count, mu, rho_n, rho_t, delassus, free, impulses, speeds, residual, jacobian)
     if not obeys_laws(count, mu, impulses, speeds, velocity_tolerance, impulse_tolerance):
         return False
     for p in range(count):
