@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact import body_kernel as bk
-from freestand.core.dynamics import body_engine, body_projection
+from freestand.core.dynamics import body_engine, body_projection, body_state
 from freestand.core.dynamics.body_events import EVENT_TIME
 from freestand.core.dynamics.body_history import (
     SupportMotion3,
@@ -444,3 +444,23 @@ def test_the_rim_point_a_cylinder_rolls_on_is_the_lowest_on_the_stored_side(
             psi += math.pi
         assert (c, s) == pytest.approx((math.cos(psi), math.sin(psi)), abs=1e-12)
     assert bk.pivot_direction(par, rot, bk.FACE, stored, sc) == (1.0, 0.0)
+
+
+@settings(max_examples=50, deadline=None)
+@given(
+    gaps=st.lists(st.floats(1e-4, 0.02), min_size=1, max_size=60),
+    times=st.lists(st.floats(0.0, 1.3), min_size=1, max_size=40),
+    h_max=st.floats(1e-3, 0.05),
+)
+def test_a_step_ends_at_the_first_break_after_it_whatever_the_cursor(gaps, times, h_max):
+    """``_next_end`` from its cursor (``istate[I_BREAK]``) is the binary search's end, for times
+    that grow, repeat or move back."""
+    breaks = np.cumsum(gaps)
+    istate = np.zeros(body_state.I_SIZE, dtype=np.int64)
+    t_end = 1.2
+    for t in sorted(times) + times:
+        k = np.searchsorted(breaks, t + 1e-12, side="right")  # the first break beyond t
+        expected = min(t + h_max, t_end)
+        if k < breaks.size and breaks[k] < expected:
+            expected = breaks[k]
+        assert body_engine._next_end(t, breaks, h_max, t_end, istate) == expected
