@@ -302,6 +302,24 @@ def best_time(function, repeats: int = REPEATS, clock=time.perf_counter) -> floa
     return float(np.min(times))
 
 
+def best_times_alternated(
+    functions, repeats: int = REPEATS, clock=time.perf_counter
+) -> list[float]:
+    """:func:`best_time` of each of ``functions`` [s], their runs alternated.
+
+    Round r runs every function once, in turn: a shared machine's slow spell
+    then falls on all of them alike, and their ratio is steadier than that
+    of best times taken one function after the other.
+    """
+    best = [np.inf] * len(functions)
+    for _ in range(repeats):
+        for i, function in enumerate(functions):
+            start = clock()
+            function()
+            best[i] = min(best[i], clock() - start)
+    return [float(b) for b in best]
+
+
 def compare(name: str, stack: Stack, motion: SupportMotion, accuracy_stack: Stack) -> float:
     """Time freestand and MuJoCo on one case; print timings, ratio and accuracy."""
     simulate(stack, motion, 0.5)  # compilation (or cache load)
