@@ -768,7 +768,8 @@ def chatter_look(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data):
     choice, except ``SLIPS_FROM_REST`` where that would be a slip from rest,
     or nothing after candidates passed over: the stretch goes on either way
     (:func:`~freestand.core.dynamics.body_remedy.stretch_step`), as such a
-    slip would chatter again. ``mode`` and ``data`` are then not set.
+    slip would chatter again. ``mode`` is then not set (``data`` holds an onset's
+    where one was sought and found).
     """
     return _select(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data,
                    sc[SC_EXCLUDED], True)  # fmt: skip

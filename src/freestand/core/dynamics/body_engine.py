@@ -385,8 +385,9 @@ def _next_end(t, breaks, h_max, t_end, istate):
     The first break after t (beyond 1e-12 s) is found from the last one's
     index, ``istate[I_BREAK]``, moved forwards (or back, were t to move
     back): t grows from step to step, and the search is a step or two
-    where a binary search over the record's breaks took a dozen (some 30
-    ns a step, 4 % of a sliding cask's run).
+    where a binary search over the record's breaks took a dozen (some 35
+    ns a step in a compiled loop over it: about 0.1 ms of a sliding cask's
+    2.6 ms under a 10 s record).
     """
     end = min(t + h_max, t_end)
     k = istate[I_BREAK]
