@@ -48,8 +48,9 @@ contact; MuJoCo's contacts are soft). Both engines' states are read by
 (b) Speed, against MuJoCo at its 2 ms step in the same run (the box and
 cylinder primitives with the stiff contacts of benchmarks/mujoco_rocking.py,
 the cheapest MuJoCo model; and the contact-point model above): one body
-under the first 10 s of its record (best of several runs after compilation);
-1,000 simulations of 20 s under the 20 records (cabinet and cask, 25 levels
+under the first 10 s of its record (best of several runs after compilation,
+alternated with MuJoCo's primitive so that a slow spell of the machine falls
+on both); 1,000 simulations of 20 s under the 20 records (cabinet and cask, 25 levels
 of the suite's scale 0.1-2.5 each) on a pool of ``WORKERS`` processes.
 ``records``: each of the three bodies under every record of the suite at
 its case's scale, against MuJoCo on the same motion: the median and worst
