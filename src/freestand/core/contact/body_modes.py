@@ -771,13 +771,21 @@ def chatter_look(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data):
     slip would chatter again. ``mode`` is then not set (``data`` holds an onset's
     where one was sought and found).
     """
+    no_exclusion(sc)
     return _select(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data,
                    sc[SC_EXCLUDED], True)  # fmt: skip
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
+def no_exclusion(sc):
+    """The scratch's excluded mode (:func:`select_mode`) set to none: (-1, 0, 0)."""
+    excluded = sc[SC_EXCLUDED]
+    excluded[0], excluded[1], excluded[2] = -1, 0, 0
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _select(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, excluded, chatter):
-    """:func:`select_mode`, or with ``chatter`` :func:`chatter_look` (``excluded`` then none)."""
+    """:func:`select_mode`, or with ``chatter`` :func:`chatter_look`."""
     prepare(par, record, dt, t, y, FREE, 0, 0.0, sc)
     touching = sc[SC_TOUCHING]
     psi = touching_points(par, y, sc, gap_tol, velocity_tol, ACCELERATION, touching)
@@ -792,8 +800,6 @@ def _select(par, record, dt, t, y, sc, gap_tol, velocity_tol, mode, data, exclud
                 angles[1] = angle
     force_tol = RELATIVE_TOLERANCE * par[P_MASS] * par[P_GRAVITY]
     scales = (force_tol, RELATIVE_TOLERANCE * par[P_GRAVITY])
-    if chatter:
-        excluded[0], excluded[1], excluded[2] = -1, 0, 0
     skipped = 0  # a chatter's look: the candidates at rest whose onset it has not sought
     for slip in (0, 1):
         for c in range(count):

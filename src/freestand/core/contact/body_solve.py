@@ -85,7 +85,7 @@ from freestand.core.contact.body_kernel import (
 from freestand.core.contact.compiled import kernel
 from freestand.core.contact.face_friction import CENTRE_TOLERANCE, body_horizontal, model_centre
 from freestand.core.contact.slip_law import SLIP_FLOOR, pulled_unit
-from freestand.core.contact.vectors import norm2
+from freestand.core.contact.vectors import leading_length, norm2
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -215,7 +215,7 @@ def _kept_by_bound(par, y, sc, stored, moved, rho):
     direction), so ``s' . r >= s . r - B``.
     """
     svel = sc[SC_SVEL]
-    size = math.sqrt(svel[0] ** 2 + svel[1] ** 2 + svel[2] ** 2)
+    size = leading_length(svel, 3)
     along = svel[0] * stored[D_SLIP] + svel[1] * stored[D_SLIP + 1] + svel[2] * stored[D_SLIP + 2]
     omega_z = abs(y[12])
     change = abs(sc[SC_CENTRE][2] - rho)

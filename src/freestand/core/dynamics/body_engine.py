@@ -89,6 +89,7 @@ from freestand.core.contact.body_kernel import (
 from freestand.core.contact.body_modes import (
     NONE_ADMISSIBLE,
     impact,
+    no_exclusion,
     select_mode,
 )
 from freestand.core.contact.body_solve import solve_at, solve_at_centre
@@ -109,7 +110,6 @@ from freestand.core.dynamics.body_projection import (
 from freestand.core.dynamics.body_remedy import (
     STRETCH_STEP,
     held_row,
-    no_exclusion,
     set_free,
     stretch_start_row,
     stretch_step,

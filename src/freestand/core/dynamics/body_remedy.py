@@ -58,6 +58,7 @@ from freestand.core.contact.body_modes import (
     candidates,
     chatter_look,
     clear_candidates,
+    no_exclusion,
     select_mode,
     touching_points,
 )
@@ -249,14 +250,6 @@ def stretch_step(par, record, dt, t, h, y, mode, data, sc, gap_tol, velocity_tol
 def _horizontal_speed(y, d):
     """Horizontal speed [m/s] of the material point at arm d."""
     return math.hypot(point_velocity(y, d, 1.0, 0.0, 0.0), point_velocity(y, d, 0.0, 1.0, 0.0))
-
-
-@kernel(cache=True, error_model="numpy", _nrt=False)
-def no_exclusion(sc):
-    """The scratch's excluded mode (:func:`~freestand.core.contact.body_modes.select_mode`)
-    set to none: (-1, 0, 0)."""
-    excluded = sc[SC_EXCLUDED]
-    excluded[0], excluded[1], excluded[2] = -1, 0, 0
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
