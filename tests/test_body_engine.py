@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact import body_kernel as bk
-from freestand.core.dynamics import body_engine, body_projection, body_state
+from freestand.core.dynamics import body_engine, body_projection
 from freestand.core.dynamics.body_events import EVENT_TIME
 from freestand.core.dynamics.body_history import (
     SupportMotion3,
@@ -453,14 +453,15 @@ def test_the_rim_point_a_cylinder_rolls_on_is_the_lowest_on_the_stored_side(
     h_max=st.floats(1e-3, 0.05),
 )
 def test_a_step_ends_at_the_first_break_after_it_whatever_the_cursor(gaps, times, h_max):
-    """``_next_end`` from its cursor (``istate[I_BREAK]``) is the binary search's end, for times
-    that grow, repeat or move back."""
+    """``_next_end`` from its cursor is the binary search's end, for times that grow, repeat or
+    move back; the cursor starts where ``_first_break_after`` puts it."""
     breaks = np.cumsum(gaps)
-    istate = np.zeros(body_state.I_SIZE, dtype=np.int64)
+    cursor = np.array([body_engine._first_break_after(times[0], breaks)])
     t_end = 1.2
     for t in sorted(times) + times:
         k = np.searchsorted(breaks, t + 1e-12, side="right")  # the first break beyond t
         expected = min(t + h_max, t_end)
         if k < breaks.size and breaks[k] < expected:
             expected = breaks[k]
-        assert body_engine._next_end(t, breaks, h_max, t_end, istate) == expected
+        assert body_engine._next_end(t, breaks, h_max, t_end, cursor) == expected
+        assert body_engine._first_break_after(t, breaks) == k

@@ -125,7 +125,6 @@ from freestand.core.dynamics.body_state import (
     EV_SLIP,
     EV_START,
     EV_STICK,
-    I_BREAK,
     I_EVENTS,
     I_IMPACTS,
     I_RECORDS,
@@ -379,37 +378,52 @@ def rest_crossing(par, record, dt, t, h, rest, rot, lam, centre, g_high):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _next_end(t, breaks, h_max, t_end, istate):
+def _next_end(t, breaks, h_max, t_end, cursor):
     """End of the next step: at most h_max, never across a break of the record.
 
     The first break after t (beyond 1e-12 s) is found from the last one's
-    index, ``istate[I_BREAK]``, moved forwards (or back, were t to move
-    back): t grows from step to step, and the search is a step or two
-    where a binary search over the record's breaks took a dozen (some 35
-    ns a step in a compiled loop over it: about 0.1 ms of a sliding cask's
-    2.6 ms under a 10 s record).
+    index, ``cursor[0]`` (:func:`_first_break_after` at the loop's start),
+    moved forwards (or back, were t to move back): t grows from step to
+    step, and the search is a step or two where a binary search over the
+    record's breaks took a dozen (some 35 ns a step in a compiled loop over
+    it: about 0.1 ms of a sliding cask's 2.6 ms under a 10 s record).
     """
     end = min(t + h_max, t_end)
-    k = istate[I_BREAK]
+    k = cursor[0]
     count = breaks.shape[0]
     while k < count and breaks[k] <= t + 1e-12:
         k += 1
     while k > 0 and breaks[k - 1] > t + 1e-12:
         k -= 1
-    istate[I_BREAK] = k
+    cursor[0] = k
     if k < count and breaks[k] < end:
         end = breaks[k]
     return end
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
+def _first_break_after(t, breaks):
+    """Index of the first of the ascending ``breaks`` [s] beyond t + 1e-12 s (binary search)."""
+    lo = 0
+    hi = breaks.shape[0]
+    while lo < hi:
+        middle = (lo + hi) // 2
+        if breaks[middle] <= t + 1e-12:
+            lo = middle + 1
+        else:
+            hi = middle
+    return lo
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _rest(par, record, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mode, data, sc,
-          rest, istate, ev_time, ev_kind, ev_before, ev_after, work):  # fmt: skip
+          rest, istate, ev_time, ev_kind, ev_before, ev_after, work, cursor):  # fmt: skip
     """One step of the resting body (:func:`rest_step`) and, where a margin fired, its event.
 
-    Returns t + the step taken; the scratch holds the contact force at it.
+    Returns t + the step taken; the scratch holds the contact force at it. ``cursor``:
+    :func:`_next_end`'s.
     """
-    h = _next_end(t, breaks, h_max, t_end, istate) - t
+    h = _next_end(t, breaks, h_max, t_end, cursor) - t
     h, which = rest_step(par, record, dt, t, h, rest, sc[SC_ROT], sc[SC_LAM], sc[SC_CENTRE])
     t += h
     istate[I_STEPS] += 1
@@ -483,6 +497,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
     work_record = np.zeros(1, dtype=IMPULSE_WORK_DTYPE)
     work = work_record[0]  # the impulses' work arrays, allocated once
     fresh = False  # the step's references and event functions at (t, y) are computed
+    cursor = np.array([_first_break_after(t, breaks)])  # the next break's index (_next_end)
     count = 0
     if istate[I_RECORDS] == 0:
         none = np.array([-1, 0, 0], dtype=np.int64)
@@ -524,8 +539,8 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
                 rotation_matrix(y, sc[SC_ROT])
                 rest_ready = True
             t = _rest(par, record_, dt, breaks, h_max, t_end, gap_tol, velocity_tol, t, y, mode,
-                      data, sc, rest, istate, ev_time, ev_kind, ev_before, ev_after,
-                      work)  # fmt: skip
+                      data, sc, rest, istate, ev_time, ev_kind, ev_before, ev_after, work,
+                      cursor)  # fmt: skip
             rest_ready = resting(mode, y, velocity_tol)
             record(t, y, mode, sc, istate[I_RECORDS], out_t, out_y, out_mode, out_force)
             if istate[I_STRETCH] == 1:
@@ -542,7 +557,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         # the held mode not admissible at its start, or its step past a pole: the remedy
         remedy = inconsistent_start(par, count, start_values, kinds) >= 0
         if not remedy:
-            h = min(_next_end(t, breaks, h_max, t_end, istate) - t,
+            h = min(_next_end(t, breaks, h_max, t_end, cursor) - t,
                     closing_step(par, y, mode, sc, ref), turn_step(y))  # fmt: skip
             data[D_FLOOR] = slip_floor(par, mode, sc, h)
             advance(par, record_, dt, t, h, y, mode, data, sc, k, out, velocity_tol)

@@ -29,8 +29,7 @@ I_STRETCH = 6  # while a stretch of time stepping runs (the remedy): its steps s
 I_STRETCH_STEPS = 7
 I_CHATTER = 8  # 1 while the stretch is a chatter's: it ends on a stick or a slip of speed
 I_TRIALS = 9  # RK4 trials of the event searches (locate)
-I_BREAK = 10  # the index of the record's next break (body_engine._next_end's cursor)
-I_SIZE = 11
+I_SIZE = 10
 
 STATUS_RUNNING = 0
 STATUS_COMPLETED = 1
