@@ -27,7 +27,7 @@ import numpy as np
 import pytest
 
 from freestand.core.body import Body, Box
-from freestand.core.contact import body_kernel
+from freestand.core.contact import body_impulse, body_kernel
 from freestand.core.dynamics import body_engine as engine
 from freestand.core.dynamics import body_remedy, body_state
 from freestand.core.dynamics.body_history import rotation_matrices
@@ -54,8 +54,8 @@ def run_from_instant(max_step: float):
            np.empty((ROWS, 3), dtype=np.int64), np.empty((ROWS, 2)))  # fmt: skip
     events = (np.empty(ROWS),) + tuple(np.empty(ROWS, dtype=np.int64) for _ in range(3))
     engine.run(par, record, dt, breaks, max_step, t + SPAN, record.shape[1] * dt, GAP, VELOCITY,
-               t, y, mode, np.zeros(body_kernel.DATA_SIZE), np.zeros(1, body_kernel.SCRATCH_DTYPE), istate, *out,
-               *events)  # fmt: skip
+               t, y, mode, np.zeros(body_kernel.DATA_SIZE), np.zeros(1, body_kernel.SCRATCH_DTYPE),
+               np.zeros(1, body_impulse.IMPULSE_WORK_DTYPE), istate, *out, *events)  # fmt: skip
     count = min(int(istate[body_state.I_EVENTS]), ROWS)
     rows = int(istate[body_state.I_RECORDS])
     return istate, events[1][:count], out[0][:rows], out[1][:rows], out[2][:rows], out[3][:rows]

@@ -48,7 +48,6 @@ import math
 import numpy as np
 
 from freestand.core.contact.body_impulse import (
-    IMPULSE_WORK_DTYPE,
     MAX_POINTS,
     base_points,
     restitution_velocity,
@@ -464,13 +463,18 @@ def _start_remedy(par, t, y, mode, sc, gap_tol, velocity_tol, istate, patch, ev_
 
 @kernel(cache=True, error_model="numpy", _nrt=True)
 def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol, t, y, mode,
-        data, scratch, istate, out_t, out_y, out_mode, out_force, ev_time, ev_kind, ev_before,
-        ev_after):  # fmt: skip
+        data, scratch, impulse_work, istate, out_t, out_y, out_mode, out_force, ev_time, ev_kind,
+        ev_before, ev_after):  # fmt: skip
     """The loop: advance, locate, resolve, record, from t to t_end.
 
     ``scratch`` is a one-element array of
     :data:`~freestand.core.contact.body_kernel.SCRATCH_DTYPE`, its record the
-    kernel's scratch, owned by the caller. Returns the time reached;
+    kernel's scratch; ``impulse_work`` one of
+    :data:`~freestand.core.contact.body_impulse.IMPULSE_WORK_DTYPE`, its record
+    the impulses' work arrays. Both are owned by the caller: a record taken
+    from an array the loop allocated itself would point into freed memory, as
+    numba frees an array after its last use, not the record's. Returns the
+    time reached;
     ``istate[I_STATUS]`` says why it stopped (completed, overturned, or the
     output buffer full: call again with larger buffers from the returned time
     and state).
@@ -494,8 +498,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
     impulses = np.zeros((MAX_POINTS, 3))  # a stretch's step's impulses: the next one's start
     # the last slip restart's time [s], restarts in a row; the same for impacts (watch_chatter)
     chatter = np.array([-math.inf, 0.0, -math.inf, 0.0])
-    work_record = np.zeros(1, dtype=IMPULSE_WORK_DTYPE)
-    work = work_record[0]  # the impulses' work arrays, allocated once
+    work = impulse_work[0]  # the impulses' work arrays
     fresh = False  # the step's references and event functions at (t, y) are computed
     cursor = np.array([_first_break_after(t, breaks)])  # the next break's index (_next_end)
     count = 0

@@ -15,6 +15,7 @@ import numba as nb
 import numpy as np
 
 from freestand.core.body import Body, Box
+from freestand.core.contact.body_impulse import IMPULSE_WORK_DTYPE
 from freestand.core.contact.body_kernel import (
     DATA_SIZE,
     FACE,
@@ -321,6 +322,7 @@ def simulate_body(
     data = np.zeros(DATA_SIZE)
     istate = np.zeros(body_state.I_SIZE, dtype=np.int64)
     scratch = np.zeros(1, dtype=SCRATCH_DTYPE)  # its record is the kernel's scratch
+    impulse_work = np.zeros(1, dtype=IMPULSE_WORK_DTYPE)  # its record the impulses' work arrays
     capacity = _capacity(end, step, breaks)
     buffers = _buffers(capacity)
     events = _event_buffers(capacity)
@@ -328,8 +330,8 @@ def simulate_body(
     chunks = []
     while True:
         t = engine.run(par, record, motion.time_step, breaks, step, end, motion.duration,
-                       tolerances.gap, tolerances.velocity, t, y, mode, data, scratch, istate,
-                       *buffers, *events)  # fmt: skip
+                       tolerances.gap, tolerances.velocity, t, y, mode, data, scratch,
+                       impulse_work, istate, *buffers, *events)  # fmt: skip
         if istate[body_state.I_STATUS] != body_state.STATUS_BUFFER_FULL:
             rows = int(istate[body_state.I_RECORDS])
             chunks.append((buffers[0][:rows], buffers[1][:rows], buffers[2][:rows],

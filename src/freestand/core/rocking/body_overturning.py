@@ -62,6 +62,7 @@ import numba as nb
 import numpy as np
 
 from freestand.core.body import Body, Box, base_ray_distance
+from freestand.core.contact.body_impulse import IMPULSE_WORK_DTYPE
 from freestand.core.contact.body_kernel import (
     DATA_SIZE,
     P_MASS,
@@ -338,7 +339,7 @@ def _inertial_work(par, record, dt, out_t, out_y, count):
 
 @nb.njit(cache=True)
 def _run_to(par, record, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol, t, y,
-            mode, data, scratch, istate, buffers, events, work):  # fmt: skip
+            mode, data, scratch, impulse_work, istate, buffers, events, work):  # fmt: skip
     """The engine from t to ``t_end`` (or overturning); adds the inertial work to ``work[0]``.
 
     The output buffer is reused: after each call of the engine its rows are
@@ -348,8 +349,8 @@ def _run_to(par, record, dt, breaks, h_max, t_end, record_end, gap_tol, velocity
     ev_time, ev_kind, ev_before, ev_after = events
     while True:
         t = engine.run(par, record, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol,
-                       t, y, mode, data, scratch, istate, out_t, out_y, out_mode, out_force,
-                       ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
+                       t, y, mode, data, scratch, impulse_work, istate, out_t, out_y, out_mode,
+                       out_force, ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
         last = istate[body_state.I_RECORDS] - 1
         work[0] += _inertial_work(par, record, dt, out_t, out_y, last + 1)
         out_t[0] = out_t[last]
@@ -411,6 +412,7 @@ def _pulse_outcome(context, amplitude):
     data = np.zeros(DATA_SIZE)
     istate = np.zeros(body_state.I_SIZE, dtype=np.int64)
     scratch = np.zeros(1, dtype=SCRATCH_DTYPE)  # the engine's scratch, alive for both runs
+    impulse_work = np.zeros(1, dtype=IMPULSE_WORK_DTYPE)  # the engine's impulse work arrays
     buffers = (np.zeros(_BUFFER), np.zeros((_BUFFER, STATE_SIZE)),
                np.zeros((_BUFFER, 3), dtype=np.int64), np.zeros((_BUFFER, 2)))  # fmt: skip
     events = (np.zeros(0), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64),
@@ -419,7 +421,7 @@ def _pulse_outcome(context, amplitude):
     slack = ENERGY_SLACK * (e_barrier - e_rest)
     counters[_SIMULATIONS] += 1
     t = _run_to(par, record, dt, breaks, h_max, length, length, gap_tol, velocity_tol, 0.0, y,
-                mode, data, scratch, istate, buffers, events, work)  # fmt: skip
+                mode, data, scratch, impulse_work, istate, buffers, events, work)  # fmt: skip
     e = energy(par, y)
     margin = (e - e_rest) / (e_barrier - e_rest)
     end = length + free_time
@@ -427,7 +429,7 @@ def _pulse_outcome(context, amplitude):
            and t < end and _sound(e, e_rest, work, slack)):  # fmt: skip
         t_next = min(t + _CHECK_STEPS * h_max, end)
         t = _run_to(par, record, dt, breaks, h_max, t_next, length, gap_tol, velocity_tol, t, y,
-                    mode, data, scratch, istate, buffers, events, work)  # fmt: skip
+                    mode, data, scratch, impulse_work, istate, buffers, events, work)  # fmt: skip
         e = energy(par, y)
     counters[_REMEDIES] += istate[body_state.I_REMEDIES]
     counters[_STRETCH_STEPS] += istate[body_state.I_STRETCH_STEPS]
