@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact.body_impulse import (
     ENDED_POLISHED,
+    ENDED_STUCK,
     MAX_POINTS,
     POLISH_TOLERANCE,
     base_points,
@@ -295,3 +296,76 @@ def test_kinetic_energy_is_half_m_v2_plus_half_omega_i_omega(values, mass):
     )
     energy = kinetic_energy(par, np.linalg.inv(inertia), velocity)
     assert energy == pytest.approx(expected, rel=1e-10, abs=1e-12 * mass)  # [J]
+
+
+def _edge_impact(mu, velocity, warm=None):
+    """A box 1.0 x 0.6 x 2.0 m tilted 0.05 rad onto its edge along y: its two corners."""
+    par, inv, arms, after, impulses, scale = _impact("box", mu, 0.05, 0.5 * math.pi, velocity)
+    assert len(arms) == 2
+    if warm is not None:
+        after, impulses = np.array(velocity, dtype=float), warm.copy()
+        result = point_impulses(par, inv, arms, 2, mu, after, impulses, new_impulse_work())
+        return par, inv, arms, after, impulses, scale, result
+    return par, inv, arms, after, impulses, scale, None
+
+
+def _turn_about_the_edge(par, inv, arms, velocity):
+    """The velocity of the turn about the line through the two points nearest ``velocity`` in
+    the kinetic energy's metric, M = diag(m, m, m, I_w), from numpy's own inverse."""
+    u = (arms[0] - arms[1]) / np.linalg.norm(arms[0] - arms[1])
+    xi = np.concatenate([np.cross(arms[0], u), u])
+    mass = np.zeros((6, 6))
+    mass[:3, :3] = par[0] * np.eye(3)
+    mass[3:, 3:] = np.linalg.inv(inv)
+    return xi * (xi @ mass @ velocity) / (xi @ mass @ xi)
+
+
+@pytest.mark.parametrize(
+    "velocity",
+    [
+        [0.01, 0.0, -0.05, 0.0, 0.2, 0.0],  # landing on the edge, rocking about it
+        [0.02, 0.01, -0.1, 0.05, 0.3, -0.02],  # with a little twist and slide
+    ],
+)
+def test_two_points_that_stick_are_solved_in_closed_form(velocity):
+    """An edge's two corners that both stick (friction 0.9): the body turns about the edge.
+    The closed form gives that turn, the velocity nearest the one before in the kinetic
+    energy's metric, with both corners at rest and their impulses inside the cone."""
+    mu = 0.9
+    par, inv, arms, after, impulses, scale, _ = _edge_impact(mu, velocity)
+    _, _, _, _, _, _, (sweeps, how) = _edge_impact(mu, velocity, np.zeros((2, 3)))
+    assert (sweeps, how) == (0, ENDED_STUCK)
+    expected = _turn_about_the_edge(par, inv, arms, np.array(velocity))
+    assert np.allclose(after, expected, rtol=0.0, atol=1e-12 * scale)
+    assert np.all(np.abs(_point_velocities(after, arms)) <= 1e-12 * scale)
+    assert np.all(impulses[:, 2] > 0.0)
+    assert np.all(np.linalg.norm(impulses[:, :2], axis=1) <= mu * impulses[:, 2] * (1 + 1e-12))
+    # the impulses are the change of momentum: sum P = m (v+ - v), sum r x P = I_w (w+ - w)
+    change = after - np.array(velocity)
+    assert np.allclose(impulses.sum(axis=0), par[0] * change[:3], rtol=1e-12, atol=1e-12)
+    torque = np.cross(arms, impulses).sum(axis=0)
+    assert np.allclose(torque, np.linalg.solve(inv, change[3:]), rtol=1e-9, atol=1e-12)
+
+
+def test_two_sticking_points_keep_the_impulse_along_their_line_from_the_start():
+    """W is singular along the line through the two points: the impulse moved along it moves
+    nothing. The closed form keeps the start's (the step before's, as the remedy's stretch
+    passes it) where it is inside both cones, and the velocity does not depend on it."""
+    mu, velocity = 0.9, [0.01, 0.0, -0.05, 0.0, 0.2, 0.0]
+    par, inv, arms, cold, impulses, scale, _ = _edge_impact(mu, velocity)
+    u = (arms[0] - arms[1]) / np.linalg.norm(arms[0] - arms[1])
+    shift = 0.05 * np.linalg.norm(impulses[0]) * u
+    start = impulses + np.vstack([shift, -shift])
+    _, _, _, warm, kept, _, (_, how) = _edge_impact(mu, velocity, start)
+    assert how == ENDED_STUCK
+    assert np.allclose(kept, start, rtol=0.0, atol=1e-12 * par[0] * scale)
+    assert np.allclose(warm, cold, rtol=0.0, atol=1e-14 * scale)
+
+
+def test_two_points_that_cannot_both_stick_go_to_the_sweeps():
+    """With little friction the turn about the edge needs more than the cone holds: the
+    sweeps and the polish solve it (a corner slides), as before the closed form."""
+    velocity = [0.3, 0.0, -0.05, 0.0, 0.2, 0.0]  # a fast slide along x as it lands
+    _, _, _, _, _, _, (_, how) = _edge_impact(0.05, velocity, np.zeros((2, 3)))
+    assert how != ENDED_STUCK
+    _assert_contact_laws("box", 0.05, 0.05, 0.5 * math.pi, velocity)

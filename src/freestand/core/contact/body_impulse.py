@@ -33,7 +33,11 @@ and Jean (1999) do (the scheme of Siconos), which always has a solution:
   impulse to zero), and its solution taken where it meets every law at
   every point to ``POLISH_TOLERANCE``;
   from a start with impulses (the remedy's step before's) it is tried
-  first, before any sweep.
+  first, before any sweep;
+- two points (an edge's corners) that can both stick are solved in closed
+  form first (:func:`_two_points_stick`): the body then turns about the
+  line through them, and the impulse along that line, which moves nothing,
+  is chosen inside both cones.
 
 With Coulomb's law met, a plastic impact never gains kinetic energy (the
 change is ``P . u_after - P.W.P / 2 <= 0``); sweeps stopped short of it
@@ -80,6 +84,7 @@ SWEEPS = 5000
 SWEEP_TOLERANCE = 1e-12  # relative change of the velocity that ends the sweeps
 POLISH_FROM = 7  # the sweeps' exact polish is tried after sweeps 8, 16, 32, ... (index 2^k - 1)
 ENDED_CONVERGED, ENDED_POLISHED, ENDED_EXHAUSTED = 0, 1, 2  # how point_impulses' sweeps ended
+ENDED_STUCK = 3  # two points, both sticking: their closed form (_two_points_stick), no sweep
 POLISH_TOLERANCE = 1e-10  # the polish's laws, relative to the speed (and to m times it)
 SUBSET_POINTS = 4  # where this many points press or fewer, every subset of them is polished
 
@@ -421,6 +426,94 @@ def _warm(impulses, count):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
+def _cone_interval(origin, along, mu):
+    """The interval of s [N s] where ``P = origin + s along`` lies in the cone ``|P_t| <= mu P_n``.
+
+    ``origin`` (3,) (x, y, n), ``along`` (3,) a unit vector. The cone's
+    quadratic ``|P_t(s)|^2 - mu^2 P_n(s)^2 <= 0`` on the nappe ``P_n >= 0``;
+    (lo, hi) with lo > hi where the line misses it, or where ``along`` lies
+    inside the double cone (the interval would be unbounded: never for two
+    points on the support, whose line is nearly horizontal).
+    """
+    a = along[0] ** 2 + along[1] ** 2 - mu * mu * along[2] ** 2
+    b = origin[0] * along[0] + origin[1] * along[1] - mu * mu * origin[2] * along[2]
+    c = origin[0] ** 2 + origin[1] ** 2 - mu * mu * origin[2] ** 2
+    discriminant = b * b - a * c
+    if not (a > 0.0 and discriminant >= 0.0):
+        return 1.0, -1.0
+    root = math.sqrt(discriminant)
+    lo, hi = (-b - root) / a, (-b + root) / a
+    if origin[2] + 0.5 * (lo + hi) * along[2] < 0.0:  # the lower nappe
+        return 1.0, -1.0
+    return lo, hi
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _two_points_stick(par, inv_inertia, arms, mu, velocity, impulses, work):
+    """Two points that both stick, in closed form; False (nothing changed) where they cannot.
+
+    With both points at rest after the impact the body turns about the line
+    through them, axis u = (a - b)/|a - b| (arms a, b from G): the velocity
+    after is the one of that motion, xi = (a x u, u), nearest the velocity
+    before in the kinetic energy's metric, ``kappa xi`` with ``kappa = xi^T M
+    v / xi^T M xi`` (a plastic impact; it never gains energy). The impulse
+    ``M (v+ - v)`` = (F, T about G) splits into ``P_a + P_b = F``, ``a x P_a
+    + b x P_b = T``: ``P_a = ((T - b x F) x (a - b)) / |a - b|^2 + s u`` for
+    any s, which moves nothing (W is singular along u). The points stick
+    where an s puts both impulses in their cones (:func:`_cone_interval`);
+    s is then the start's own (``impulses`` on entry: the step before's),
+    kept in both intervals. That solves the impact's laws exactly (Moreau
+    1988): normal impulses >= 0 where the points are at rest, tangential
+    ones in the circular cone. ``velocity`` (6) and ``impulses`` (2, 3) are
+    replaced where True. ``work``: a record of ``IMPULSE_WORK_DTYPE``.
+    """
+    if not mu > 0.0:
+        return False
+    a, b = arms[0], arms[1]
+    dx, dy, dz = a[0] - b[0], a[1] - b[1], a[2] - b[2]
+    length = math.sqrt(dx * dx + dy * dy + dz * dz)
+    if length == 0.0:
+        return False
+    ux, uy, uz = dx / length, dy / length, dz / length
+    m = par[P_MASS]
+    lx, ly, lz = cross(a[0], a[1], a[2], ux, uy, uz)  # xi's velocity of G
+    iux, iuy, iuz = inertia_times(inv_inertia, ux, uy, uz)
+    iwx, iwy, iwz = inertia_times(inv_inertia, velocity[3], velocity[4], velocity[5])
+    norm = m * (lx * lx + ly * ly + lz * lz) + ux * iux + uy * iuy + uz * iuz
+    kappa = (m * (lx * velocity[0] + ly * velocity[1] + lz * velocity[2])
+             + ux * iwx + uy * iwy + uz * iwz) / norm  # fmt: skip
+    fx, fy, fz = m * (kappa * lx - velocity[0]), m * (kappa * ly - velocity[1]), m * (
+        kappa * lz - velocity[2])  # fmt: skip
+    bx, by, bz = cross(b[0], b[1], b[2], fx, fy, fz)
+    tx, ty, tz = kappa * iux - iwx - bx, kappa * iuy - iwy - by, kappa * iuz - iwz - bz
+    px, py, pz = cross(tx, ty, tz, dx, dy, dz)
+    origin_a, origin_b, along = work["trial"][0], work["trial"][1], work["probe"]
+    scale = 1.0 / (length * length)
+    origin_a[0], origin_a[1], origin_a[2] = px * scale, py * scale, pz * scale
+    origin_b[0], origin_b[1], origin_b[2] = fx - origin_a[0], fy - origin_a[1], fz - origin_a[2]
+    along[0], along[1], along[2] = ux, uy, uz
+    lo_a, hi_a = _cone_interval(origin_a, along, mu)
+    along[0], along[1], along[2] = -ux, -uy, -uz
+    lo_b, hi_b = _cone_interval(origin_b, along, mu)
+    lo, hi = max(lo_a, -hi_b), min(hi_a, -lo_b)  # s along u for a, -s along -u for b
+    if not lo <= hi:
+        return False
+    if _warm(impulses, 2):
+        s = ((impulses[0, 0] - origin_a[0]) * ux + (impulses[0, 1] - origin_a[1]) * uy
+             + (impulses[0, 2] - origin_a[2]) * uz)  # fmt: skip
+        s = min(max(s, lo), hi)
+    else:
+        s = 0.5 * (lo + hi)
+    along[0], along[1], along[2] = ux, uy, uz
+    for i in range(3):
+        impulses[0, i] = origin_a[i] + s * along[i]
+        impulses[1, i] = origin_b[i] - s * along[i]
+    velocity[0], velocity[1], velocity[2] = kappa * lx, kappa * ly, kappa * lz
+    velocity[3], velocity[4], velocity[5] = kappa * ux, kappa * uy, kappa * uz
+    return True
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses, work):
     """Plastic impulses at the points with Coulomb friction on the circular cone.
 
@@ -441,12 +534,16 @@ def point_impulses(par, inv_inertia, arms, count, mu, velocity, impulses, work):
     iterations (a rocking cabinet's stretches under a record: 1,067 of
     1,096 such starts), where the sweeps alone do not converge (the edge's
     corners: a singular W) and eight of them came before every polish.
+    Two points that can both stick are solved in closed form first
+    (:func:`_two_points_stick`; no sweep, ``ENDED_STUCK``).
     Returns the number of sweeps made (0: polished from the start) and how
     they ended: ``ENDED_CONVERGED``
     (the sweeps' change fell below ``SWEEP_TOLERANCE``), ``ENDED_POLISHED``
     or ``ENDED_EXHAUSTED`` (``SWEEPS`` made: the laws are met only as far as
     the sweeps came). ``work``: a record of ``IMPULSE_WORK_DTYPE``.
     """
+    if count == 2 and _two_points_stick(par, inv_inertia, arms, mu, velocity, impulses, work):
+        return 0, ENDED_STUCK
     start = work["start"]
     delassus = work["point_delassus"]
     stiffness = work["stiffness"]
