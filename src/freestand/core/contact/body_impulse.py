@@ -493,9 +493,8 @@ def _two_points_stick(par, inv_inertia, arms, mu, velocity, impulses, work):
     origin_b[0], origin_b[1], origin_b[2] = fx - origin_a[0], fy - origin_a[1], fz - origin_a[2]
     along[0], along[1], along[2] = ux, uy, uz
     lo_a, hi_a = _cone_interval(origin_a, along, mu)
-    along[0], along[1], along[2] = -ux, -uy, -uz
-    lo_b, hi_b = _cone_interval(origin_b, along, mu)
-    lo, hi = max(lo_a, -hi_b), min(hi_a, -lo_b)  # s along u for a, -s along -u for b
+    lo_b, hi_b = _cone_interval(origin_b, along, mu)  # P_b = origin_b - s u: s in -[lo_b, hi_b]
+    lo, hi = max(lo_a, -hi_b), min(hi_a, -lo_b)
     if not lo <= hi:
         return False
     if _warm(impulses, 2):
@@ -504,7 +503,6 @@ def _two_points_stick(par, inv_inertia, arms, mu, velocity, impulses, work):
         s = min(max(s, lo), hi)
     else:
         s = 0.5 * (lo + hi)
-    along[0], along[1], along[2] = ux, uy, uz
     for i in range(3):
         impulses[0, i] = origin_a[i] + s * along[i]
         impulses[1, i] = origin_b[i] - s * along[i]
