@@ -426,24 +426,24 @@ def _warm(impulses, count):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _cone_interval(origin, along, mu):
-    """The interval of s [N s] where ``P = origin + s along`` lies in the cone ``|P_t| <= mu P_n``.
+def _cone_interval(ox, oy, on, ux, uy, un, mu):
+    """The interval of s [N s] where ``P = o + s u`` lies in the cone ``|P_t| <= mu P_n``.
 
-    ``origin`` (3,) (x, y, n), ``along`` (3,) a unit vector. The cone's
-    quadratic ``|P_t(s)|^2 - mu^2 P_n(s)^2 <= 0`` on the nappe ``P_n >= 0``;
-    (lo, hi) with lo > hi where the line misses it, or where ``along`` lies
-    inside the double cone (the interval would be unbounded: never for two
-    points on the support, whose line is nearly horizontal).
+    ``o`` = (ox, oy, on) (x, y, n), ``u`` a unit vector. The cone's quadratic
+    ``|P_t(s)|^2 - mu^2 P_n(s)^2 <= 0`` on the nappe ``P_n >= 0``; (lo, hi)
+    with lo > hi where the line misses it, or where ``u`` lies inside the
+    double cone (the interval would be unbounded: never for two points on the
+    support, whose line is nearly horizontal).
     """
-    a = along[0] ** 2 + along[1] ** 2 - mu * mu * along[2] ** 2
-    b = origin[0] * along[0] + origin[1] * along[1] - mu * mu * origin[2] * along[2]
-    c = origin[0] ** 2 + origin[1] ** 2 - mu * mu * origin[2] ** 2
+    a = ux * ux + uy * uy - mu * mu * un * un
+    b = ox * ux + oy * uy - mu * mu * on * un
+    c = ox * ox + oy * oy - mu * mu * on * on
     discriminant = b * b - a * c
     if not (a > 0.0 and discriminant >= 0.0):
         return 1.0, -1.0
     root = math.sqrt(discriminant)
     lo, hi = (-b - root) / a, (-b + root) / a
-    if origin[2] + 0.5 * (lo + hi) * along[2] < 0.0:  # the lower nappe
+    if on + 0.5 * (lo + hi) * un < 0.0:  # the lower nappe
         return 1.0, -1.0
     return lo, hi
 
@@ -453,19 +453,19 @@ def _two_points_stick(par, inv_inertia, arms, mu, velocity, impulses, work):
     """Two points that both stick, in closed form; False (nothing changed) where they cannot.
 
     With both points at rest after the impact the body turns about the line
-    through them, axis u = (a - b)/|a - b| (arms a, b from G): the velocity
-    after is the one of that motion, xi = (a x u, u), nearest the velocity
-    before in the kinetic energy's metric, ``kappa xi`` with ``kappa = xi^T M
-    v / xi^T M xi`` (a plastic impact; it never gains energy). The impulse
-    ``M (v+ - v)`` = (F, T about G) splits into ``P_a + P_b = F``, ``a x P_a
-    + b x P_b = T``: ``P_a = ((T - b x F) x (a - b)) / |a - b|^2 + s u`` for
-    any s, which moves nothing (W is singular along u). The points stick
-    where an s puts both impulses in their cones (:func:`_cone_interval`);
-    s is then the start's own (``impulses`` on entry: the step before's),
-    kept in both intervals. That solves the impact's laws exactly (Moreau
-    1988): normal impulses >= 0 where the points are at rest, tangential
-    ones in the circular cone. ``velocity`` (6) and ``impulses`` (2, 3) are
-    replaced where True. ``work``: a record of ``IMPULSE_WORK_DTYPE``.
+    through them (arms a, b from G, axis u = (a - b)/|a - b|): the velocity
+    after is that turn's part of the velocity before in the kinetic
+    energy's metric (:func:`turn_about_line`; a plastic impact, it never
+    gains energy). The impulse ``M (v+ - v)`` = (F, T about G) splits into
+    ``P_a + P_b = F``, ``a x P_a + b x P_b = T``: ``P_a = ((T - b x F) x (a
+    - b)) / |a - b|^2 + s u`` for any s, which moves nothing (W is singular
+    along u). The points stick where an s puts both impulses in their cones
+    (:func:`_cone_interval`); s is then the start's own (``impulses`` on
+    entry: the step before's), kept in both intervals. That solves the
+    impact's laws exactly (Moreau 1988): normal impulses >= 0 where the
+    points are at rest, tangential ones in the circular cone. ``velocity``
+    (6) and ``impulses`` (2, 3) are replaced where True. ``work``: a record
+    of ``IMPULSE_WORK_DTYPE``.
     """
     if not mu > 0.0:
         return False
@@ -475,39 +475,33 @@ def _two_points_stick(par, inv_inertia, arms, mu, velocity, impulses, work):
     if length == 0.0:
         return False
     ux, uy, uz = dx / length, dy / length, dz / length
+    after = work["after"]
+    turn_about_line(par, inv_inertia, arms, 2, velocity, after)
     m = par[P_MASS]
-    lx, ly, lz = cross(a[0], a[1], a[2], ux, uy, uz)  # xi's velocity of G
-    iux, iuy, iuz = inertia_times(inv_inertia, ux, uy, uz)
-    iwx, iwy, iwz = inertia_times(inv_inertia, velocity[3], velocity[4], velocity[5])
-    norm = m * (lx * lx + ly * ly + lz * lz) + ux * iux + uy * iuy + uz * iuz
-    kappa = (m * (lx * velocity[0] + ly * velocity[1] + lz * velocity[2])
-             + ux * iwx + uy * iwy + uz * iwz) / norm  # fmt: skip
-    fx, fy, fz = m * (kappa * lx - velocity[0]), m * (kappa * ly - velocity[1]), m * (
-        kappa * lz - velocity[2])  # fmt: skip
+    fx, fy, fz = m * (after[0] - velocity[0]), m * (after[1] - velocity[1]), m * (
+        after[2] - velocity[2])  # fmt: skip
+    tx, ty, tz = inertia_times(inv_inertia, after[3] - velocity[3], after[4] - velocity[4],
+                               after[5] - velocity[5])  # fmt: skip
     bx, by, bz = cross(b[0], b[1], b[2], fx, fy, fz)
-    tx, ty, tz = kappa * iux - iwx - bx, kappa * iuy - iwy - by, kappa * iuz - iwz - bz
-    px, py, pz = cross(tx, ty, tz, dx, dy, dz)
-    origin_a, origin_b, along = work["trial"][0], work["trial"][1], work["probe"]
+    px, py, pz = cross(tx - bx, ty - by, tz - bz, dx, dy, dz)
     scale = 1.0 / (length * length)
-    origin_a[0], origin_a[1], origin_a[2] = px * scale, py * scale, pz * scale
-    origin_b[0], origin_b[1], origin_b[2] = fx - origin_a[0], fy - origin_a[1], fz - origin_a[2]
-    along[0], along[1], along[2] = ux, uy, uz
-    lo_a, hi_a = _cone_interval(origin_a, along, mu)
-    lo_b, hi_b = _cone_interval(origin_b, along, mu)  # P_b = origin_b - s u: s in -[lo_b, hi_b]
+    ax, ay, an = px * scale, py * scale, pz * scale  # P_a at s = 0
+    lo_a, hi_a = _cone_interval(ax, ay, an, ux, uy, uz, mu)
+    # P_b = F - P_a = (F - P_a(0)) - s u: s in -[lo_b, hi_b]
+    lo_b, hi_b = _cone_interval(fx - ax, fy - ay, fz - an, ux, uy, uz, mu)
     lo, hi = max(lo_a, -hi_b), min(hi_a, -lo_b)
     if not lo <= hi:
         return False
     if _warm(impulses, 2):
-        s = ((impulses[0, 0] - origin_a[0]) * ux + (impulses[0, 1] - origin_a[1]) * uy
-             + (impulses[0, 2] - origin_a[2]) * uz)  # fmt: skip
+        s = (impulses[0, 0] - ax) * ux + (impulses[0, 1] - ay) * uy + (impulses[0, 2] - an) * uz
         s = min(max(s, lo), hi)
     else:
         s = 0.5 * (lo + hi)
-    for i in range(3):
-        impulses[0, i] = origin_a[i] + s * along[i]
-        impulses[1, i] = origin_b[i] - s * along[i]
-    velocity[0], velocity[1], velocity[2] = kappa * lx, kappa * ly, kappa * lz
-    velocity[3], velocity[4], velocity[5] = kappa * ux, kappa * uy, kappa * uz
+    impulses[0, 0], impulses[0, 1], impulses[0, 2] = ax + s * ux, ay + s * uy, an + s * uz
+    impulses[1, 0], impulses[1, 1], impulses[1, 2] = fx - impulses[0, 0], fy - impulses[0, 1], (
+        fz - impulses[0, 2])  # fmt: skip
+    for i in range(6):
+        velocity[i] = after[i]
     return True
 
 

@@ -403,15 +403,7 @@ def _next_end(t, breaks, h_max, t_end, cursor):
 @kernel(cache=True, error_model="numpy", _nrt=False)
 def _first_break_after(t, breaks):
     """Index of the first of the ascending ``breaks`` [s] beyond t + 1e-12 s (binary search)."""
-    lo = 0
-    hi = breaks.shape[0]
-    while lo < hi:
-        middle = (lo + hi) // 2
-        if breaks[middle] <= t + 1e-12:
-            lo = middle + 1
-        else:
-            hi = middle
-    return lo
+    return np.searchsorted(breaks, t + 1e-12, side="right")
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
