@@ -128,12 +128,16 @@ M_INDEX = 1
 M_SLIP = 2  # 0 stick, 1 slip
 # mode data (float64, DATA_SIZE): rim angle psi of a cylinder's pivot [rad], slip direction
 # (3), 1.0 where the slip starts from rest (its onset direction; 0.0 for a slip under way),
-# and the step's slip floor [m/s] (0.0: SLIP_FLOOR; see unit_slip)
+# the step's slip floor [m/s] (0.0: SLIP_FLOOR; see unit_slip), and a flat base's slow slip
+# pulled along the step (1.0, else 0.0) with its rate without friction [m/s^2] at the
+# step's start (3; body_step.start_pulled_slip)
 D_PSI = 0
 D_SLIP = 1
 D_ONSET = 4
 D_FLOOR = 5
-DATA_SIZE = 6
+D_PULL = 6
+D_PULL_FREE = 7
+DATA_SIZE = 10
 MAX_CANDIDATES = 9  # candidate patches of a contact mode at most (body_modes.candidates)
 
 STATE_SIZE = 13  # r (3), q (4), v (3), omega (3)

@@ -56,6 +56,7 @@ from freestand.core.contact.body_impulse import (
 from freestand.core.contact.body_kernel import (
     D_FLOOR,
     D_PSI,
+    D_PULL,
     EDGE,
     FACE,
     FREE,
@@ -151,7 +152,9 @@ from freestand.core.dynamics.body_step import (
     may_pass_a_pole,
     resting,
     slip_floor,
+    slow_face_slip,
     start_functions,
+    start_pulled_slip,
     turn_step,
 )
 
@@ -552,14 +555,21 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
         # the held mode not admissible at its start, or its step past a pole: the remedy
         remedy = inconsistent_start(par, count, start_values, kinds) >= 0
         if not remedy:
-            h = min(_next_end(t, breaks, h_max, t_end, cursor) - t,
-                    closing_step(par, y, mode, sc, ref), turn_step(y))  # fmt: skip
+            h = min(_next_end(t, breaks, h_max, t_end, cursor) - t, turn_step(y))
+            pulled = slow_face_slip(par, record_, dt, t, h, mode, data, sc)
+            h = min(h, closing_step(par, y, mode, sc, ref, pulled))
             data[D_FLOOR] = slip_floor(par, mode, sc, h)
+            if pulled and start_pulled_slip(par, record_, dt, t, h, mode, data, sc):
+                # a slow flat base's slip driven on, pulled to its rate without friction's
+                # direction at each stage: the start solved again
+                count = start_functions(par, record_, dt, t, y, mode, data, sc, ref,
+                                        velocity_tol, start_values, kinds)  # fmt: skip
             advance(par, record_, dt, t, h, y, mode, data, sc, k, out, velocity_tol)
             h, which, trials = locate(par, record_, dt, t, h, y, mode, data, sc, k, ref,
                                       start_values, count, trial, values, kinds, bracket,
                                       out)  # fmt: skip
             istate[I_TRIALS] += trials
+            data[D_PULL] = 0.0
             remedy = may_pass_a_pole(mode) and energy_jump(par, record_, dt, t, h, y, out,
                                                            work_rot, energy)  # fmt: skip
         if remedy:

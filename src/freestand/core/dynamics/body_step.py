@@ -17,6 +17,8 @@ import math
 from freestand.core.contact.body_kernel import (
     D_FLOOR,
     D_PSI,
+    D_PULL,
+    D_PULL_FREE,
     D_SLIP,
     EDGE,
     FACE,
@@ -26,12 +28,14 @@ from freestand.core.contact.body_kernel import (
     M_SLIP,
     P_GRAVITY,
     P_HALF_X,
+    P_INERTIA,
     P_MASS,
     P_MU_KINETIC,
     P_SHAPE,
     PIVOT_LEAN,
     POINT,
     SC_ACC,
+    SC_ARMS,
     SC_CENTRE,
     SC_DIR,
     SC_INV,
@@ -112,14 +116,19 @@ def _rk4(par, record, dt, t, h, y, mode, data, sc, k, out):
     """
     stage = k[4]
     ok = True
+    pulled = data[D_PULL] == 1.0
     for i in range(STATE_SIZE):
         stage[i] = y[i] + 0.5 * h * k[0, i]
+    if pulled:
+        pulled_direction(record, dt, t, 0.5 * h, data)
     ok &= rate(par, record, dt, t + 0.5 * h, stage, mode, data, sc, k[1])
     for i in range(STATE_SIZE):
         stage[i] = y[i] + 0.5 * h * k[1, i]
     ok &= rate(par, record, dt, t + 0.5 * h, stage, mode, data, sc, k[2])
     for i in range(STATE_SIZE):
         stage[i] = y[i] + h * k[2, i]
+    if pulled:
+        pulled_direction(record, dt, t, h, data)
     ok &= rate(par, record, dt, t + h, stage, mode, data, sc, k[3])
     for i in range(STATE_SIZE):
         out[i] = y[i] + h / 6.0 * (k[0, i] + 2.0 * k[1, i] + 2.0 * k[2, i] + k[3, i])
@@ -149,7 +158,12 @@ def advance(par, record, dt, t, h, y, mode, data, sc, k, out, velocity_tol):
         for i in range(STATE_SIZE):
             out[i] = y[i]
         return True
-    state_rate(y, sc[SC_ACC], k[0])
+    if data[D_PULL] == 1.0:
+        # a slow flat base's slip: its first stage along its direction at the start
+        pulled_direction(record, dt, t, 0.0, data)
+        rate(par, record, dt, t, y, mode, data, sc, k[0])
+    else:
+        state_rate(y, sc[SC_ACC], k[0])
     return _rk4(par, record, dt, t, h, y, mode, data, sc, k, out)
 
 
@@ -386,8 +400,12 @@ def turn_step(y):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def closing_step(par, y, mode, sc, ref):
+def closing_step(par, y, mode, sc, ref, pulled):
     """Largest step [s] that cannot step over the closing of a gap and its reopening.
+
+    ``pulled``: a flat base's slow slip driven on by the support is pulled
+    to the direction of its rate without friction (:func:`slow_face_slip`);
+    its turn does not bound the step (:func:`_slip_turn_time`).
 
     A point that lifts by a little flies for a short time (a cylinder rocking
     by 1e-4 rad lands again within some 10 ms): a step longer than the flight
@@ -422,7 +440,7 @@ def closing_step(par, y, mode, sc, ref):
     wx, wy, wz = y[10], y[11], y[12]
     earliest = math.inf
     if mode[M_SLIP] == 1:
-        earliest = _slip_turn_time(par, mode, sc)
+        earliest = _slip_turn_time(par, mode, sc, pulled)
     d = sc[SC_PROBE][0]
     if par[P_SHAPE] == SHAPE_BOX:
         if kind == FACE:
@@ -471,7 +489,7 @@ def closing_step(par, y, mode, sc, ref):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _slip_turn_time(par, mode, sc):
+def _slip_turn_time(par, mode, sc, pulled):
     """Time [s] in which a slip's velocity could stop or turn: |s| / |s'| times SLIP_FRACTION.
 
     The kinetic friction follows the slip's direction, which turns quickly as
@@ -480,31 +498,37 @@ def _slip_turn_time(par, mode, sc):
     RK4 oscillate from step to step and gain energy. A flat base's direction
     is not coupled to a rotation: its steps are bounded by the turn alone,
     ``FACE_TURN |s| / |s'_perp|`` (s' across s; a slip slowing along its own
-    direction stops at the located slip-stop event). A slip from rest, slower
-    than ``SLIP_FLOOR``, keeps its onset's direction within the step while the
-    support's force turns: its step lasts at most ``ONSET_STEP``. Unbounded
-    (up to the next sample of the record, 5 ms), a squat cylinder's slip
-    under two components came out of its first step 50 deg off the exact
-    direction and 0.6 mm/s too fast, and slid 0.43 % too far (0.13 mm; a point
-    mass on the circular cone at 1 us steps); bounded, 0.03 %, at 6.5 % more
-    of the cask's steps (0.24 ms: 0.027 %, 10 %; 2 ms: 0.12 %, 3 %). Unbounded, a sliding
-    cask's 5 ms steps missed the quick turns of its slow slips: its path
-    strayed 2.5 mm from a 0.1 ms run over 20 s (a 65 mm slide); bounded, 0.5
-    mm, at 27 % more steps. ``sc`` holds the rows and accelerations that
-    :func:`start_functions` just solved. A flat base's step is also bounded
-    by RK4's stability on the rate at which friction turns a slow slip,
-    ``FLOOR_STABILITY |s| / slip_stiffness`` (:func:`slip_floor`): unbounded,
-    a slip across the force grew from round-off (a squat cylinder pushed at 1
-    rad from its axes slid 1.8 % too far); bounded, the cask's path stays
-    0.05 mm from a 0.1 ms run's, where the turn bound alone left 0.47 mm.
+    direction stops at the located slip-stop event). A flat base's slow slip
+    driven on by the support (``pulled``, :func:`slow_face_slip`) is not
+    bounded by its turn: each RK4 stage pulls its friction to the direction
+    of its rate without friction at the stage's time (:func:`_rk4`), to which
+    such a slip turns within a fraction of a millisecond, and the pulled law
+    is stable at any step. Any other flat base's step is bounded by its turn,
+    and by RK4's stability on the rate at which friction turns a slow slip,
+    ``FLOOR_STABILITY |s| / slip_stiffness`` (:func:`slip_floor`), not below
+    ``FACE_MIN_STEP``, and a slip from rest slower than ``SLIP_FLOOR`` steps
+    at most ``ONSET_STEP``. Bounded so, every slip from rest crept up in some
+    twenty steps of 0.3 to 2 ms: 802 of the benchmark cask's 2,862 steps
+    under its 10 s record; pulled, it takes 2,310 steps, its peak slide
+    64.698 mm where 0.1 ms steps give 64.692 (64.700 bounded) and its path
+    within 0.031 mm of theirs (0.027 mm bounded). Pulled instead to the
+    slip's predicted direction at the step's end (the implicit step's), the
+    friction lagged the turning force: the squat cylinder of
+    ``tests/validation/test_body_planar_reduction.py`` under two turning
+    components slid 1.2 % short of the point mass on the circular cone (0.75
+    % with ``ONSET_STEP`` kept); pulled to the rate's direction, 0.12 %
+    (0.09 % bounded). Unbounded and unpulled, a squat cylinder's slip under
+    two components came out of its first step 50 deg off and slid 0.43 %
+    too far, and a slip across the force grew from round-off (a squat
+    cylinder pushed at 1 rad from its axes slid 1.8 % too far). ``sc``
+    holds the rows and accelerations that :func:`start_functions` just
+    solved.
     A rim point's step is also bounded by RK4's stability on the rate at
     which friction turns its slip, ``FLOOR_STABILITY |s| /
     point_slip_stiffness`` (:func:`slip_floor`). Not below ``SLIP_MIN_STEP``: a slip
     that dies away without reversing would otherwise take ever shorter steps
-    (its energy is then negligible); a flat base's not below ``FACE_MIN_STEP``,
-    whose slow creeps (0.1 mm/s for 10 ms, the support driving across them)
-    took a quarter of the cask's steps at 0.1 ms; at that floor a slower slip
-    keeps its step's starting direction (:func:`slip_floor`).
+    (its energy is then negligible); a flat base's faster than its floor not
+    below ``FACE_MIN_STEP``.
     A flat base's slip that slows down steps at most ``SLIP_FRACTION`` of its
     time to stop, ``|s| / (-|s|')`` (down to ``SLIP_MIN_STEP``): its steps
     shrink as it nears its stop, where its direction turns. Stepping over the
@@ -527,6 +551,12 @@ def _slip_turn_time(par, mode, sc):
         change += rate_**2
         along += rate_ * svel[k]
     if kind == FACE:
+        if pulled:
+            # pulled to its rate without friction's direction (slow_face_slip), stable at any
+            # step; a slip slowing down still steps at most a part of its time to stop
+            if along < 0.0 and speed > SLIP_FLOOR * SLIP_FLOOR:
+                return max(SLIP_FRACTION * speed / -along, SLIP_MIN_STEP) / CLOSING_OVERSHOOT
+            return math.inf
         # the turn only: s' across s; a slip from rest keeps its onset's direction within a
         # step while the support's force turns: a short step
         if speed <= SLIP_FLOOR * SLIP_FLOOR:
@@ -563,10 +593,12 @@ def slip_floor(par, mode, sc, h):
     pushed by one sine cycle at 1 rad from its axes slid 1.8 % further than
     along them, with a sideways speed of 4 mm/s (0 along them, by symmetry).
     A flat base's steps are bounded so that ``h lambda <= FLOOR_STABILITY``
-    (:func:`_slip_turn_time`) down to ``FACE_MIN_STEP``; below that, and on a
-    slip's first step from rest, the slip slower than this floor (the speed
-    at which ``h lambda = FLOOR_STABILITY``) is pulled to the step's starting
-    direction (:func:`~freestand.core.contact.body_solve.unit_slip`), which
+    (:func:`_slip_turn_time`) down to ``FACE_MIN_STEP``, unless its slow slip
+    is driven on (:func:`slow_face_slip`: then each stage pulls it to its
+    rate without friction's direction, :func:`pulled_direction`); below
+    that, and on a slip's first step from rest, the slip slower than this
+    floor (the speed at which ``h lambda = FLOOR_STABILITY``) is pulled to
+    the step's starting direction (:func:`~freestand.core.contact.body_solve.unit_slip`), which
     RK4 integrates stably, and the next step keeps that direction as its
     reference while the slip stays below the floor (:func:`references`: the
     step-by-step update to ``s/|s|`` is an explicit step on the same rate).
@@ -599,6 +631,129 @@ def slip_floor(par, mode, sc, h):
     if mode[M_KIND] == EDGE:
         return edge_slip_stiffness(par, sc) * h / FLOOR_STABILITY
     return 0.0
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _free_slip_rate(par, sc):
+    """A flat base's slip rate a_f [m/s^2] without its friction, from the solve in the scratch.
+
+    The friction's part of the solved slip rate, ``G f``, is taken off it: on
+    a flat base the tilt is held, so a horizontal friction (f_x, f_y) at the
+    friction centre's arm d and a twist row's ``rho f_t`` move the slip by
+    ``f/m`` plus the twist's ``e_z x d`` and ``rho`` times ``tau / I_zz``,
+    ``tau = d_x f_y - d_y f_x + rho f_t``. Returns its three components.
+    """
+    lam, d, rho = sc[SC_LAM], sc[SC_ARMS][3], sc[SC_CENTRE][2]
+    fx, fy, ft = lam[3], lam[4], lam[5]
+    twist_rate = (d[0] * fy - d[1] * fx + rho * ft) / par[P_INERTIA + 8]
+    acc, tangent, tbias = sc[SC_ACC], sc[SC_TANGENT], sc[SC_TBIAS]
+    return (row_acceleration(tangent, tbias, 0, acc) - (fx / par[P_MASS] - d[1] * twist_rate),
+            row_acceleration(tangent, tbias, 1, acc) - (fy / par[P_MASS] + d[0] * twist_rate),
+            row_acceleration(tangent, tbias, 2, acc) - rho * twist_rate)  # fmt: skip
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _free_slip_at(record, dt, t, tau, free):
+    """A flat base's slip rate without friction tau [s] after t [m/s^2], its three components.
+
+    ``free`` is the rate at t (:func:`_free_slip_rate`); the support's
+    horizontal acceleration moves it, linear in between (its d'Alembert
+    force, ``-m a``, acts at G: the twist's row keeps its rate).
+    """
+    a_x, a_y, _ = support_acceleration(record, dt, t)
+    b_x, b_y, _ = support_acceleration(record, dt, t + tau)
+    return free[0] - (b_x - a_x), free[1] - (b_y - a_y), free[2]
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def _free_slip_excess(par, record, dt, t, fx, fy, ft):
+    """How far the slip rate without friction (fx, fy, ft) at t exceeds the kinetic friction's
+    per unit of mass, ``mu (g - a_v)`` [m/s^2] (a flat base's normal force is the vertical
+    balance's, ``m (g - a_v)``): where it is positive the slip is driven on."""
+    _, _, a_v = support_acceleration(record, dt, t)
+    size = math.sqrt(fx * fx + fy * fy + ft * ft)
+    return size - par[P_MU_KINETIC] * (par[P_GRAVITY] - a_v)
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def pulled_direction(record, dt, t, tau, data):
+    """A pulled slow slip's direction tau [s] into its step from t, in ``data[D_SLIP:]``.
+
+    Its rate without friction's there (:func:`_free_slip_at` on the rate at
+    the step's start kept in ``data``, :func:`start_pulled_slip`). A slow
+    slip driven past the kinetic friction turns to that direction within a
+    fraction of a millisecond (its direction's rate across it is that rate's
+    part across it over its speed): each RK4 stage's friction is pulled to
+    it (:func:`_rk4`), so it follows the support's force as it turns within
+    the step, as the slip does.
+    """
+    fx, fy, ft = _free_slip_at(record, dt, t, tau, data[D_PULL_FREE : D_PULL_FREE + 3])
+    size = math.sqrt(fx * fx + fy * fy + ft * ft)
+    if size > 0.0:
+        data[D_SLIP], data[D_SLIP + 1], data[D_SLIP + 2] = fx / size, fy / size, ft / size
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def slow_face_slip(par, record, dt, t, h, mode, data, sc):
+    """Whether a flat base's slip is pulled to its rate without friction over a step of h.
+
+    A FACE's slip slower than the floor of a step of h all along
+    (:func:`slip_floor`: ``slip_stiffness h / FLOOR_STABILITY``), driven
+    past the kinetic friction at both ends of the step (its rate without
+    friction, :func:`_free_slip_at`, larger than ``mu (g - a_v)``), whose
+    direction now (from rest, the stored one: its onset's) lies within
+    ``FACE_TURN`` of that rate's at the start, which turns by less than
+    ``FACE_TURN`` within the step: each stage's friction is then pulled to
+    that rate's direction at its time (:func:`start_pulled_slip`), stable
+    at any step, and the slip's turn does not bound the step
+    (:func:`_slip_turn_time`). A slip that slows down (the friction wins) or
+    swings round keeps the steps that RK4's stability on its turn allows.
+    """
+    if mode[M_KIND] != FACE or mode[M_SLIP] != 1:
+        return False
+    svel = sc[SC_SVEL]
+    speed = leading_length(svel, 3)
+    if speed > slip_stiffness(par, sc) * h / FLOOR_STABILITY:
+        return False
+    free = sc[SC_PROBE][0]
+    free[0], free[1], free[2] = _free_slip_rate(par, sc)
+    ax, ay, at = _free_slip_at(record, dt, t, 0.0, free)
+    bx, by, bt = _free_slip_at(record, dt, t, h, free)
+    if (_free_slip_excess(par, record, dt, t, ax, ay, at) <= 0.0
+            or _free_slip_excess(par, record, dt, t + h, bx, by, bt) <= 0.0):  # fmt: skip
+        return False
+    size_a = math.sqrt(ax * ax + ay * ay + at * at)
+    size_b = math.sqrt(bx * bx + by * by + bt * bt)
+    limit = math.cos(FACE_TURN)
+    if ax * bx + ay * by + at * bt < limit * size_a * size_b:
+        return False
+    if speed > SLIP_FLOOR:
+        along = (svel[0] * ax + svel[1] * ay + svel[2] * at) / speed
+    else:
+        along = data[D_SLIP] * ax + data[D_SLIP + 1] * ay + data[D_SLIP + 2] * at
+    return along >= limit * size_a
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
+def start_pulled_slip(par, record, dt, t, h, mode, data, sc):
+    """A slow flat base's slip (:func:`slow_face_slip`) pulled along a step of h from t.
+
+    Where its slip is slower than the step's floor ``data[D_FLOOR]``
+    (:func:`slip_floor`), its rate without friction at t is kept in ``data``
+    (``D_PULL_FREE``, with ``D_PULL`` 1.0), and its stored direction set to
+    that rate's at t + h: the step's reference, against which its stop is
+    found. Each RK4 stage then pulls the friction to that rate's direction
+    at its own time (:func:`pulled_direction`). Returns True where it is
+    pulled (the start must be solved again).
+    """
+    if leading_length(sc[SC_SVEL], 3) > data[D_FLOOR]:
+        return False
+    rates = _free_slip_rate(par, sc)
+    for k in range(3):
+        data[D_PULL_FREE + k] = rates[k]
+    data[D_PULL] = 1.0
+    pulled_direction(record, dt, t, h, data)
+    return True
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
