@@ -21,6 +21,8 @@ from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact import body_kernel as bk
+from freestand.core.contact import body_solve
+from freestand.core.dynamics import body_step
 from freestand.core.model import Friction
 
 G = 9.81
@@ -217,3 +219,34 @@ def test_a_sticking_edge_is_solved_as_on_its_rows(which, edge, seed, acceleratio
     rows = np.column_stack([sc[bk.SC_NORMAL][:, :2], sc[bk.SC_TANGENT][:, :3]])
     bias = np.r_[sc[bk.SC_NBIAS][:2], sc[bk.SC_TBIAS][:3]] if acceleration else 0.0
     np.testing.assert_allclose(rows.T @ acc + bias, 0.0, atol=1e-10 * scale)
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.integers(0, len(BODIES) - 1), st.integers(0, 3), st.integers(0, 2**32 - 1))
+def test_a_sticking_points_event_functions_are_the_full_solves(which, corner, seed):
+    # body_step.event_functions solves a sticking POINT by its closed form on the applied
+    # wrench (body_solve.sticking_stage), not by solve_at: its event functions (normal and
+    # friction margins, the other corners' gaps or the rim's landing, the tilt) and its
+    # accelerations must be solve_at's, to round-off (tolerance as above)
+    par, rng, y = _turned_at_random(which, seed)
+    record = _moving(rng, y)
+    mode = np.array([bk.POINT, corner, 0])
+    data = np.zeros(bk.DATA_SIZE)
+    data[bk.D_PSI] = float(rng.uniform(-np.pi, np.pi))
+    ref = np.zeros(body_step.REF_SIZE)
+    ref[3:5] = np.cos(data[bk.D_PSI]), np.sin(data[bk.D_PSI])
+    values, kinds = np.zeros(body_step.MAX_EVENT_FUNCTIONS), np.zeros(8, dtype=np.int64)
+    sc = bk.new_scratch()
+    count = body_step.event_functions(par, record, 1.0, 0.5, y, mode, data, sc, ref, values, kinds)
+    acc = sc[bk.SC_ACC].copy()
+    full = bk.new_scratch()
+    _, n_normal, n_tangent = body_solve.solve_at(par, record, 1.0, 0.5, y, mode, data, full)
+    expected = np.zeros_like(values)
+    expected_kinds = np.zeros_like(kinds)
+    assert count == body_step.event_values(par, y, mode, full, ref, n_normal, n_tangent,
+                                           expected, expected_kinds)  # fmt: skip
+    assert np.array_equal(kinds[:count], expected_kinds[:count])
+    scale = np.max(np.abs(full[bk.SC_ACC])) + G
+    np.testing.assert_allclose(acc, full[bk.SC_ACC], rtol=0.0, atol=1e-12 * scale)
+    size = np.max(np.abs(expected[:count])) + np.max(np.abs(full[bk.SC_LAM][:3]))
+    np.testing.assert_allclose(values[:count], expected[:count], rtol=0.0, atol=1e-12 * size)
