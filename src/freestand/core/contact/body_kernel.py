@@ -203,16 +203,17 @@ def cross(a0, a1, a2, b0, b1, b2):
 @kernel(cache=True, error_model="numpy", _nrt=False)
 def rotation_matrix(y, out):
     """The rotation matrix R (3, 3) of the unit quaternion ``y[3:7]`` (w, x, y, z)."""
-    w, x, yy, z = y[3], y[4], y[5], y[6]
-    out[0, 0] = 1.0 - 2.0 * (yy * yy + z * z)
-    out[0, 1] = 2.0 * (x * yy - w * z)
-    out[0, 2] = 2.0 * (x * z + w * yy)
-    out[1, 0] = 2.0 * (x * yy + w * z)
-    out[1, 1] = 1.0 - 2.0 * (x * x + z * z)
-    out[1, 2] = 2.0 * (yy * z - w * x)
-    out[2, 0] = 2.0 * (x * z - w * yy)
-    out[2, 1] = 2.0 * (yy * z + w * x)
-    out[2, 2] = 1.0 - 2.0 * (x * x + yy * yy)
+    (out[0, 0], out[0, 1], out[0, 2], out[1, 0], out[1, 1], out[1, 2], out[2, 0], out[2, 1],
+     out[2, 2]) = quaternion_rotation(y[3], y[4], y[5], y[6])  # fmt: skip
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def quaternion_rotation(w, x, y, z):
+    """The rotation matrix of the unit quaternion (w, x, y, z), row by row, as nine scalars
+    (:func:`rotation_matrix`'s entries; a loop over many states keeps them in registers)."""
+    return (1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y),
+            2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x),
+            2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y))  # fmt: skip
 
 
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)

@@ -559,7 +559,7 @@ def run(par, record_, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_to
             pulled = slow_face_slip(par, record_, dt, t, h, mode, data, sc)
             h = min(h, closing_step(par, y, mode, sc, ref, pulled))
             data[D_FLOOR] = slip_floor(par, mode, sc, h)
-            if pulled and start_pulled_slip(par, record_, dt, t, h, mode, data, sc):
+            if pulled and start_pulled_slip(record_, dt, t, h, data, sc):
                 # a slow flat base's slip driven on, pulled to its rate without friction's
                 # direction at each stage: the start solved again
                 count = start_functions(par, record_, dt, t, y, mode, data, sc, ref,

@@ -29,6 +29,7 @@ from freestand.core.contact.body_kernel import (
     STATE_SIZE,
     body_parameters,
     box_corner,
+    quaternion_rotation,
 )
 from freestand.core.contact.vectors import norm2
 from freestand.core.dynamics import body_engine as engine
@@ -529,10 +530,11 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
     ``rates`` (3, K): the rates of the tilt, the slide's size and the twist
     (:func:`_row_rates`), or (3, 0) for none. A state equal to the last one
     computed (the body at rest on the support) repeats its row. The rotation
-    is held in scalars (:func:`_quaternion_rotation`), not written to an
-    array and read back, and no state is copied: the benchmark's three
-    bodies' rows (2,500 to 2,900 of a 10 s record) in 66 to 93 us where they
-    took 84 to 104 us (11 to 21 % less).
+    is held in scalars
+    (:func:`~freestand.core.contact.body_kernel.quaternion_rotation`), not
+    written to an array and read back, and no state is copied: the
+    benchmark's three bodies' rows (2,500 to 2,900 of a 10 s record) in 66
+    to 93 us where they took 84 to 104 us (11 to 21 % less).
     """
     first_x, first_y, w_before, z_before = 0.0, 0.0, 1.0, 0.0
     c0, c1, c2 = centre[0], centre[1], centre[2]
@@ -543,7 +545,7 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
             _repeat_row(tilt, slide, twist, lowest, highest, rates, i)
             continue
         last = i
-        r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quaternion_rotation(
+        r00, r01, r02, r10, r11, r12, r20, r21, r22 = quaternion_rotation(
             state[i, 3], state[i, 4], state[i, 5], state[i, 6])  # fmt: skip
         tilt[i] = _tilt(r20, r21, r22)
         # R c, and the base centre r - R c
@@ -569,15 +571,6 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
             lowest[i], highest[i] = bz - reach, bz + reach
         if with_rates:
             _row_rates(state, i, r02, r12, cx, cy, cz, slide_x, slide_y, rates)
-
-
-@nb.njit(cache=True, error_model="numpy", inline="always")
-def _quaternion_rotation(w, x, y, z):
-    """The rotation matrix of the unit quaternion (w, x, y, z), row by row, as nine scalars
-    (:func:`~freestand.core.contact.body_kernel.rotation_matrix`'s entries)."""
-    return (1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y),
-            2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x),
-            2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y))  # fmt: skip
 
 
 @nb.njit(cache=True, error_model="numpy", inline="always")

@@ -727,6 +727,8 @@ def slow_face_slip(par, record, dt, t, h, mode, data, sc):
     at any step, and the slip's turn does not bound the step
     (:func:`_slip_turn_time`). A slip that slows down (the friction wins) or
     swings round keeps the steps that RK4's stability on its turn allows.
+    The rate without friction at t is left in ``data[D_PULL_FREE:]``, for
+    :func:`start_pulled_slip`.
     """
     if mode[M_KIND] != FACE or mode[M_SLIP] != 1:
         return False
@@ -734,9 +736,9 @@ def slow_face_slip(par, record, dt, t, h, mode, data, sc):
     speed = leading_length(svel, 3)
     if speed > slip_stiffness(par, sc) * h / FLOOR_STABILITY:
         return False
-    free = sc[SC_PROBE][0]
-    free[0], free[1], free[2] = _free_slip_rate(par, sc)
-    ax, ay, at = _free_slip_at(record, dt, t, 0.0, free)
+    free = data[D_PULL_FREE : D_PULL_FREE + 3]  # kept for start_pulled_slip
+    ax, ay, at = _free_slip_rate(par, sc)
+    free[0], free[1], free[2] = ax, ay, at
     bx, by, bt = _free_slip_at(record, dt, t, h, free)
     if (_free_slip_excess(par, record, dt, t, ax, ay, at) <= 0.0
             or _free_slip_excess(par, record, dt, t + h, bx, by, bt) <= 0.0):  # fmt: skip
@@ -754,12 +756,13 @@ def slow_face_slip(par, record, dt, t, h, mode, data, sc):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def start_pulled_slip(par, record, dt, t, h, mode, data, sc):
+def start_pulled_slip(record, dt, t, h, data, sc):
     """A slow flat base's slip (:func:`slow_face_slip`) pulled along a step of h from t.
 
     Where its slip is slower than the step's floor ``data[D_FLOOR]``
-    (:func:`slip_floor`), its rate without friction at t is kept in ``data``
-    (``D_PULL_FREE``, with ``D_PULL`` 1.0), and its stored direction set to
+    (:func:`slip_floor`), ``D_PULL`` is set to 1.0 (its rate without friction
+    at t is in ``data[D_PULL_FREE:]``, kept there by :func:`slow_face_slip`
+    for the step it judged), and its stored direction set to
     that rate's at t + h: the step's reference, against which its stop is
     found. Each RK4 stage then pulls the friction to that rate's direction
     at its own time (:func:`pulled_direction`). Returns True where it is
@@ -767,10 +770,7 @@ def start_pulled_slip(par, record, dt, t, h, mode, data, sc):
     """
     if leading_length(sc[SC_SVEL], 3) > data[D_FLOOR]:
         return False
-    rates = _free_slip_rate(par, sc)
-    for k in range(3):
-        data[D_PULL_FREE + k] = rates[k]
-    data[D_PULL] = 1.0
+    data[D_PULL] = 1.0  # its rate without friction at t: kept by slow_face_slip
     pulled_direction(record, dt, t, h, data)
     return True
 
