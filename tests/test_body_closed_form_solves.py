@@ -221,16 +221,20 @@ def test_a_sticking_edge_is_solved_as_on_its_rows(which, edge, seed, acceleratio
     np.testing.assert_allclose(rows.T @ acc + bias, 0.0, atol=1e-10 * scale)
 
 
-@settings(max_examples=100, deadline=None)
-@given(st.integers(0, len(BODIES) - 1), st.integers(0, 3), st.integers(0, 2**32 - 1))
-def test_a_sticking_points_event_functions_are_the_full_solves(which, corner, seed):
-    # body_step.event_functions solves a sticking POINT by its closed form on the applied
-    # wrench (body_solve.sticking_stage), not by solve_at: its event functions (normal and
-    # friction margins, the other corners' gaps or the rim's landing, the tilt) and its
-    # accelerations must be solve_at's, to round-off (tolerance as above)
+@settings(max_examples=150, deadline=None)
+@given(
+    st.integers(0, len(BODIES) - 1), st.integers(0, 3), st.integers(0, 2**32 - 1), st.booleans(),
+)  # fmt: skip
+def test_a_sticking_point_or_edges_event_functions_are_the_full_solves(which, index, seed, edge):
+    # body_step.event_functions solves a sticking POINT or a box's sticking EDGE by its closed
+    # form on the applied wrench (body_solve.sticking_solve), not by solve_at: its event
+    # functions (normal and friction margins, the other corners' gaps or the rim's landing,
+    # the tilt), its accelerations, multipliers (an EDGE's friction about its centre of
+    # pressure) and tangential rows must be solve_at's, to round-off (tolerance as above)
+    edge = edge and which < 2  # an EDGE: the boxes'
     par, rng, y = _turned_at_random(which, seed)
     record = _moving(rng, y)
-    mode = np.array([bk.POINT, corner, 0])
+    mode = np.array([bk.EDGE if edge else bk.POINT, index, 0])
     data = np.zeros(bk.DATA_SIZE)
     data[bk.D_PSI] = float(rng.uniform(-np.pi, np.pi))
     ref = np.zeros(body_step.REF_SIZE)
@@ -238,7 +242,6 @@ def test_a_sticking_points_event_functions_are_the_full_solves(which, corner, se
     values, kinds = np.zeros(body_step.MAX_EVENT_FUNCTIONS), np.zeros(8, dtype=np.int64)
     sc = bk.new_scratch()
     count = body_step.event_functions(par, record, 1.0, 0.5, y, mode, data, sc, ref, values, kinds)
-    acc = sc[bk.SC_ACC].copy()
     full = bk.new_scratch()
     _, n_normal, n_tangent = body_solve.solve_at(par, record, 1.0, 0.5, y, mode, data, full)
     expected = np.zeros_like(values)
@@ -247,6 +250,16 @@ def test_a_sticking_points_event_functions_are_the_full_solves(which, corner, se
                                            expected, expected_kinds)  # fmt: skip
     assert np.array_equal(kinds[:count], expected_kinds[:count])
     scale = np.max(np.abs(full[bk.SC_ACC])) + G
-    np.testing.assert_allclose(acc, full[bk.SC_ACC], rtol=0.0, atol=1e-12 * scale)
-    size = np.max(np.abs(expected[:count])) + np.max(np.abs(full[bk.SC_LAM][:3]))
+    np.testing.assert_allclose(sc[bk.SC_ACC], full[bk.SC_ACC], rtol=0.0, atol=1e-12 * scale)
+    rows = n_normal + n_tangent
+    forces = np.max(np.abs(full[bk.SC_LAM][:rows]))
+    np.testing.assert_allclose(sc[bk.SC_LAM][:rows], full[bk.SC_LAM][:rows], rtol=0.0,
+                               atol=1e-12 * forces)  # fmt: skip
+    # the friction centre (x, y, rho [m]) and the tangential rows there
+    size = float(par[bk.P_HALF_X])
+    np.testing.assert_allclose(sc[bk.SC_CENTRE][:3], full[bk.SC_CENTRE][:3], rtol=0.0,
+                               atol=1e-12 * size)  # fmt: skip
+    np.testing.assert_allclose(sc[bk.SC_TANGENT][:, :n_tangent], full[bk.SC_TANGENT][:, :n_tangent],
+                               rtol=0.0, atol=1e-12 * size)  # fmt: skip
+    size = np.max(np.abs(expected[:count])) + forces
     np.testing.assert_allclose(values[:count], expected[:count], rtol=0.0, atol=1e-12 * size)

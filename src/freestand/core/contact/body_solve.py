@@ -728,6 +728,28 @@ def sticking_stage(par, record, dt, t, y, mode, data, sc):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
+def sticking_solve(par, record, dt, t, y, mode, data, sc):
+    """A sticking POINT's or EDGE's :func:`solve_at` on its closed form; False if singular.
+
+    :func:`sticking_stage`, then, an EDGE's, its friction expressed about its
+    centre of pressure and its tangential rows moved there, as
+    :func:`solve_patch` does after its solve
+    (``body_kernel.centre_stick_friction``, ``tangent_rows``): the
+    multipliers, accelerations and rows of :func:`solve_at` to round-off,
+    without the world inverse inertia and ``M^-1 f_0`` (``SC_INV``,
+    ``SC_BASE``), which an impact, a projection and a choice of mode prepare
+    for themselves.
+    """
+    ok = sticking_stage(par, record, dt, t, y, mode, data, sc)
+    if mode[M_KIND] == EDGE:
+        centre = sc[SC_CENTRE]
+        centre[5] = 0.0  # as solve_patch: no stored direction read
+        centre_stick_friction(par, sc[SC_ROT], EDGE, mode[M_INDEX], 2, sc[SC_LAM], centre)
+        tangent_rows(par, y, sc)
+    return ok
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def rate(par, record, dt, t, y, mode, data, sc, ydot):
     """y' of the held mode at (t, y); False when the mode's system is singular.
 

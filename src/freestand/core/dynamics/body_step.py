@@ -64,7 +64,7 @@ from freestand.core.contact.body_kernel import (
     support_acceleration,
     tangential_velocity,
 )
-from freestand.core.contact.body_solve import rate, solve_at, state_rate, sticking_stage
+from freestand.core.contact.body_solve import rate, solve_at, state_rate, sticking_solve
 from freestand.core.contact.compiled import kernel
 from freestand.core.contact.slip_law import SLIP_FLOOR
 from freestand.core.contact.vectors import leading_length, norm2
@@ -278,9 +278,11 @@ def slip_turns(sc, n_tangent):
 def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
     """The event functions at (t, y) in the held mode (>= 0 while it holds); their count.
 
-    A sticking POINT (a rim point rolling, a corner pivoting) is solved by its
-    closed form on the applied wrench (:func:`~freestand.core.contact.body_solve.sticking_stage`,
-    an RK4 stage's solve): its multipliers and accelerations are
+    A sticking POINT (a rim point rolling, a corner pivoting) or EDGE (a box
+    rocking) is solved by its closed form on the applied wrench
+    (:func:`~freestand.core.contact.body_solve.sticking_solve`, an RK4
+    stage's solve, an EDGE's friction then about its centre of pressure):
+    its multipliers and accelerations are
     :func:`~freestand.core.contact.body_solve.solve_at`'s to round-off,
     without the world inverse inertia and ``M^-1 f_0``, which nothing reads
     before the next full solve (an impact's and a projection's prepare their
@@ -293,9 +295,10 @@ def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
     0.5 and 0.1 ms steps (0.716), where the full solve's round-off had taken
     it to 0.980 m.
     """
-    if mode[M_KIND] == POINT and mode[M_SLIP] == 0:
-        sticking_stage(par, record, dt, t, y, mode, data, sc)
-        return event_values(par, y, mode, sc, ref, 1, 2, values, kinds)
+    if mode[M_SLIP] == 0 and (mode[M_KIND] == POINT or mode[M_KIND] == EDGE):
+        sticking_solve(par, record, dt, t, y, mode, data, sc)
+        n_normal, n_tangent = row_counts(mode[M_KIND])
+        return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
     ok, n_normal, n_tangent = solve_at(par, record, dt, t, y, mode, data, sc)
     return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
 
