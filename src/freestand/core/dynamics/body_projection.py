@@ -69,12 +69,12 @@ def lean_comes_flat(par, y, mode, sc):
     PIVOT_LEAN: it lands (:func:`resolve`). A lean heading for the vertical
     (to pass it within ``PLANAR_PASS`` of ``PIVOT_LEAN``, as in a plane) is
     located by the landing function instead, and a lean growing from flat is
-    not closing.
+    not closing. ``sc`` holds the rotation at y (the step's end, solved by
+    the event functions of :func:`~freestand.core.dynamics.body_events.locate`).
     """
     if par[P_SHAPE] == SHAPE_BOX or mode[M_KIND] != POINT:
         return False
     rot = sc[SC_ROT]
-    rotation_matrix(y, rot)
     ex, ey = rot[0, 2], rot[1, 2]
     if ex * ex + ey * ey > PIVOT_LEAN * PIVOT_LEAN:
         return False

@@ -202,7 +202,8 @@ def references(par, record, dt, t, y, mode, data, sc, ref, stop_speed, solved=Fa
     for (the lowest point's opposite, past a landing).
     """
     rot = sc[SC_ROT]
-    rotation_matrix(y, rot)
+    if not solved:
+        rotation_matrix(y, rot)  # (solved: the scratch's, at y)
     for i in range(REF_SIZE):
         ref[i] = 0.0
     if mode[M_KIND] == POINT and par[P_SHAPE] != SHAPE_BOX:
