@@ -263,3 +263,27 @@ def test_a_sticking_point_or_edges_event_functions_are_the_full_solves(which, in
                                rtol=0.0, atol=1e-12 * size)  # fmt: skip
     size = np.max(np.abs(expected[:count])) + forces
     np.testing.assert_allclose(values[:count], expected[:count], rtol=0.0, atol=1e-12 * size)
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.integers(0, len(BODIES) - 1), st.integers(0, 3), st.integers(0, 2**32 - 1), st.booleans())
+def test_a_solve_on_the_scratchs_load_is_the_full_closed_form(which, index, seed, edge):
+    # body_step.start_functions solves a rolling cylinder's step start, whose end the
+    # scratch holds solved for the pivot before, on the scratch's rotation and applied
+    # wrench (body_solve.sticking_solve(..., loaded=True)): the same solve to the last bit
+    # as one from nothing, for another pivot or index
+    edge = edge and which < 2
+    par, rng, y = _turned_at_random(which, seed)
+    record = _moving(rng, y)
+    kind = bk.EDGE if edge else bk.POINT
+    data = np.zeros(bk.DATA_SIZE)
+    data[bk.D_PSI] = float(rng.uniform(-np.pi, np.pi))
+    sc = bk.new_scratch()
+    body_solve.sticking_solve(par, record, 1.0, 0.5, y, np.array([kind, index, 0]), data, sc)
+    moved = np.array([kind, (index + 1) % 4, 0])
+    data[bk.D_PSI] = float(rng.uniform(-np.pi, np.pi))
+    assert body_solve.sticking_solve(par, record, 1.0, 0.5, y, moved, data, sc, True)
+    fresh = bk.new_scratch()
+    assert body_solve.sticking_solve(par, record, 1.0, 0.5, y, moved, data, fresh)
+    for field in (bk.SC_ACC, bk.SC_LAM, bk.SC_NORMAL, bk.SC_TANGENT, bk.SC_CENTRE):
+        assert np.array_equal(sc[field], fresh[field])

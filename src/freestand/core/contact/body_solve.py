@@ -717,9 +717,16 @@ def sticking_stage(par, record, dt, t, y, mode, data, sc):
     stage is followed by a full solve before anything reads them). The
     stage of a rolling cylinder or a rocking box is its most frequent solve.
     """
-    f0 = sc[SC_F0]
     rotation_matrix(y, sc[SC_ROT])
     prepare_wrench(par, record, dt, t, y, sc)
+    return _sticking_on_load(par, y, mode, data, sc)
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _sticking_on_load(par, y, mode, data, sc):
+    """:func:`sticking_stage` at the rotation and applied wrench the scratch holds: the held
+    rows, then the closed form."""
+    f0 = sc[SC_F0]
     held_rows(par, y, mode, data, sc)
     force = (f0[0], f0[1], f0[2], f0[3], f0[4], f0[5])
     if mode[M_KIND] == POINT:
@@ -728,7 +735,7 @@ def sticking_stage(par, record, dt, t, y, mode, data, sc):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def sticking_solve(par, record, dt, t, y, mode, data, sc):
+def sticking_solve(par, record, dt, t, y, mode, data, sc, loaded=False):
     """A sticking POINT's or EDGE's :func:`solve_at` on its closed form; False if singular.
 
     :func:`sticking_stage`, then, an EDGE's, its friction expressed about its
@@ -738,9 +745,15 @@ def sticking_solve(par, record, dt, t, y, mode, data, sc):
     multipliers, accelerations and rows of :func:`solve_at` to round-off,
     without the world inverse inertia and ``M^-1 f_0`` (``SC_INV``,
     ``SC_BASE``), which an impact, a projection and a choice of mode prepare
-    for themselves.
+    for themselves. ``loaded``: the scratch holds the rotation and the
+    applied wrench at (t, y) already (a step's end solved for another pivot
+    of a rolling cylinder's rim): only the rows and the closed form are
+    computed, to the same last bit.
     """
-    ok = sticking_stage(par, record, dt, t, y, mode, data, sc)
+    if loaded:
+        ok = _sticking_on_load(par, y, mode, data, sc)
+    else:
+        ok = sticking_stage(par, record, dt, t, y, mode, data, sc)
     if mode[M_KIND] == EDGE:
         centre = sc[SC_CENTRE]
         centre[5] = 0.0  # as solve_patch: no stored direction read
