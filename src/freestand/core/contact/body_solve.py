@@ -705,6 +705,13 @@ def solve_at_centre(par, record, dt, t, y, mode, data, sc):
     return ok, n_normal, n_tangent
 
 
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def closed_form(mode):
+    """Whether the held mode is solved by its closed form (:func:`sticking_stage`): a sticking
+    POINT or EDGE."""
+    return mode[M_SLIP] == 0 and (mode[M_KIND] == POINT or mode[M_KIND] == EDGE)
+
+
 @kernel(cache=True, error_model="numpy", _nrt=False)
 def sticking_stage(par, record, dt, t, y, mode, data, sc):
     """A sticking POINT's or EDGE's accelerations at (t, y) in ``sc[SC_ACC]``; False if singular.
@@ -774,7 +781,7 @@ def rate(par, record, dt, t, y, mode, data, sc, ydot):
     last bit, which only expresses the forces about the centre of pressure
     after the same solve; an integrator's stage reads none of them.
     """
-    if mode[M_SLIP] == 0 and (mode[M_KIND] == POINT or mode[M_KIND] == EDGE):
+    if closed_form(mode):
         ok = sticking_stage(par, record, dt, t, y, mode, data, sc)
     elif mode[M_SLIP] == 0:
         ok, _, _ = solve_at_centre(par, record, dt, t, y, mode, data, sc)

@@ -64,7 +64,13 @@ from freestand.core.contact.body_kernel import (
     support_acceleration,
     tangential_velocity,
 )
-from freestand.core.contact.body_solve import rate, solve_at, state_rate, sticking_solve
+from freestand.core.contact.body_solve import (
+    closed_form,
+    rate,
+    solve_at,
+    state_rate,
+    sticking_solve,
+)
 from freestand.core.contact.compiled import kernel
 from freestand.core.contact.slip_law import SLIP_FLOOR
 from freestand.core.contact.vectors import leading_length, norm2
@@ -296,7 +302,7 @@ def event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds):
     0.5 and 0.1 ms steps (0.716), where the full solve's round-off had taken
     it to 0.980 m.
     """
-    if _closed_form(mode):
+    if closed_form(mode):
         sticking_solve(par, record, dt, t, y, mode, data, sc)
         n_normal, n_tangent = row_counts(mode[M_KIND])
         return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
@@ -312,13 +318,13 @@ def start_functions(par, record, dt, t, y, mode, data, sc, ref, stop_speed, valu
     One solve where the slip's references made it (none where the scratch
     holds it, ``solved``; where it holds it for another pivot, a rolling
     cylinder's, that moved to the lowest rim point, the closed form on its
-    rotation and applied wrench, which are the state's: some 100 cycles of
-    a rolling step's 2,000 saved); ``stop_speed`` [m/s]: :func:`references`'.
-    Returns the functions' count.
+    rotation and applied wrench, which are the state's: about 1 % of the
+    benchmark's slender cylinder, to the last bit); ``stop_speed`` [m/s]:
+    :func:`references`'. Returns the functions' count.
     """
     n_normal, n_tangent = references(par, record, dt, t, y, mode, data, sc, ref, stop_speed,
                                      solved)  # fmt: skip
-    if n_tangent < 0 and solved and _closed_form(mode):
+    if n_tangent < 0 and solved and closed_form(mode):
         # a rolling cylinder's pivot moved to the lowest rim point: the scratch's rotation and
         # applied wrench are the state's, its rows are solved again
         sticking_solve(par, record, dt, t, y, mode, data, sc, True)
@@ -326,12 +332,6 @@ def start_functions(par, record, dt, t, y, mode, data, sc, ref, stop_speed, valu
     elif n_tangent < 0:
         return event_functions(par, record, dt, t, y, mode, data, sc, ref, values, kinds)
     return event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds)
-
-
-@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
-def _closed_form(mode):
-    """Whether the held mode is solved by its closed form (a sticking POINT or EDGE)."""
-    return mode[M_SLIP] == 0 and (mode[M_KIND] == POINT or mode[M_KIND] == EDGE)
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
