@@ -465,3 +465,21 @@ def test_a_step_ends_at_the_first_break_after_it_whatever_the_cursor(gaps, times
             expected = breaks[k]
         assert body_engine._next_end(t, breaks, h_max, t_end, cursor) == expected
         assert body_engine._first_break_after(t, breaks) == k
+
+
+def test_body_parameters_hold_the_inverse_inertia_anew_for_each_call():
+    # body_parameters keeps the inverse inertia of the bodies last asked for
+    # (body_kernel._inverse_inertia): it must be numpy.linalg.inv's to the last bit, for a
+    # non-principal inertia too, and each call's parameters an array of its own
+    tilted = Body("tilted", Box((0.4, 1.3, 0.8)), 25.0, Friction(0.9, 0.7), (0.05, -0.2, 0.3),
+                  ((2.0, 0.3, -0.1), (0.3, 1.5, 0.2), (-0.1, 0.2, 1.1)))  # fmt: skip
+    for body in (CASK, tilted):
+        inertia = np.asarray(body.inertia, dtype=float)
+        expected = np.linalg.inv(inertia).reshape(-1)
+        first = bk.body_parameters(body, 9.81)
+        second = bk.body_parameters(body, 9.81)
+        for par in (first, second):
+            assert np.array_equal(par[bk.P_INVERSE : bk.P_INVERSE + 9], expected)
+        first[bk.P_INVERSE] = 0.0
+        assert second[bk.P_INVERSE] == expected[0]
+        assert bk.body_parameters(body, 9.81)[bk.P_INVERSE] == expected[0]
