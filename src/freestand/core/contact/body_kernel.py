@@ -197,10 +197,10 @@ def _inverse_inertia(inertia: tuple) -> tuple:
     """I^-1 [1/(kg m^2)] of the body-frame inertia ``inertia`` (its 9 entries, row-major).
 
     Kept for the bodies last asked for: a campaign simulates the same body
-    many times, and ``numpy.linalg.inv``'s path through LAPACK cost some 4
-    us of a run warm and 40 us where another program's run had left it out
-    of the caches (the 3-D benchmark's runs, alternated with MuJoCo's: about
-    2 % of a slender cylinder's 10 s).
+    many times, and ``numpy.linalg.inv``'s path through LAPACK cost some 13
+    us of a run warm and 30 us more where another program's run had left it
+    out of the caches (the 3-D benchmark's runs, alternated with MuJoCo's:
+    about 3 % of a slender cylinder's 10 s).
     """
     return tuple(np.linalg.inv(np.array(inertia).reshape(3, 3)).reshape(-1).tolist())
 
