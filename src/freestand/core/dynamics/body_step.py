@@ -691,23 +691,24 @@ def _free_slip_rate(par, sc):
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
 def _free_slip_at(record, dt, t, tau, free):
-    """A flat base's slip rate without friction tau [s] after t [m/s^2], its three components.
+    """A flat base's slip rate without friction tau [s] after t [m/s^2], its three components,
+    then the support's vertical acceleration a_v [m/s^2] at t and at t + tau.
 
     ``free`` is the rate at t (:func:`_free_slip_rate`); the support's
     horizontal acceleration moves it, linear in between (its d'Alembert
     force, ``-m a``, acts at G: the twist's row keeps its rate).
     """
-    a_x, a_y, _ = support_acceleration(record, dt, t)
-    b_x, b_y, _ = support_acceleration(record, dt, t + tau)
-    return free[0] - (b_x - a_x), free[1] - (b_y - a_y), free[2]
+    a_x, a_y, a_v = support_acceleration(record, dt, t)
+    b_x, b_y, b_v = support_acceleration(record, dt, t + tau)
+    return free[0] - (b_x - a_x), free[1] - (b_y - a_y), free[2], a_v, b_v
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _free_slip_excess(par, record, dt, t, fx, fy, ft):
-    """How far the slip rate without friction (fx, fy, ft) at t exceeds the kinetic friction's
-    per unit of mass, ``mu (g - a_v)`` [m/s^2] (a flat base's normal force is the vertical
-    balance's, ``m (g - a_v)``): where it is positive the slip is driven on."""
-    _, _, a_v = support_acceleration(record, dt, t)
+def _free_slip_excess(par, a_v, fx, fy, ft):
+    """How far the slip rate without friction (fx, fy, ft) exceeds the kinetic friction's
+    per unit of mass, ``mu (g - a_v)`` [m/s^2], a_v the support's vertical acceleration then
+    (a flat base's normal force is the vertical balance's, ``m (g - a_v)``): where it is
+    positive the slip is driven on."""
     size = math.sqrt(fx * fx + fy * fy + ft * ft)
     return size - par[P_MU_KINETIC] * (par[P_GRAVITY] - a_v)
 
@@ -724,7 +725,7 @@ def pulled_direction(record, dt, t, tau, data):
     it (:func:`_rk4`), so it follows the support's force as it turns within
     the step, as the slip does.
     """
-    fx, fy, ft = _free_slip_at(record, dt, t, tau, data[D_PULL_FREE : D_PULL_FREE + 3])
+    fx, fy, ft, _, _ = _free_slip_at(record, dt, t, tau, data[D_PULL_FREE : D_PULL_FREE + 3])
     size = math.sqrt(fx * fx + fy * fy + ft * ft)
     if size > 0.0:
         data[D_SLIP], data[D_SLIP + 1], data[D_SLIP + 2] = fx / size, fy / size, ft / size
@@ -757,9 +758,11 @@ def slow_face_slip(par, record, dt, t, h, mode, data, sc):
     free = data[D_PULL_FREE : D_PULL_FREE + 3]  # kept for start_pulled_slip
     ax, ay, at = _free_slip_rate(par, sc)
     free[0], free[1], free[2] = ax, ay, at
-    bx, by, bt = _free_slip_at(record, dt, t, h, free)
-    if (_free_slip_excess(par, record, dt, t, ax, ay, at) <= 0.0
-            or _free_slip_excess(par, record, dt, t + h, bx, by, bt) <= 0.0):  # fmt: skip
+    bx, by, bt, a_v, b_v = _free_slip_at(record, dt, t, h, free)
+    if (
+        _free_slip_excess(par, a_v, ax, ay, at) <= 0.0
+        or _free_slip_excess(par, b_v, bx, by, bt) <= 0.0
+    ):
         return False
     size_a = math.sqrt(ax * ax + ay * ay + at * at)
     size_b = math.sqrt(bx * bx + by * by + bt * bt)
