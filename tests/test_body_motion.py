@@ -249,3 +249,16 @@ def test_the_events_are_named_by_their_codes():
     )
     names = [body_history.PATCH_NAMES[code] for code in (FREE, POINT, EDGE, FACE)]
     assert names == ["free", "point", "edge", "face"]
+
+
+def test_a_motion_s_components_are_the_rows_of_its_record():
+    x, y = np.array([0.0, 1.0, -2.0]), np.array([0.5, 0.0, 3.0])
+    motion = SupportMotion3(0.01, x, y)
+    record = motion.array()
+    assert record is motion.array()  # kept, not stacked again for each run
+    assert record.shape == (3, 3) and record.flags["C_CONTIGUOUS"]
+    assert np.array_equal(record, [x, y, [0.0, 0.0, 0.0]])
+    for row, component in enumerate((motion.x, motion.y, motion.vertical)):
+        assert np.shares_memory(component, record) and np.array_equal(component, record[row])
+    x[1] = 99.0  # the caller's array is copied: the motion does not change with it
+    assert motion.x[1] == 1.0

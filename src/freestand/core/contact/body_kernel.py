@@ -167,11 +167,11 @@ def body_parameters(body: Body, gravity: float, restitution: float = 1.0) -> np.
     but for a turn the impact leaves
     (:func:`~freestand.core.contact.body_impulse.restitution_velocity`).
     """
-    out = np.zeros(P_SIZE)
+    inertia = np.asarray(body.inertia, dtype=float).reshape(-1).tolist()
+    out = [0.0] * P_SIZE  # Python floats, one array at the end (item by item, 35 us cold)
     out[P_MASS] = body.mass
-    inertia = np.asarray(body.inertia, dtype=float)
-    out[P_INERTIA : P_INERTIA + 9] = inertia.reshape(-1)
-    out[P_INVERSE : P_INVERSE + 9] = _inverse_inertia(tuple(inertia.reshape(-1).tolist()))
+    out[P_INERTIA : P_INERTIA + 9] = inertia
+    out[P_INVERSE : P_INVERSE + 9] = _inverse_inertia(tuple(inertia))
     out[P_CENTRE : P_CENTRE + 3] = body.centre
     shape = body.shape
     if isinstance(shape, Box):
@@ -189,7 +189,7 @@ def body_parameters(body: Body, gravity: float, restitution: float = 1.0) -> np.
     out[P_GRAVITY] = gravity
     out[P_HEIGHT] = shape.height
     out[P_RESTITUTION] = restitution
-    return out
+    return np.array(out, dtype=float)
 
 
 @functools.lru_cache(maxsize=64)

@@ -15,7 +15,6 @@ import numba as nb
 import numpy as np
 
 from freestand.core.body import Body, Box
-from freestand.core.contact.body_impulse import IMPULSE_WORK_DTYPE
 from freestand.core.contact.body_kernel import (
     DATA_SIZE,
     FACE,
@@ -24,7 +23,6 @@ from freestand.core.contact.body_kernel import (
     P_HALF_X,
     P_SHAPE,
     PIVOT_LEAN,
-    SCRATCH_DTYPE,
     SHAPE_BOX,
     STATE_SIZE,
     body_parameters,
@@ -35,6 +33,7 @@ from freestand.core.contact.vectors import norm2
 from freestand.core.dynamics import body_engine as engine
 from freestand.core.dynamics import body_state
 from freestand.core.dynamics.body_projection import FLAT_ROUND_OFF
+from freestand.core.dynamics.body_work import engine_work
 from freestand.core.dynamics.results import ContactTolerances, peak_between_samples
 from freestand.core.dynamics.single_block import UPLIFT_GAP_FRACTION
 from freestand.core.dynamics.timehistory import record_row_breaks
@@ -96,15 +95,20 @@ class SupportMotion3:
         x = np.asarray(self.x, dtype=float)
         if x.ndim != 1 or x.size < 2:
             raise FreestandError("x must be a 1-D array of at least 2 samples [m/s^2]")
-        for name in ("y", "vertical"):
+        rows = np.zeros((3, x.size))  # x, y, vertical: the engine's record (array())
+        rows[0] = x
+        for row, name in ((1, "y"), (2, "vertical")):
             value = getattr(self, name)
-            value = np.zeros_like(x) if value is None else np.asarray(value, dtype=float)
-            if value.shape != x.shape:
-                raise FreestandError(
-                    f"{name} must have the {x.size} samples of x, not {value.shape}"
-                )
-            object.__setattr__(self, name, value)
-        object.__setattr__(self, "x", x)
+            if value is not None:
+                value = np.asarray(value, dtype=float)
+                if value.shape != x.shape:
+                    raise FreestandError(
+                        f"{name} must have the {x.size} samples of x, not {value.shape}"
+                    )
+                rows[row] = value
+        for row, name in enumerate(("x", "y", "vertical")):
+            object.__setattr__(self, name, rows[row])
+        object.__setattr__(self, "_rows", rows)
 
     @property
     def duration(self) -> float:
@@ -118,8 +122,13 @@ class SupportMotion3:
                               self.vertical)  # fmt: skip
 
     def array(self) -> np.ndarray:
-        """(3, n), C-contiguous: x, y, vertical."""
-        return np.array((self.x, self.y, self.vertical))
+        """(3, n), C-contiguous: x, y, vertical, the rows ``x``, ``y`` and ``vertical`` view.
+
+        Kept from the motion's making, as its three components' one array (the
+        engine's record): stacking them again took 5 us of each run, 11 us where
+        another program's run had left numpy out of the caches.
+        """
+        return self._rows
 
     def at(self, time) -> np.ndarray:
         """(3, K): x, y, vertical [m/s^2] at the times ``time`` [s] (linear, zero outside)."""
@@ -211,7 +220,7 @@ def default_body_step(body: Body, gravity: float = GRAVITY) -> float:
     (cylinder) in x and y (Housner 1963), at most 20 ms; as the planar
     engine's :func:`freestand.core.dynamics.timehistory.default_step`.
     """
-    shape, mass, inertia = body.shape, body.mass, body.inertia
+    shape, mass, inertia = body.shape, body.mass, np.asarray(body.inertia).tolist()
     centre_x, centre_y, height = body.centre
     if isinstance(shape, Box):
         half_x, half_y = 0.5 * shape.size[0], 0.5 * shape.size[1]
@@ -219,8 +228,8 @@ def default_body_step(body: Body, gravity: float = GRAVITY) -> float:
         half_x = half_y = shape.radius
     largest = 0.0
     # rocking in the x-z plane (about y) and in the y-z plane (about x)
-    for moment, half, offset in ((float(inertia[1, 1]), half_x, centre_x),
-                                 (float(inertia[0, 0]), half_y, centre_y)):  # fmt: skip
+    for moment, half, offset in ((inertia[1][1], half_x, centre_x),
+                                 (inertia[0][0], half_y, centre_y)):  # fmt: skip
         for lever in (half - offset, half + offset):
             rho = math.hypot(lever, height)
             i_o = moment + mass * rho**2
@@ -321,8 +330,7 @@ def simulate_body(
     mode = np.zeros(3, dtype=np.int64)
     data = np.zeros(DATA_SIZE)
     istate = np.zeros(body_state.I_SIZE, dtype=np.int64)
-    scratch = np.zeros(1, dtype=SCRATCH_DTYPE)  # its record is the kernel's scratch
-    impulse_work = np.zeros(1, dtype=IMPULSE_WORK_DTYPE)  # its record the impulses' work arrays
+    scratch, impulse_work = engine_work()  # the kernel's scratch, the impulses' work arrays
     capacity = _capacity(end, step, breaks)
     buffers = _buffers(capacity)
     events = _event_buffers(capacity)
@@ -645,10 +653,10 @@ def _first_invalid(state, lowest, depth):
 
 
 #: The events' kinds by code (:data:`~freestand.core.dynamics.body_state.EVENT_KINDS`).
-EVENT_KIND_NAMES = np.array(body_state.EVENT_KINDS, dtype=object)
+EVENT_KIND_NAMES = body_state.EVENT_KINDS
 #: The patches' names by code (FREE, POINT, EDGE, FACE); the code -1 (no patch before a start
 #: event) takes the last, "".
-PATCH_NAMES = np.array(["free", "point", "edge", "face", ""], dtype=object)
+PATCH_NAMES = ("free", "point", "edge", "face", "")
 
 
 def _result(
@@ -697,10 +705,16 @@ def _result(
 
 
 def _event_tuples(events: tuple, shown: int) -> tuple:
-    """The first ``shown`` of the engine's events as (time [s], kind, patch before, after)."""
-    times, kinds, before, after = (e[:shown] for e in events)
-    columns = (times, EVENT_KIND_NAMES[kinds], PATCH_NAMES[before], PATCH_NAMES[after])
-    return tuple(zip(*(column.tolist() for column in columns), strict=True))
+    """The first ``shown`` of the engine's events as (time [s], kind, patch before, after).
+
+    Named from lists of the codes (indexing arrays of names took 8 us warm, 26 us where
+    another program's run had left numpy out of the caches).
+    """
+    columns = (e[:shown].tolist() for e in events)
+    return tuple(
+        (time, EVENT_KIND_NAMES[kind], PATCH_NAMES[was], PATCH_NAMES[now])
+        for time, kind, was, now in zip(*columns, strict=True)
+    )
 
 
 @nb.njit(cache=True, error_model="numpy")
