@@ -163,9 +163,9 @@ def test_small_angles_and_twist_jumps_are_atan2s_to_round_off(tangent, half, tur
 
 
 def test_a_repeated_state_repeats_its_row():
-    # a body at rest repeats its state: its row is copied, not computed again, and must equal
-    # the row computed alone (tilt, slide, twist, base heights), before and after other states;
-    # equal to the last bit but the twist (1e-12 rad: two histories' unwrapping)
+    # a body at rest repeats its state: its row must equal the row computed alone (tilt,
+    # slide, twist, base heights), before and after other states; equal to the last bit but
+    # the twist (1e-12 rad: two histories' unwrapping)
     rng = np.random.default_rng(7)
     states = np.tile(initial_state(BOX), (6, 1))
     for i in (1, 4):
@@ -262,3 +262,57 @@ def test_a_motion_s_components_are_the_rows_of_its_record():
         assert np.shares_memory(component, record) and np.array_equal(component, record[row])
     x[1] = 99.0  # the caller's array is copied: the motion does not change with it
     assert motion.x[1] == 1.0
+
+
+def _motion_by_numpy(body, states):
+    """body_motion's tilt, slide, twist and base heights, and its rates, state by state in
+    numpy: rotation matrices, atan2 and numpy.unwrap (an independent reading)."""
+    rot = body_history.rotation_matrices(states[:, 3:7])
+    axis = rot[:, :, 2]  # R e_z
+    tilt = np.arctan2(np.hypot(axis[:, 0], axis[:, 1]), axis[:, 2])
+    arm = rot @ np.asarray(body.centre)  # R c
+    base = states[:, 0:3] - arm
+    slide = base[:, :2] - base[0, :2]
+    twist = np.unwrap(2.0 * np.arctan2(states[:, 6], states[:, 3]))
+    twist -= twist[0]
+    if isinstance(body.shape, Box):
+        corners = np.einsum("kij,pj->kpi", rot, body.shape.base_corners())[:, :, 2]
+        heights = corners + base[:, 2:3]
+        lowest, highest = heights.min(axis=1), heights.max(axis=1)
+    else:
+        reach = body.shape.radius * np.hypot(axis[:, 0], axis[:, 1])
+        lowest, highest = base[:, 2] - reach, base[:, 2] + reach
+    omega, velocity = states[:, 10:13], states[:, 7:10]
+    tilt_rate = -np.cross(omega, axis)[:, 2] / np.hypot(axis[:, 0], axis[:, 1])
+    base_velocity = velocity - np.cross(omega, arm)
+    with np.errstate(invalid="ignore"):  # the first state has no slide: its rate is not compared
+        slide_rate = np.einsum("ki,ki->k", slide, base_velocity[:, :2]) / np.hypot(*slide.T)
+    w, x, y, z = states[:, 3:7].T
+    w_rate = -0.5 * (omega[:, 0] * x + omega[:, 1] * y + omega[:, 2] * z)
+    z_rate = 0.5 * (w * omega[:, 2] + omega[:, 0] * y - omega[:, 1] * x)
+    twist_rate = 2.0 * (w * z_rate - z * w_rate) / (w * w + z * z)
+    return (tilt, slide, twist, lowest, highest), np.array([tilt_rate, slide_rate, twist_rate])
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_the_motion_read_in_columns_is_the_motion_state_by_state(seed):
+    # body_history._motion_rows reads the states in vectorised passes over their columns;
+    # against numpy state by state (random tilts up to 1.2 rad, yaws, velocities, runs of
+    # repeated states); tolerance 1e-12 (round-off of the two readings' arithmetic)
+    rng = np.random.default_rng(seed)
+    body = (BOX, CASK)[seed % 2]
+    count = 40
+    states = np.empty((count, 13))
+    for i in range(count):
+        state = initial_state(body, tuple(rng.uniform(-0.85, 0.85, 2)))
+        state[3:7] = _yawed(state, rng.uniform(-3.0, 3.0) + 0.3 * i)[3:7]
+        state[0:3] += rng.normal(size=3)
+        state[7:13] = rng.normal(size=6)
+        states[i] = state
+    states[[5, 6, 20]] = states[[4, 4, 19]]  # repeated states
+    motion, rates = body_history._read_motion(body, states, True)
+    expected, expected_rates = _motion_by_numpy(body, states)
+    got = (motion.tilt, motion.slide, motion.twist, motion.lowest, motion.highest)
+    for value, reference in zip(got, expected, strict=True):
+        np.testing.assert_allclose(value, reference, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(rates[:, 1:], expected_rates[:, 1:], rtol=1e-10, atol=1e-12)
