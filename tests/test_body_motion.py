@@ -2,6 +2,7 @@
 and the history's rows gathered from the engine's calls."""
 
 import math
+from functools import reduce
 
 import numpy as np
 import pytest
@@ -20,6 +21,7 @@ from freestand.core.dynamics.body_history import (
     lost_contact_depth,
     simulate_body,
 )
+from freestand.core.dynamics.results import peak_between_samples
 from freestand.core.model import Friction
 
 BOX = Body("box", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.5, 0.5))
@@ -187,16 +189,25 @@ def test_a_repeated_state_repeats_its_row():
 
 def _separate_rows(body, par, time, state, modes, forces, event_times, depth):
     """The result's rows and peaks as the front end computed them call by call before
-    :func:`body_history._history_rows` did it in one."""
+    :func:`body_history._history_rows` did it in one, and its peaks in passes of
+    :func:`peak_between_samples` before :func:`body_history._peaks` took them in one."""
     motion, rates = body_history._read_motion(body, state, True)
     first = _first_invalid(state, motion.lowest, depth)
     rows, _ = _kept_rows(time, state, motion.lowest, first)
     shown = int(np.count_nonzero(event_times <= time[rows - 1]))
     rates = np.ascontiguousarray(rates[:, :rows])
-    body_history._skip_event_rows(time[:rows], event_times[:shown], rates)
-    peaks = body_history._peaks(time[:rows], motion.tilt[:rows], motion.slide[:rows],
-                                motion.twist[:rows], rates[0], rates[1], rates[2],
-                                motion.highest[:rows], modes[:rows])  # fmt: skip
+    # a row at an event holds the state after it: no step ending there is refined on its rates
+    rates[:, np.isin(time[:rows], event_times[:shown])] = math.nan
+    tilt, twist = motion.tilt[:rows], motion.twist[:rows]
+    size = np.sqrt(motion.slide[:rows, 0] ** 2 + motion.slide[:rows, 1] ** 2)  # as norm2
+    # the largest rows, and each quantity refined between its rows where its rate turns
+    # (Python's max, as the compiled one's: a NaN after the first value is passed over)
+    top = [reduce(max, values.tolist(), 0.0) for values in (tilt, size, np.abs(twist))]
+    refined = [peak_between_samples(time[:rows], values, rate)
+               for values, rate in zip((tilt, size, twist), rates, strict=True)]  # fmt: skip
+    peaks = (*(max(a, b) for a, b in zip(top, refined, strict=True)),
+             reduce(max, motion.highest[:rows].tolist(), -math.inf),
+             float(np.any(modes[:rows, 0] == FREE)))  # fmt: skip
     return (first, shown, motion.lowest, motion.tilt[:rows], motion.slide[:rows],
             motion.twist[:rows], modes[:rows, 0].copy(), modes[:rows, 2] == 1,
             forces[:rows, 0].copy(), forces[:rows, 1].copy(), peaks)  # fmt: skip
@@ -207,7 +218,7 @@ def _separate_rows(body, par, time, state, modes, forces, event_times, depth):
        st.sampled_from(["valid", "below", "not finite"]))  # fmt: skip
 def test_the_history_s_rows_in_one_call_are_the_separate_calls_to_the_bit(seed, body, count, bad):
     # _history_rows (the body from its parameter vector) against _read_motion, _first_invalid,
-    # _kept_rows, _skip_event_rows and _peaks on random states: tilted, turned, repeated, some
+    # _kept_rows and peak_between_samples on random states: tilted, turned, repeated, some
     # below the support or not finite; events at some rows and between them
     rng = np.random.default_rng(seed)
     state = np.tile(initial_state(body), (count, 1))

@@ -34,7 +34,7 @@ from freestand.core.dynamics import body_engine as engine
 from freestand.core.dynamics import body_state
 from freestand.core.dynamics.body_projection import FLAT_ROUND_OFF
 from freestand.core.dynamics.body_work import engine_work
-from freestand.core.dynamics.results import ContactTolerances, peak_between_samples
+from freestand.core.dynamics.results import ContactTolerances, interval_peak
 from freestand.core.dynamics.single_block import UPLIFT_GAP_FRACTION
 from freestand.core.dynamics.timehistory import record_row_breaks
 from freestand.errors import FreestandError
@@ -774,8 +774,7 @@ def _history_rows(par, time, state, modes, forces, event_times, depth):
     (:func:`~freestand.core.contact.body_kernel.body_parameters`), the rows
     kept (:func:`_first_invalid` below ``depth`` [m], :func:`_kept_rows`),
     the events up to the last of them (``event_times`` [s] ascending, as the
-    engine writes them), their rows' rates skipped (:func:`_skip_event_rows`)
-    and :func:`_peaks`.
+    engine writes them) and :func:`_peaks`.
 
     Returns
     -------
@@ -798,12 +797,8 @@ def _history_rows(par, time, state, modes, forces, event_times, depth):
     shown = 0
     while shown < event_times.shape[0] and event_times[shown] <= last:
         shown += 1
-    # a row at an event holds the state after it (an impact's velocities): no step ending
-    # there is refined on its rates
-    rates = rates[:, :rows]
-    _skip_event_rows(time[:rows], event_times[:shown], rates)
-    peaks = _peaks(time[:rows], tilt[:rows], slide[:rows], twist[:rows], rates[0], rates[1],
-                   rates[2], highest[:rows], modes[:rows])  # fmt: skip
+    peaks = _peaks(time[:rows], tilt[:rows], slide[:rows], twist[:rows], rates[:, :rows],
+                   highest[:rows], modes[:rows], event_times[:shown])  # fmt: skip
     return (first, shown, lowest, tilt[:rows], slide[:rows], twist[:rows],
             modes[:rows, 0].copy(), modes[:rows, 2] == 1, forces[:rows, 0].copy(),
             forces[:rows, 1].copy(), peaks)  # fmt: skip
@@ -824,31 +819,43 @@ def _base_outline(par):
 
 
 @nb.njit(cache=True, error_model="numpy")
-def _peaks(time, tilt, slide, twist, tilt_rate, slide_rate, twist_rate, highest, modes):
+def _peaks(time, tilt, slide, twist, rates, highest, modes, event_times):
     """(largest tilt [rad], slide [m], |twist| [rad], highest base point [m], 1.0 if a row
-    is FREE else 0.0): the result's peaks.
+    is FREE else 0.0): the result's peaks, in one pass over the rows.
 
     The tilt's, the slide's and the twist's are refined between rows on the
-    cubic Hermite interpolant of each and its rate (:func:`_rate_columns`;
-    :func:`~freestand.core.dynamics.results.peak_between_samples`, as the
-    planar engine's peaks): a random box's rocking excursion of 38 ms, stepped
-    at the record's 5 ms, peaked 3.8 % above its largest row. A NaN rate (a
-    row at an event) keeps its row's value and refines none of its steps.
+    cubic Hermite interpolant of each and its rate (``rates`` (3, K),
+    :func:`_rate_columns`;
+    :func:`~freestand.core.dynamics.results.interval_peak`, as the planar
+    engine's peaks): a random box's rocking excursion of 38 ms, stepped at
+    the record's 5 ms, peaked 3.8 % above its largest row. A row at an event
+    (``event_times`` [s], ascending, as ``time``) holds the state after it (an
+    impact's velocities): it keeps its value, and no step ending there is
+    refined on its rates.
     """
-    count = tilt.shape[0]
-    size = np.empty(count)
     top_tilt, top_slide, top_twist, top_high, free = 0.0, 0.0, 0.0, -math.inf, 0.0
-    for i in range(count):
-        size[i] = norm2(slide[i, 0], slide[i, 1])
+    event = 0  # the first event at or after the row's time
+    size_before, skipped_before = 0.0, True
+    for i in range(tilt.shape[0]):
+        size = norm2(slide[i, 0], slide[i, 1])
         top_tilt = max(top_tilt, tilt[i])
-        top_slide = max(top_slide, size[i])
+        top_slide = max(top_slide, size)
         top_twist = max(top_twist, abs(twist[i]))
         top_high = max(top_high, highest[i])
         if modes[i, 0] == FREE:
             free = 1.0
-    top_tilt = max(top_tilt, peak_between_samples(time, tilt, tilt_rate))
-    top_slide = max(top_slide, peak_between_samples(time, size, slide_rate))
-    top_twist = max(top_twist, peak_between_samples(time, twist, twist_rate))
+        while event < event_times.shape[0] and event_times[event] < time[i]:
+            event += 1
+        skipped = event < event_times.shape[0] and event_times[event] == time[i]
+        if i > 0 and not skipped and not skipped_before:
+            h = time[i] - time[i - 1]
+            top_tilt = max(top_tilt, interval_peak(h, tilt[i - 1], tilt[i], rates[0, i - 1],
+                                                   rates[0, i]))  # fmt: skip
+            top_slide = max(top_slide, interval_peak(h, size_before, size, rates[1, i - 1],
+                                                     rates[1, i]))  # fmt: skip
+            top_twist = max(top_twist, interval_peak(h, twist[i - 1], twist[i], rates[2, i - 1],
+                                                     rates[2, i]))  # fmt: skip
+        size_before, skipped_before = size, skipped
     return top_tilt, top_slide, top_twist, top_high, free
 
 
@@ -885,21 +892,6 @@ def _rate_columns(columns, base, rates):
         z_rate = 0.5 * (w * wz + wx * y - wy * x)
         norm = w * w + z * z
         rates[2, i] = 2.0 * (w * z_rate - z * w_rate) / norm if norm > 0.0 else 0.0
-
-
-@nb.njit(cache=True, error_model="numpy")
-def _skip_event_rows(time, event_times, rates):
-    """NaN in ``rates`` (3, K) at the rows at an event: they hold the state after it.
-
-    ``time`` and ``event_times`` [s] ascending; one merge over both.
-    """
-    j = 0
-    for i in range(time.shape[0]):
-        while j < event_times.shape[0] and event_times[j] < time[i]:
-            j += 1
-        if j < event_times.shape[0] and event_times[j] == time[i]:
-            for k in range(3):
-                rates[k, i] = math.nan
 
 
 def rotation_matrices(quaternions: np.ndarray) -> np.ndarray:

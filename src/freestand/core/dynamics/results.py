@@ -442,33 +442,44 @@ def peak_between_samples(time, value, rate):
         if math.isfinite(value[k]) and math.isfinite(rate[k]):
             peak = max(peak, abs(value[k]))
     for k in range(count - 1):
-        y0 = value[k]
-        y1 = value[k + 1]
-        r0 = rate[k]
-        r1 = rate[k + 1]
-        if not (math.isfinite(y0) and math.isfinite(y1) and math.isfinite(r0)
-                and math.isfinite(r1)):  # fmt: skip
-            continue
-        if not r0 * r1 < 0.0:
-            continue
-        h = time[k + 1] - time[k]
-        if not h > 0.0:
-            continue
-        m0 = r0 * h
-        m1 = r1 * h
-        # p(s) = y0 + m0 s + (3 (y1 - y0) - 2 m0 - m1) s^2 + (2 (y0 - y1) + m0 + m1) s^3
-        c2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1
-        c3 = 2.0 * (y0 - y1) + m0 + m1
-        # roots of p'(s) = 3 c3 s^2 + 2 c2 s + m0 in the stable form q = -(b + sgn(b) sqrt(d)) / 2
-        a = 3.0 * c3
-        b = 2.0 * c2
-        discriminant = b * b - 4.0 * a * m0
-        root = math.sqrt(discriminant) if discriminant >= 0.0 else math.nan
-        q = -0.5 * (b + (root if b >= 0.0 else -root))
-        for s in (q / a, m0 / q):
-            if math.isfinite(s) and s > 0.0 and s < 1.0:
-                candidate = y0 + (m0 + (c2 + c3 * s) * s) * s
-                peak = max(peak, abs(candidate))
+        step = time[k + 1] - time[k]
+        peak = max(peak, interval_peak(step, value[k], value[k + 1], rate[k], rate[k + 1]))
+    return peak
+
+
+@nb.njit(cache=True, error_model="numpy", inline="always")
+def interval_peak(h, y0, y1, r0, r1):
+    """|value| at a turning point inside a step of ``h`` [s]; 0.0 where it has none.
+
+    The cubic Hermite interpolant of the values ``y0``, ``y1`` and their
+    rates ``r0``, ``r1`` (per second) at the step's ends: where the rate
+    changes sign, the root of its derivative inside the step, in the stable
+    form of the quadratic's roots. 0.0 where a value or rate is not finite,
+    the rate keeps its sign, or h is not positive.
+    """
+    peak = 0.0
+    if not (math.isfinite(y0) and math.isfinite(y1) and math.isfinite(r0)
+            and math.isfinite(r1)):  # fmt: skip
+        return peak
+    if not r0 * r1 < 0.0:
+        return peak
+    if not h > 0.0:
+        return peak
+    m0 = r0 * h
+    m1 = r1 * h
+    # p(s) = y0 + m0 s + (3 (y1 - y0) - 2 m0 - m1) s^2 + (2 (y0 - y1) + m0 + m1) s^3
+    c2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1
+    c3 = 2.0 * (y0 - y1) + m0 + m1
+    # roots of p'(s) = 3 c3 s^2 + 2 c2 s + m0 in the stable form q = -(b + sgn(b) sqrt(d)) / 2
+    a = 3.0 * c3
+    b = 2.0 * c2
+    discriminant = b * b - 4.0 * a * m0
+    root = math.sqrt(discriminant) if discriminant >= 0.0 else math.nan
+    q = -0.5 * (b + (root if b >= 0.0 else -root))
+    for s in (q / a, m0 / q):
+        if math.isfinite(s) and s > 0.0 and s < 1.0:
+            candidate = y0 + (m0 + (c2 + c3 * s) * s) * s
+            peak = max(peak, abs(candidate))
     return peak
 
 
