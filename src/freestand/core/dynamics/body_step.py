@@ -316,17 +316,20 @@ def start_functions(par, record, dt, t, y, mode, data, sc, ref, stop_speed, valu
     """A step's references (:func:`references`) and event functions at its start (t, y).
 
     One solve where the slip's references made it (none where the scratch
-    holds it, ``solved``; where it holds it for another pivot, a rolling
-    cylinder's, that moved to the lowest rim point, the closed form on its
-    rotation and applied wrench, which are the state's: about 1 % of the
-    benchmark's slender cylinder, to the last bit); ``stop_speed`` [m/s]:
+    holds it, ``solved``). A rolling cylinder's end is solved at its lowest
+    rim point already (:func:`~freestand.core.contact.body_kernel.pivot_direction`
+    reads it from the rotation; the stored angle picks its side only): where
+    the scratch holds the solve for the other side of the rim, the closed
+    form on its rotation and applied wrench, which are the state's, to the
+    last bit. A guard: none of the 294 runs of ``benchmarks/body_sweep.py``
+    takes it (counted in the compiled loop). ``stop_speed`` [m/s]:
     :func:`references`'. Returns the functions' count.
     """
     n_normal, n_tangent = references(par, record, dt, t, y, mode, data, sc, ref, stop_speed,
                                      solved)  # fmt: skip
     if n_tangent < 0 and solved and closed_form(mode):
-        # a rolling cylinder's pivot moved to the lowest rim point: the scratch's rotation and
-        # applied wrench are the state's, its rows are solved again
+        # the scratch's solve was for the rim's other side: its rotation and applied wrench are
+        # the state's, the rows at the stored pivot are solved again
         sticking_solve(par, record, dt, t, y, mode, data, sc, True)
         n_normal, n_tangent = row_counts(mode[M_KIND])
     elif n_tangent < 0:
