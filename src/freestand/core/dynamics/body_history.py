@@ -73,6 +73,9 @@ class SupportMotion3:
         Downward support acceleration a_v [m/s^2] (the weight is ``m (g - a_v)``);
         None for none. Zero before the first and after the last sample.
 
+    The three are kept as the rows of one (3, n) array (:meth:`array`), copies
+    of the arrays given.
+
     Examples
     --------
     >>> import numpy as np
