@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder
 from freestand.core.contact.body_kernel import EDGE, FACE, FREE, POINT, body_parameters
-from freestand.core.dynamics import body_history
+from freestand.core.dynamics import body_history, body_state
 from freestand.core.dynamics.body_history import (
     SupportMotion3,
     _first_invalid,
@@ -19,7 +19,6 @@ from freestand.core.dynamics.body_history import (
     body_motion,
     initial_state,
     lost_contact_depth,
-    simulate_body,
 )
 from freestand.core.dynamics.results import peak_between_samples
 from freestand.core.model import Friction
@@ -91,21 +90,30 @@ def test_a_history_is_cut_before_a_state_below_the_support_or_not_finite():
     assert _valid_rows(time, np.tile(initial_state(BOX), (5, 1)), np.zeros(5), depth) == (5, "")
 
 
-def test_a_run_whose_buffers_fill_gives_the_run_in_one_call(monkeypatch):
-    """The engine returns where its output buffer is full and is called again; the rows and
-    the events (whose arrays grow with the calls) must be those of one call."""
+def test_a_run_whose_buffers_fill_gives_the_run_in_one_call():
+    """The engine returns where its output buffers are full and is called again on longer
+    ones; the rows, the events (whose arrays grow with the calls) and the peaks must be
+    those of one call."""
     body = Body("box", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.5, 0.5))
     t = np.arange(0.0, 2.0001, 0.005)
     a = 4.0 * np.sin(2.0 * np.pi * 2.0 * t) * (t < 1.5)
     motion = SupportMotion3(0.005, 0.3 * a, a, 0.2 * a)
-    whole = simulate_body(body, motion, 2.0)
-    monkeypatch.setattr(body_history, "_capacity", lambda end, step, breaks: 40)
-    chunked = simulate_body(body, motion, 2.0)
-    assert len(whole.events) > 5 and len(whole.time) > 200  # several calls of 40 rows
-    assert chunked.events == whole.events
-    np.testing.assert_array_equal(chunked.time, whole.time)
-    np.testing.assert_array_equal(chunked.state, whole.state)
-    np.testing.assert_array_equal(chunked.patch, whole.patch)
+    par = body_parameters(body, 9.81)
+    step = body_history.default_body_step(body)
+    depth = lost_contact_depth(0.6, 1e-7)
+
+    def run(rows):
+        scratch, work = body_history.engine_work()
+        return body_history._run_history(par, motion.array(), 0.005, step, 2.0, 2.0, 1e-7,
+                                         1e-4, initial_state(body), scratch, work, depth, rows)  # fmt: skip
+
+    whole, chunked = run(0), run(40)  # the record's capacity; 40 rows, doubled as they fill
+    assert whole[1].size > 200 and whole[0][body_state.I_EVENTS] > 5  # chunked: several calls
+    np.testing.assert_array_equal(chunked[0], whole[0])  # the counters
+    for one, other in zip((chunked[1], chunked[2], *chunked[3], *chunked[4][2:-1]),
+                          (whole[1], whole[2], *whole[3], *whole[4][2:-1]), strict=True):  # fmt: skip
+        assert one.tobytes() == other.tobytes()
+    assert chunked[4][:2] == whole[4][:2] and chunked[4][-1] == whole[4][-1]
 
 
 def _moved(state, tau):

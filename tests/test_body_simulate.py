@@ -254,7 +254,14 @@ def test_a_base_point_through_the_support_ends_the_history_as_failed(model):
     """The front end's guard: the histories, events and peaks stop where the contact was lost."""
     from freestand.core.contact.body_kernel import body_parameters
     from freestand.core.dynamics import body_state
-    from freestand.core.dynamics.body_history import GRAVITY, _result, initial_state
+    from freestand.core.dynamics.body_history import (
+        GRAVITY,
+        _base_width,
+        _history_rows,
+        _result,
+        initial_state,
+        lost_contact_depth,
+    )
 
     body = model.body_configuration("cabinet").body
     state = np.tile(initial_state(body), (5, 1))
@@ -265,8 +272,10 @@ def test_a_base_point_through_the_support_ends_the_history_as_failed(model):
     events = (np.array([0.0, 0.35]), np.array([0, 1]), np.array([-1, 3]), np.array([3, 3]))
     istate = np.zeros(body_state.I_SIZE, dtype=np.int64)
     istate[body_state.I_EVENTS] = 2
-    history = _result(body, body_parameters(body, GRAVITY), istate, np.arange(5) * 0.1, state, modes, np.zeros((5, 2)),
-                      events)  # fmt: skip
+    time, width = np.arange(5) * 0.1, _base_width(body)
+    rows = _history_rows(body_parameters(body, GRAVITY), time, state, modes, np.zeros((5, 2)),
+                         events[0], lost_contact_depth(width, 1e-7))  # fmt: skip
+    history = _result(body, width, istate, time, state, events, rows)
     assert history.status == "failed" and not history.overturned
     assert history.message.startswith("a base point went 0.001 m below the support at t = 0.3 s")
     assert history.time.tolist() == [0.0, 0.1, 0.2] and len(history.events) == 1

@@ -327,79 +327,103 @@ def simulate_body(
             source="restitution",
         )
     par = body_parameters(body, gravity, float(restitution))
-    record = motion.array()
-    breaks = record_row_breaks(float(motion.time_step), record)
     y = initial_state(body) if initial is None else np.array(initial, dtype=float)
+    scratch, impulse_work = engine_work()  # the kernel's scratch, the impulses' work arrays
+    width = _base_width(body)
+    istate, time, state, events, rows = _run_history(
+        par, motion.array(), float(motion.time_step), step, end, motion.duration,
+        tolerances.gap, tolerances.velocity, y, scratch, impulse_work,
+        lost_contact_depth(width, tolerances.gap), 0,
+    )  # fmt: skip
+    return _result(body, width, istate, time, state, events, rows)
+
+
+def _base_width(body: Body) -> float:
+    """The base's smaller side (box) or its diameter (cylinder) [m]."""
+    return min(body.shape.size[:2]) if isinstance(body.shape, Box) else 2.0 * body.shape.radius
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _run_history(par, record, dt, h_max, t_end, record_end, gap_tol, velocity_tol, y, scratch,
+                 impulse_work, depth, rows):  # fmt: skip
+    """The engine's run from time 0 and the result's rows, in one compiled call.
+
+    The record's breaks (:func:`~freestand.core.dynamics.timehistory.record_row_breaks`),
+    the output buffers (``rows`` rows at first; 0: :func:`_capacity`'s), the loop
+    (:func:`freestand.core.dynamics.body_engine.run`) called again on buffers
+    twice as long, the rows kept, where they fill, and :func:`_history_rows`
+    below ``depth`` [m]. One call from Python where there were three and the
+    buffers' nine allocations: some 40 us less of the benchmark's runs
+    alternated with MuJoCo's, which find Python's and numba's dispatch out of
+    the caches. ``y`` (13,) the initial state, advanced to the end; ``scratch``
+    and ``impulse_work`` the engine's records
+    (:func:`~freestand.core.dynamics.body_work.engine_work`).
+
+    Returns
+    -------
+    tuple
+        (istate, time (K,) [s], state (K, 13), the events' (time [s], kind,
+        patch before, after) arrays, :func:`_history_rows`'s tuple).
+    """
     mode = np.zeros(3, dtype=np.int64)
     data = np.zeros(DATA_SIZE)
     istate = np.zeros(body_state.I_SIZE, dtype=np.int64)
-    scratch, impulse_work = engine_work()  # the kernel's scratch, the impulses' work arrays
-    capacity = _capacity(end, step, breaks)
-    buffers = _buffers(capacity)
-    events = _event_buffers(capacity)
+    breaks = record_row_breaks(dt, record)
+    if rows <= 0:
+        rows = _capacity(t_end, h_max, breaks)
+    out_t, out_y = np.empty(rows), np.empty((rows, STATE_SIZE))
+    out_mode, out_force = np.empty((rows, 3), dtype=np.int64), np.empty((rows, 2))
+    events = _event_size(rows, 0)
+    ev_time, ev_kind = np.empty(events), np.empty(events, dtype=np.int64)
+    ev_before, ev_after = np.empty(events, dtype=np.int64), np.empty(events, dtype=np.int64)
     t = 0.0
-    chunks = []
     while True:
-        t = engine.run(par, record, motion.time_step, breaks, step, end, motion.duration,
-                       tolerances.gap, tolerances.velocity, t, y, mode, data, scratch,
-                       impulse_work, istate, *buffers, *events)  # fmt: skip
+        t = engine.run(par, record, dt, breaks, h_max, t_end, record_end, gap_tol, velocity_tol,
+                       t, y, mode, data, scratch, impulse_work, istate, out_t, out_y, out_mode,
+                       out_force, ev_time, ev_kind, ev_before, ev_after)  # fmt: skip
         if istate[body_state.I_STATUS] != body_state.STATUS_BUFFER_FULL:
-            rows = int(istate[body_state.I_RECORDS])
-            chunks.append((buffers[0][:rows], buffers[1][:rows], buffers[2][:rows],
-                           buffers[3][:rows]))  # fmt: skip
             break
-        chunks.append(tuple(b.copy() for b in buffers))
-        istate[body_state.I_RECORDS] = 1
-        buffers = _buffers(capacity)
-        events = _event_buffers(capacity, events, int(istate[body_state.I_EVENTS]))
-        for b, last in zip(buffers, chunks[-1], strict=True):
-            b[0] = last[-1]
-    if len(chunks) == 1:
-        time, state, modes, forces = chunks[0]
-    else:
-        time, state, modes, forces = (
-            np.concatenate([c[k] if i == 0 else c[k][1:] for i, c in enumerate(chunks)])
-            for k in range(4)
-        )
-    return _result(body, par, istate, time, state, modes, forces, events, tolerances.gap)
+        # the rows so far kept, the loop goes on writing after them
+        rows *= 2
+        out_t, out_y = _grown(out_t, rows), _grown(out_y, rows)
+        out_mode, out_force = _grown(out_mode, rows), _grown(out_force, rows)
+        events = _event_size(rows, istate[body_state.I_EVENTS])
+        if events > ev_time.shape[0]:
+            ev_time, ev_kind = _grown(ev_time, events), _grown(ev_kind, events)
+            ev_before, ev_after = _grown(ev_before, events), _grown(ev_after, events)
+    count = istate[body_state.I_RECORDS]
+    kept = min(istate[body_state.I_EVENTS], ev_time.shape[0])
+    time, state = out_t[:count], out_y[:count]
+    result = _history_rows(par, time, state, out_mode[:count], out_force[:count], ev_time[:kept],
+                           depth)  # fmt: skip
+    return (istate, time, state, (ev_time[:kept], ev_kind[:kept], ev_before[:kept],
+                                  ev_after[:kept]), result)  # fmt: skip
 
 
-def _capacity(end: float, step: float, breaks: np.ndarray) -> int:
-    """Rows of the output buffers of one call of the engine (more calls where they fill).
-
-    A step ends at ``step`` [s], at every break of the record and at every
-    event, up to ``end`` [s].
-    """
-    return int(end / step * 1.1) + 2 * int(breaks.searchsorted(end)) + 64  # breaks ascend
-
-
-def _buffers(capacity: int):
-    # written by the engine before they are read: not zeroed
-    return (np.empty(capacity), np.empty((capacity, STATE_SIZE)),
-            np.empty((capacity, 3), dtype=np.int64), np.empty((capacity, 2)))  # fmt: skip
-
-
-def _event_buffers(capacity: int, events: tuple | None = None, count: int = 0) -> tuple:
-    """The engine's event arrays (time, kind, patch before, after) for its next call.
-
-    A call of the engine writes at most ``capacity`` rows and an event per
-    row, with one more at the start and one at an overturn: the arrays hold
-    the ``count`` events so far in ``events`` (None for none) and that many
-    more (up to ``EVENT_ROWS``; the engine counts the others). They grow as
-    needed, keeping what they hold: every run allocated (and freed)
-    ``EVENT_ROWS`` of each at once before, 6.4 MB, for the few hundred events
-    a record makes.
-    """
-    size = min(EVENT_ROWS, count + capacity + 2)
-    if events is not None and events[0].shape[0] >= size:
-        return events
-    grown = (np.empty(size), np.empty(size, dtype=np.int64), np.empty(size, dtype=np.int64),
-             np.empty(size, dtype=np.int64))  # fmt: skip
-    if events is not None:
-        kept = min(count, events[0].shape[0])
-        for new, old in zip(grown, events, strict=True):
-            new[:kept] = old[:kept]
+@nb.njit(cache=True, error_model="numpy")
+def _grown(values, size):
+    """``values`` (rows first) in a new array of ``size`` rows, the rest not set."""
+    grown = np.empty((size,) + values.shape[1:], dtype=values.dtype)
+    grown[: values.shape[0]] = values
     return grown
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _event_size(rows, count):
+    """Events the engine's event arrays hold for a call of ``rows`` output rows after
+    ``count`` events: a call writes at most an event per row, with one more at the start
+    and one at an overturn; at most ``EVENT_ROWS`` (the engine counts the others)."""
+    return min(EVENT_ROWS, count + rows + 2)
+
+
+@nb.njit(cache=True, error_model="numpy")
+def _capacity(end, step, breaks):
+    """Rows of the output buffers of the engine's first call (twice as many at each further).
+
+    A step ends at ``step`` [s], at every break of the record (``breaks`` [s],
+    ascending) and at every event, up to ``end`` [s].
+    """
+    return int(end / step * 1.1) + 2 * np.searchsorted(breaks, end) + 64
 
 
 @dataclass(frozen=True)
@@ -711,18 +735,14 @@ EVENT_KIND_NAMES = body_state.EVENT_KINDS
 PATCH_NAMES = ("free", "point", "edge", "face", "")
 
 
-def _result(
-    body, par, istate, time, state, modes, forces, events, gap=ContactTolerances.gap
-) -> BodyTimeHistory:
-    width = min(body.shape.size[:2]) if isinstance(body.shape, Box) else 2.0 * body.shape.radius
+def _result(body, width, istate, time, state, events, rows) -> BodyTimeHistory:
+    """The history of :func:`simulate_body` from :func:`_run_history`'s arrays; ``width`` [m]
+    the base's (:func:`_base_width`)."""
     counts = istate.tolist()
-    count = counts[body_state.I_EVENTS]
-    kept = min(count, events[0].shape[0])
     (first, shown, lowest, tilt, slide, twist, patch, sliding, normal_force, friction_force,
-     peaks) = _history_rows(par, time, state, modes, forces, events[0][:kept],
-                            lost_contact_depth(width, gap))  # fmt: skip
-    rows, message = _kept_rows(time, state, lowest, first)
-    time, state = time[:rows], state[:rows]
+     peaks) = rows  # fmt: skip
+    kept, message = _kept_rows(time, state, lowest, first)
+    time, state = time[:kept], state[:kept]
     overturned = not message and counts[body_state.I_STATUS] == body_state.STATUS_OVERTURNED
     return BodyTimeHistory(
         body=body.name,
@@ -746,7 +766,7 @@ def _result(
         overturn_time=float(time[-1]) if overturned else None,
         diagnostics={
             "steps": counts[body_state.I_STEPS],
-            "events": count,
+            "events": counts[body_state.I_EVENTS],
             "impacts": counts[body_state.I_IMPACTS],
             "remedies": counts[body_state.I_REMEDIES],
             "stretch_steps": counts[body_state.I_STRETCH_STEPS],
