@@ -350,12 +350,12 @@ def _run_history(par, record, dt, h_max, t_end, record_end, gap_tol, velocity_to
 
     The record's breaks (:func:`~freestand.core.dynamics.timehistory.record_row_breaks`),
     the output buffers (``rows`` rows at first; 0: :func:`_capacity`'s), the loop
-    (:func:`freestand.core.dynamics.body_engine.run`) called again on buffers
-    twice as long, the rows kept, where they fill, and :func:`_history_rows`
-    below ``depth`` [m]. One call from Python where there were three and the
-    buffers' nine allocations: some 40 us less of the benchmark's runs
-    alternated with MuJoCo's, which find Python's and numba's dispatch out of
-    the caches. ``y`` (13,) the initial state, advanced to the end; ``scratch``
+    (:func:`freestand.core.dynamics.body_engine.run`), called again where its
+    buffers fill on buffers twice as long that keep the rows so far, and
+    :func:`_history_rows` below ``depth`` [m]. One call from Python where there
+    were three and the buffers' nine allocations: some 20-70 us less of the
+    benchmark's runs alternated with MuJoCo's, which find Python's and numba's
+    dispatch out of the caches. ``y`` (13,) the initial state, advanced to the end; ``scratch``
     and ``impulse_work`` the engine's records
     (:func:`~freestand.core.dynamics.body_work.engine_work`).
 
