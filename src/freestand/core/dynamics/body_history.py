@@ -538,6 +538,13 @@ def _atan_small(x):
 
 
 @nb.njit(cache=True, error_model="numpy", inline="always")
+def _small_turn(across, along):
+    """Whether a turn of half-angle atan2(``across``, ``along``) is taken by :func:`_atan_small`
+    (a positive ``along`` and a tangent within ``SMALL_ANGLE_TANGENT``)."""
+    return along > 0.0 and abs(across) <= SMALL_ANGLE_TANGENT * along
+
+
+@nb.njit(cache=True, error_model="numpy", inline="always")
 def _twist_jump(w, z, w0, z0):
     """The twist's change [rad] from a state with quaternion components (w0, z0) to (w, z).
 
@@ -548,7 +555,7 @@ def _twist_jump(w, z, w0, z0):
     """
     across = z * w0 - w * z0
     along = w * w0 + z * z0
-    if along > 0.0 and abs(across) <= SMALL_ANGLE_TANGENT * along:
+    if _small_turn(across, along):
         return 2.0 * _atan_small(across / along)
     angle, previous = 2.0 * math.atan2(z, w), 2.0 * math.atan2(z0, w0)
     jump = angle - previous
@@ -606,9 +613,8 @@ def _motion_rows(state, centre, outline, radius, tilt, slide, twist, lowest, hig
             tilt[i] = 0.0  # the integration's round-off of a flat base
         if i > 0:
             w, z, w0, z0 = columns[3, i], columns[6, i], columns[3, i - 1], columns[6, i - 1]
-            along = w * w0 + z * z0
-            if along > 0.0 and abs(z * w0 - w * z0) <= SMALL_ANGLE_TANGENT * along:
-                turned += jump[i]
+            if _small_turn(z * w0 - w * z0, w * w0 + z * z0):
+                turned += jump[i]  # the series, as _twist_jump takes it
             else:
                 turned += _twist_jump(w, z, w0, z0)
         twist[i] = turned
