@@ -74,6 +74,7 @@ from freestand.core.contact.body_solve import (
 from freestand.core.contact.compiled import kernel
 from freestand.core.contact.slip_law import SLIP_FLOOR
 from freestand.core.contact.vectors import leading_length, norm2
+from freestand.core.dynamics.body_hinge import hinge_rk4
 
 MAX_EVENT_FUNCTIONS = 8
 REF_SIZE = 6  # a step's references (:func:`references`): slip direction, pivot, stop speed
@@ -119,7 +120,12 @@ def _rk4(par, record, dt, t, h, y, mode, data, sc, k, out):
 
     ``k[0]`` holds y' at (t, y) already: the first stage does not depend on
     h, and the step and the trials of :func:`~freestand.core.dynamics.body_events.locate` share it.
+    A box's sticking EDGE is stepped in its one coordinate, the turn about
+    the edge (:func:`~freestand.core.dynamics.body_hinge.hinge_rk4`): ``k``
+    beyond ``k[0]`` is then left as it was.
     """
+    if mode[M_KIND] == EDGE and mode[M_SLIP] == 0 and par[P_SHAPE] == SHAPE_BOX:
+        return hinge_rk4(par, record, dt, t, h, y, mode[M_INDEX], out)
     stage = k[4]
     ok = True
     pulled = data[D_PULL] == 1.0
