@@ -231,6 +231,16 @@ def quaternion_rotation(w, x, y, z):
 
 
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def quaternion_product(a0, a1, a2, a3, b0, b1, b2, b3):
+    """The quaternion product a b of (w, x, y, z) quaternions, as four scalars: b turned by a
+    where a is a rotation in the support's frame."""
+    return (a0 * b0 - a1 * b1 - a2 * b2 - a3 * b3,
+            a0 * b1 + a1 * b0 + a2 * b3 - a3 * b2,
+            a0 * b2 - a1 * b3 + a2 * b0 + a3 * b1,
+            a0 * b3 + a1 * b2 - a2 * b1 + a3 * b0)  # fmt: skip
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def world_inverse_inertia(par, rot, out):
     """I_w^-1 = R I^-1 R^T (3, 3) [1/(kg m^2)] (:func:`rotated_tensor`)."""
     rotated_tensor(par, P_INVERSE, rot, out)
@@ -326,14 +336,21 @@ def applied_wrench(par, y, rot, a_x, a_y, a_v, out):
 
 
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def body_inertia_times(par, bx, by, bz):
+    """I b [kg m^2 * b's unit] for b = (bx, by, bz) in the body frame, as a tuple."""
+    hx = par[P_INERTIA] * bx + par[P_INERTIA + 1] * by + par[P_INERTIA + 2] * bz
+    hy = par[P_INERTIA + 3] * bx + par[P_INERTIA + 4] * by + par[P_INERTIA + 5] * bz
+    hz = par[P_INERTIA + 6] * bx + par[P_INERTIA + 7] * by + par[P_INERTIA + 8] * bz
+    return hx, hy, hz
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def world_inertia_times(par, rot, x, y, z):
     """I_w v = R I R^T v [kg m^2 * v's unit] for v = (x, y, z) in the support frame, as a tuple."""
     bx = rot[0, 0] * x + rot[1, 0] * y + rot[2, 0] * z
     by = rot[0, 1] * x + rot[1, 1] * y + rot[2, 1] * z
     bz = rot[0, 2] * x + rot[1, 2] * y + rot[2, 2] * z
-    hx = par[P_INERTIA] * bx + par[P_INERTIA + 1] * by + par[P_INERTIA + 2] * bz
-    hy = par[P_INERTIA + 3] * bx + par[P_INERTIA + 4] * by + par[P_INERTIA + 5] * bz
-    hz = par[P_INERTIA + 6] * bx + par[P_INERTIA + 7] * by + par[P_INERTIA + 8] * bz
+    hx, hy, hz = body_inertia_times(par, bx, by, bz)
     return (rot[0, 0] * hx + rot[0, 1] * hy + rot[0, 2] * hz,
             rot[1, 0] * hx + rot[1, 1] * hy + rot[1, 2] * hz,
             rot[2, 0] * hx + rot[2, 1] * hy + rot[2, 2] * hz)  # fmt: skip

@@ -34,9 +34,11 @@ import math
 from freestand.core.contact.body_kernel import (
     P_CENTRE,
     P_GRAVITY,
-    P_INERTIA,
     P_MASS,
+    body_inertia_times,
     box_corner,
+    cross,
+    quaternion_product,
     quaternion_rotation,
     support_acceleration,
 )
@@ -87,17 +89,13 @@ def hinge_rk4(par, record, dt, t, h, y, index, out):
     # the arm from the edge to G, its part along u and across it, and w = u x r_perp
     along = -(dax * ux + day * uy + daz * uz)
     qx, qy, qz = -dax - along * ux, -day - along * uy, -daz - along * uz
-    wx, wy, wz = uy * qz - uz * qy, uz * qx - ux * qz, ux * qy - uy * qx
-    # I_u = u^T R I R^T u + m |r_perp|^2
+    wx, wy, wz = cross(ux, uy, uz, qx, qy, qz)
+    # I_u = b^T I b + m |r_perp|^2, b = R^T u the edge's direction in the body frame
     bu0 = r00 * ux + r10 * uy + r20 * uz
     bu1 = r01 * ux + r11 * uy + r21 * uz
     bu2 = r02 * ux + r12 * uy + r22 * uz
-    inertia = (bu0 * (par[P_INERTIA] * bu0 + par[P_INERTIA + 1] * bu1 + par[P_INERTIA + 2] * bu2)
-               + bu1 * (par[P_INERTIA + 3] * bu0 + par[P_INERTIA + 4] * bu1
-                        + par[P_INERTIA + 5] * bu2)
-               + bu2 * (par[P_INERTIA + 6] * bu0 + par[P_INERTIA + 7] * bu1
-                        + par[P_INERTIA + 8] * bu2)
-               + par[P_MASS] * (qx * qx + qy * qy + qz * qz))  # fmt: skip
+    hu0, hu1, hu2 = body_inertia_times(par, bu0, bu1, bu2)
+    inertia = bu0 * hu0 + bu1 * hu1 + bu2 * hu2 + par[P_MASS] * (qx * qx + qy * qy + qz * qz)
     fw = (wx / inertia, wy / inertia, wz / inertia)
     fr = (qx / inertia, qy / inertia, qz / inertia)
     turn, rate = _hinge_steps(par, record, dt, t, h, y[10] * ux + y[11] * uy + y[12] * uz, fw, fr)
@@ -138,17 +136,11 @@ def _hinge_state(y, turn, rate, ux, uy, uz, dax, day, daz, along, qx, qy, qz, wx
     out[0] = y[0] + dax + rx
     out[1] = y[1] + day + ry
     out[2] = y[2] + daz + rz
-    ch, sh = math.cos(0.5 * turn), math.sin(0.5 * turn)
-    a0, a1, a2, a3 = ch, sh * ux, sh * uy, sh * uz
-    b0, b1, b2, b3 = y[3], y[4], y[5], y[6]
-    q0 = a0 * b0 - a1 * b1 - a2 * b2 - a3 * b3
-    q1 = a0 * b1 + a1 * b0 + a2 * b3 - a3 * b2
-    q2 = a0 * b2 - a1 * b3 + a2 * b0 + a3 * b1
-    q3 = a0 * b3 + a1 * b2 - a2 * b1 + a3 * b0
+    sh = math.sin(0.5 * turn)
+    q0, q1, q2, q3 = quaternion_product(math.cos(0.5 * turn), sh * ux, sh * uy, sh * uz, y[3],
+                                        y[4], y[5], y[6])  # fmt: skip
     size = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
     out[3], out[4], out[5], out[6] = q0 / size, q1 / size, q2 / size, q3 / size
     ox, oy, oz = rate * ux, rate * uy, rate * uz
-    out[7] = oy * rz - oz * ry
-    out[8] = oz * rx - ox * rz
-    out[9] = ox * ry - oy * rx
+    out[7], out[8], out[9] = cross(ox, oy, oz, rx, ry, rz)
     out[10], out[11], out[12] = ox, oy, oz

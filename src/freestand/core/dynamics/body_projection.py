@@ -40,6 +40,7 @@ from freestand.core.contact.body_kernel import (
     corner_gap,
     cross,
     pivot_direction,
+    quaternion_product,
     rotation_matrix,
     row_counts,
     solve_mode,
@@ -252,10 +253,6 @@ def turn(y, ax, ay, az):
         return
     c = math.cos(0.5 * angle)
     f = math.sin(0.5 * angle) / angle
-    rw, rx, ry, rz = c, f * ax, f * ay, f * az
-    w, x, yy, z = y[3], y[4], y[5], y[6]
-    y[3] = rw * w - rx * x - ry * yy - rz * z
-    y[4] = rw * x + rx * w + ry * z - rz * yy
-    y[5] = rw * yy - rx * z + ry * w + rz * x
-    y[6] = rw * z + rx * yy - ry * x + rz * w
+    y[3], y[4], y[5], y[6] = quaternion_product(c, f * ax, f * ay, f * az, y[3], y[4], y[5],
+                                                y[6])  # fmt: skip
     _normalise(y)
