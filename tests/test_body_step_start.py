@@ -108,7 +108,8 @@ def test_a_slip_turned_against_the_stored_direction_is_solved_again():
 @pytest.mark.parametrize("turning", [True, False], ids=["turning", "straight"])
 def test_a_flat_slip_faster_than_the_tolerance_also_stops_at_that_speed(body, speed, turning):
     # body_step.references arms REF_STOP where a flat slip starts faster than the velocity
-    # tolerance and turns; the slip-stop function is then min(s . r, |s| - v_tol), else s . r.
+    # tolerance and turns; the slip-stop function is then min(s . r, |s| - v_tol), else
+    # s . r + STOP_TURN |s| (a slip stopped where it turned more than 120 deg from r).
     # The slip runs at 0.4 rad; a support acceleration along y turns it, none leaves it on
     # its line (Newmark's block: it stops where it reverses, at zero speed).
     record = np.zeros((3, 2))
@@ -132,7 +133,7 @@ def test_a_flat_slip_faster_than_the_tolerance_also_stops_at_that_speed(body, sp
     # the start's reference is the slip's own direction (or, slower than SLIP_FLOOR, the
     # stored +x): s . r there, and |s| - v_tol where armed
     along = y[7] * ref[0] + y[8] * ref[1]
-    expected = min(along, speed - STOP) if armed else along
+    expected = min(along, speed - STOP) if armed else along + step.STOP_TURN * speed
     assert stop == pytest.approx([expected], rel=1e-12, abs=1e-15)
     # later in the step: a slip slowed to half the tolerance, nearly across r (s . r > 0),
     # fires where the speed is armed only
@@ -156,6 +157,38 @@ def test_a_rocking_edge_s_slip_stops_where_it_reverses_only():
     step.start_functions(par, np.zeros((3, 2)), 1.0, 0.0, y, mode, data, bk.new_scratch(), ref,
                          STOP, values, kinds)  # fmt: skip
     assert ref[step.REF_STOP] == 0.0
+
+
+@pytest.mark.parametrize("turn", [0.0, 60.0, 100.0, 115.0, 125.0, 180.0])
+def test_an_edge_s_slip_that_turns_across_its_reference_is_not_a_stop(turn):
+    # A slip from rest at a friction limit grazed (its onset's acceleration zero) grows in a
+    # direction of its own, across the onset's: the rocking cabinet of the 3-D benchmark on
+    # its record slid away at 100 deg from it (2.9e-7 m/s after 0.1 ms). s . r alone fired
+    # a stop at once, three times, and the remedy then held the edge for 90 ms on its
+    # corners' cones. The stop fires where the slip turned more than 120 deg from r
+    # (s . r + STOP_TURN |s| < 0); a slip on its line still stops exactly where it reverses.
+    body = BODIES[0]
+    y, mode, data = _pivoting(body, 0.05, (0.3, 0.0, 0.0), edge=True)
+    mode[bk.M_SLIP] = 1
+    data[bk.D_SLIP] = 1.0
+    still = y[7:9].copy()  # the edge's points are still at these velocities of G [m/s]
+    speed = 1e-3  # [m/s]
+    y[7] = still[0] + speed
+    par = bk.body_parameters(body, G)
+    sc = bk.new_scratch()
+    ref = np.zeros(step.REF_SIZE)
+    values = np.zeros(step.MAX_EVENT_FUNCTIONS)
+    kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
+    record = np.zeros((3, 2))
+    step.start_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, STOP, values, kinds)
+    np.testing.assert_allclose(ref[:3], [1.0, 0.0, 0.0], atol=1e-9)  # r: the slip's, along x
+    angle = math.radians(turn)
+    y[7] = still[0] + speed * math.cos(angle)
+    y[8] = still[1] + speed * math.sin(angle)
+    count = step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
+    stop = values[:count][kinds[:count] == step.FN_SLIP_STOP][0]
+    assert stop == pytest.approx(speed * (math.cos(angle) + step.STOP_TURN), abs=1e-12)
+    assert (stop < 0.0) == (turn > 120.0)
 
 
 @pytest.mark.parametrize("body", BODIES, ids=lambda b: b.name)

@@ -88,6 +88,7 @@ LEAN_TRUST = 1e-4  # sin(tilt) below which the lean's predicted passing distance
 ROUND_OFF_PASS = 1e-12  # a passing distance below this is a planar motion's round-off [-]
 SLIP_FRACTION = 0.5  # a step lasts at most this part of a slip's time scale |s| / |s'|
 FACE_TURN = 0.3  # [rad] a flat base's slip turns by about this much at most in a step
+STOP_TURN = 0.5  # a slip-stop fires where s turned beyond arccos(-STOP_TURN) = 120 deg from r
 SLIP_MIN_STEP = 1e-4  # [s] the slip's time scale bounds no step below this
 FACE_MIN_STEP = 3e-4  # [s] a flat base's turn bounds no step below this
 STRAIGHT_SLIP = 1e-9  # a slip whose rate across its velocity is below this part keeps its line
@@ -355,8 +356,15 @@ def event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds):
     out (a flat base under two components whose force nears the kinetic
     friction) may pass its stop beside r by the step's truncation error
     without ``s . r`` changing sign; the speed catches it, and the mode is
-    chosen again there (sticking where static friction holds). A slip that
-    keeps its line is not armed so (:func:`references`): it stops at zero.
+    chosen again there (sticking where static friction holds). Every other
+    slip's function is ``s . r + STOP_TURN |s|``: it stops where s has
+    turned more than 120 degrees from r, and a slip that keeps its line
+    (not armed, :func:`references`) exactly where it reverses, at zero. A
+    slip from rest where the friction limit is grazed (the onset's
+    acceleration zero to round-off) grows in a direction of its own, across
+    r: ``s . r`` alone fired a stop there at once, again and again (the 3-D
+    benchmark's rocking cabinet, whose edge the chatter's remedy then held
+    for 90 ms; ``docs/three-d.md``).
     """
     rot = sc[SC_ROT]
     lam = sc[SC_LAM]
@@ -378,6 +386,8 @@ def event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds):
                 along += svel[i] * ref[i]
             if ref[REF_STOP] > 0.0:
                 along = min(along, leading_length(svel, n_tangent) - ref[REF_STOP])
+            else:
+                along += STOP_TURN * leading_length(svel, n_tangent)
             values[count] = along
             kinds[count] = FN_SLIP_STOP
             count += 1
