@@ -55,9 +55,7 @@ def _functions(body, y, record, start, solved=False):
     data = np.zeros(bk.DATA_SIZE)
     data[bk.D_SLIP] = 1.0  # a stored direction the slip's own one replaces
     sc = bk.new_scratch()
-    ref = np.zeros(step.REF_SIZE)
-    values = np.zeros(step.MAX_EVENT_FUNCTIONS)
-    kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
+    ref, values, kinds = _function_arrays()
     if solved:  # the step's end: the event functions with the step's stored direction
         step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, values, kinds)
     if start:
@@ -121,9 +119,7 @@ def test_a_flat_slip_faster_than_the_tolerance_also_stops_at_that_speed(body, sp
     data = np.zeros(bk.DATA_SIZE)
     data[bk.D_SLIP] = 1.0
     sc = bk.new_scratch()
-    ref = np.zeros(step.REF_SIZE)
-    values = np.zeros(step.MAX_EVENT_FUNCTIONS)
-    kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
+    ref, values, kinds = _function_arrays()
     y = _sliding(body, speed, 0.4, 0.0)
     count = step.start_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, STOP, values,
                                  kinds)  # fmt: skip
@@ -151,9 +147,7 @@ def test_a_rocking_edge_s_slip_stops_where_it_reverses_only():
     y[7] = 0.3  # sliding along x on its edge
     data[bk.D_SLIP] = 1.0
     par = bk.body_parameters(body, G)
-    ref = np.zeros(step.REF_SIZE)
-    values = np.zeros(step.MAX_EVENT_FUNCTIONS)
-    kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
+    ref, values, kinds = _function_arrays()
     step.start_functions(par, np.zeros((3, 2)), 1.0, 0.0, y, mode, data, bk.new_scratch(), ref,
                          STOP, values, kinds)  # fmt: skip
     assert ref[step.REF_STOP] == 0.0
@@ -176,9 +170,7 @@ def test_an_edge_s_slip_that_turns_across_its_reference_is_not_a_stop(turn):
     y[7] = still[0] + speed
     par = bk.body_parameters(body, G)
     sc = bk.new_scratch()
-    ref = np.zeros(step.REF_SIZE)
-    values = np.zeros(step.MAX_EVENT_FUNCTIONS)
-    kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
+    ref, values, kinds = _function_arrays()
     record = np.zeros((3, 2))
     step.start_functions(par, record, 1.0, 0.0, y, mode, data, sc, ref, STOP, values, kinds)
     np.testing.assert_allclose(ref[:3], [1.0, 0.0, 0.0], atol=1e-9)  # r: the slip's, along x
@@ -211,6 +203,13 @@ def test_a_sliding_flat_base_is_projected_only_past_round_off(body):
     assert body_projection.drifted(par, sunk, sliding, sc, *gates)
     # a sticking flat base that moves is always projected
     assert body_projection.drifted(par, flat, np.array([bk.FACE, 0, 0], dtype=np.int64), sc, *gates)
+
+
+def _function_arrays():
+    """A step's references and its event functions' values and kinds, as the engine holds
+    them: (ref, values, kinds)."""
+    return (np.zeros(step.REF_SIZE), np.zeros(step.MAX_EVENT_FUNCTIONS),
+            np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64))  # fmt: skip
 
 
 def _pivoting(body, tilt, omega, edge):
@@ -246,9 +245,7 @@ def _solve_end(body, y, mode, data, record):
     """(parameters, scratch): the held mode solved at (0, y), as at a step's end."""
     par = bk.body_parameters(body, G)
     sc = bk.new_scratch()
-    step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, np.zeros(step.REF_SIZE),
-                         np.zeros(step.MAX_EVENT_FUNCTIONS),
-                         np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64))  # fmt: skip
+    step.event_functions(par, record, 1.0, 0.0, y, mode, data, sc, *_function_arrays())
     return par, sc
 
 
@@ -300,9 +297,7 @@ def test_a_sticking_step_end_left_unprojected_is_its_next_start(edge, tilt, w0, 
         work = data.copy()
         par, sc = _solve_end(body, y, mode, work, record) if solved else (
             bk.body_parameters(body, G), bk.new_scratch())  # fmt: skip
-        ref = np.zeros(step.REF_SIZE)
-        values = np.zeros(step.MAX_EVENT_FUNCTIONS)
-        kinds = np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64)
+        ref, values, kinds = _function_arrays()
         count = step.start_functions(par, record, 1.0, 0.0, y, mode, work, sc, ref, STOP, values,
                                      kinds, solved)  # fmt: skip
         results.append((values[:count].copy(), sc[bk.SC_ACC].copy(), ref.copy(), work.copy()))
