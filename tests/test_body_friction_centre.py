@@ -271,12 +271,12 @@ def test_a_patch_s_kind_is_the_one_its_rows_were_built_for():
     assert centre[2] == pytest.approx(0.25)
 
 
-def _tilted_box(tilt, yaw, velocity, push):
-    """(parameters, state, record) of BOX tilted by ``tilt`` [rad] about its x axis onto edge
-    2, turned by ``yaw`` [rad], with the velocities ``velocity`` (6,) and a constant support
-    acceleration ``push`` (3,) [m/s^2]."""
-    par = bk.body_parameters(BOX, G)
-    y = initial_state(BOX, (tilt, 0.0))
+def tilted_box(tilt, yaw, velocity, push, box=BOX):
+    """(parameters, state, record) of ``box`` tilted by ``tilt`` [rad] about its x axis onto
+    edge 2, turned by ``yaw`` [rad], with the velocities ``velocity`` (6,) and a constant
+    support acceleration ``push`` (3,) [m/s^2]."""
+    par = bk.body_parameters(box, G)
+    y = initial_state(box, (tilt, 0.0))
     y[3:7] = (y[3] * math.cos(0.5 * yaw), y[4] * math.cos(0.5 * yaw),
               y[4] * math.sin(0.5 * yaw), y[3] * math.sin(0.5 * yaw))  # fmt: skip
     y[7:13] = velocity
@@ -295,7 +295,7 @@ def test_a_sliding_edge_s_share_map_is_its_full_solve_s(tilt, yaw, velocity, pus
     # pressure's share with the friction at sigma, from the 2 x 2 system of
     # body_solve.edge_share against the full solve on rows built at sigma (tolerance:
     # round-off of two eliminations, 1e-9 of the share)
-    par, y, record = _tilted_box(tilt, yaw, velocity, push)
+    par, y, record = tilted_box(tilt, yaw, velocity, push)
     data = np.zeros(bk.DATA_SIZE)
     data[bk.D_SLIP : bk.D_SLIP + 3] = math.cos(stored), math.sin(stored), 0.0
     sc = bk.new_scratch()
@@ -438,7 +438,7 @@ def test_a_slip_onset_s_edge_solves_on_kept_terms_are_its_solves_anew(
     # (body_solve.slide_edge_on_terms): each must equal the solve that computes them anew,
     # to the last bit, also after a search that ended in the full solve (its work arrays
     # overwrite the terms: flagged, and computed again)
-    par, y, record = _tilted_box(tilt, yaw, velocity, push)
+    par, y, record = tilted_box(tilt, yaw, velocity, push)
     level = body_modes.ACCELERATION if acceleration else body_modes.VELOCITY
     results = []
     for reuse in (False, True):

@@ -26,8 +26,8 @@ from hypothesis import strategies as st
 from freestand.core.body import Body, Box
 from freestand.core.contact import body_kernel as bk
 from freestand.core.contact import body_modes
-from freestand.core.dynamics.body_history import initial_state
 from freestand.core.model import Friction
+from tests.test_body_friction_centre import tilted_box
 
 G = 9.81  # [m/s^2]
 RATE_TOL = body_modes.RELATIVE_TOLERANCE * G  # the engine's rate tolerance at rest [m/s^2]
@@ -38,15 +38,11 @@ def _edge_at(mu, tilt, yaw, spin, push):
 
     Tilted by ``tilt`` [rad] about x onto the long edge at y = -b_y, turned by
     ``yaw`` [rad], turning at ``spin`` (3,) [rad/s], under a constant support
-    acceleration ``push`` (3,) [m/s^2]; the scratch holds the edge's rows.
+    acceleration ``push`` (3,) [m/s^2] (``tilted_box``); the scratch holds the
+    edge's rows.
     """
     box = Body("box", Box((1.0, 0.6, 2.0)), 400.0, Friction(mu, mu))
-    par = bk.body_parameters(box, G)
-    y = initial_state(box, (tilt, 0.0))
-    y[3:7] = (y[3] * math.cos(0.5 * yaw), y[4] * math.cos(0.5 * yaw),
-              y[4] * math.sin(0.5 * yaw), y[3] * math.sin(0.5 * yaw))  # fmt: skip
-    y[10:13] = spin
-    record = np.repeat(np.asarray(push, dtype=float)[:, None], 2, axis=1)
+    par, y, record = tilted_box(tilt, yaw, (0.0, 0.0, 0.0, *spin), push, box)
     sc = bk.new_scratch()
     n_normal, _ = bk.prepare(par, record, 1.0, 0.0, y, bk.EDGE, 2, 0.0, sc)
     return par, y, sc, n_normal

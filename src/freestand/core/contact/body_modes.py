@@ -508,17 +508,12 @@ def _onset_newton(par, y, sc, level, n_normal, direction, rate_tol, iterations):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _onset_across(sc, e1, e2):
-    rate = sc[SC_SACC]
-    return (rate[0] * e1[0] + rate[1] * e1[1] + rate[2] * e1[2],
-            rate[0] * e2[0] + rate[1] * e2[1] + rate[2] * e2[2])  # fmt: skip
-
-
-@kernel(cache=True, error_model="numpy", _nrt=False)
 def _misfit(sc, e1, e2, u, size):
     """``(e1 . m, e2 . m)``, ``m = s' - |s'| u`` the slip rate's misfit to u (``size = |s'|``;
     s' in ``sc[SC_SACC]``), on the fixed e1, e2 of a Newton iteration (:func:`_onset_newton`)."""
-    f1, f2 = _onset_across(sc, e1, e2)
+    rate = sc[SC_SACC]
+    f1 = rate[0] * e1[0] + rate[1] * e1[1] + rate[2] * e1[2]
+    f2 = rate[0] * e2[0] + rate[1] * e2[1] + rate[2] * e2[2]
     return (f1 - size * (u[0] * e1[0] + u[1] * e1[1] + u[2] * e1[2]),
             f2 - size * (u[0] * e2[0] + u[1] * e2[1] + u[2] * e2[2]))  # fmt: skip
 
