@@ -108,3 +108,32 @@ def test_a_sliding_face_s_stage_has_the_full_solves_accelerations(body, spin):
         assert skipped > 20  # no twist: the check is skipped in most states
     if spin > 0.1:
         assert skipped == 0  # a twist turns the slip: the check is made
+
+
+@pytest.mark.parametrize(("body", "index"), [(BOX, k) for k in range(4)] + [(CYLINDER, 0)])
+def test_a_sticking_point_s_stage_is_its_closed_form_without_its_rows(body, index):
+    # an RK4 stage of a sticking POINT (body_solve._sticking_point_stage) computes the point's
+    # arm and its rows' biases alone: its accelerations and forces must be those of the
+    # closed form on the rows (sticking_stage) to the last bit, and the scratch's rows are
+    # left as they were
+    par = body_kernel.body_parameters(body, 9.81, 1.0)
+    rng = np.random.default_rng(23 + index)
+    mode = np.array([body_kernel.POINT, index, 0], dtype=np.int64)
+    for _ in range(40):
+        y = np.zeros(body_kernel.STATE_SIZE)
+        y[0:3] = rng.normal(0.0, 0.3, 3) + (0.0, 0.0, 1.0)
+        q = np.array([1.0, 0.0, 0.0, 0.0]) + rng.normal(0.0, 0.2, 4)
+        y[3:7] = q / np.linalg.norm(q)
+        y[7:13] = rng.normal(0.0, 0.5, 6)
+        data = np.zeros(body_kernel.DATA_SIZE)
+        data[body_kernel.D_PSI] = rng.uniform(-np.pi, np.pi)
+        rows, stage = body_kernel.new_scratch(), body_kernel.new_scratch()
+        stage[body_kernel.SC_NORMAL][:] = rng.normal(size=stage[body_kernel.SC_NORMAL].shape)
+        kept = stage[body_kernel.SC_NORMAL].copy(), stage[body_kernel.SC_TANGENT].copy()
+        ok = body_solve.sticking_stage(par, RECORD, 1.0, 0.4, y, mode, data, rows)
+        ydot = np.zeros(body_kernel.STATE_SIZE)
+        assert body_solve.rate(par, RECORD, 1.0, 0.4, y, mode, data, stage, ydot) == ok
+        for field in (body_kernel.SC_ACC, body_kernel.SC_LAM):
+            assert np.array_equal(rows[field], stage[field])  # to the last bit
+        assert np.array_equal(stage[body_kernel.SC_NORMAL], kept[0])
+        assert np.array_equal(stage[body_kernel.SC_TANGENT], kept[1])

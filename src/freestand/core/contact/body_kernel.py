@@ -398,6 +398,13 @@ def centripetal(y, d):
 def _point_row_at(d, e0, e1, e2, acceleration, column, rows, bias, k):
     """:func:`_point_row` with the point's centripetal acceleration given (:func:`centripetal`):
     the rows of one point along several axes compute it once."""
+    _point_axis_row(d, e0, e1, e2, rows, k)
+    bias[k] = _point_bias(e0, e1, e2, acceleration, column)
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _point_axis_row(d, e0, e1, e2, rows, k):
+    """Row k without its bias: the point at arm d along the unit e, ``w = (e, d x e)``."""
     rows[0, k] = e0
     rows[1, k] = e1
     rows[2, k] = e2
@@ -405,8 +412,13 @@ def _point_row_at(d, e0, e1, e2, acceleration, column, rows, bias, k):
     rows[3, k] = tx
     rows[4, k] = ty
     rows[5, k] = tz
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def _point_bias(e0, e1, e2, acceleration, column):
+    """A point row's bias along the unit e: ``e . acceleration`` plus ``column``."""
     cx, cy, cz = acceleration
-    bias[k] = e0 * cx + e1 * cy + e2 * cz + column
+    return e0 * cx + e1 * cy + e2 * cz + column
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -463,25 +475,15 @@ def patch_rows(par, y, sc, kind, index, cos_psi, sin_psi):
     rho [m], see :func:`move_friction_centre`).
     """
     rot, normal, nbias, arms = sc[SC_ROT], sc[SC_NORMAL], sc[SC_NBIAS], sc[SC_ARMS]
-    tangent, tbias = sc[SC_TANGENT], sc[SC_TBIAS]
+    tangent = sc[SC_TANGENT]
     if kind == FREE:
         return row_counts(FREE)
     if kind == POINT:
+        point_arm_and_biases(par, y, sc, index, cos_psi, sin_psi)
         d = arms[3]
-        if par[P_SHAPE] == SHAPE_BOX:
-            sx, sy = box_corner(par, index)
-            arm(par, rot, sx, sy, 0.0, arms[0])
-            zt, xt, yt = 0.0, 0.0, 0.0
-        else:
-            radius = par[P_HALF_X]
-            arm(par, rot, radius * cos_psi, radius * sin_psi, 0.0, arms[0])
-            zt, xt, yt = rim_terms(par, y, rot, cos_psi, sin_psi)
-        for i in range(3):
-            d[i] = arms[0, i]
-        acceleration = centripetal(y, d)
-        _point_row_at(d, 0.0, 0.0, 1.0, acceleration, zt, normal, nbias, 0)
-        _point_row_at(d, 1.0, 0.0, 0.0, acceleration, xt, tangent, tbias, 0)
-        _point_row_at(d, 0.0, 1.0, 0.0, acceleration, yt, tangent, tbias, 1)
+        _point_axis_row(d, 0.0, 0.0, 1.0, normal, 0)
+        _point_axis_row(d, 1.0, 0.0, 0.0, tangent, 0)
+        _point_axis_row(d, 0.0, 1.0, 0.0, tangent, 1)
         return row_counts(POINT)
     if kind == EDGE:
         ax, ay = box_corner(par, index)
@@ -497,6 +499,36 @@ def patch_rows(par, y, sc, kind, index, cos_psi, sin_psi):
         _angular_row(0.0, 1.0, 0.0, normal, nbias, 2)
     tangent_rows(par, y, sc)
     return row_counts(kind)
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def point_arm_and_biases(par, y, sc, index, cos_psi, sin_psi):
+    """A POINT's arm and its three rows' biases in the scratch, not the rows themselves.
+
+    The arm d from G (``sc[SC_ARMS][0]`` and ``[3]``) of corner ``index`` of
+    a box or of the rim point at psi (``cos_psi``, ``sin_psi``) of a
+    cylinder, and the biases of its rows along the support's z, x and y
+    (``sc[SC_NBIAS][0]``, ``sc[SC_TBIAS][0:2]``): the centripetal
+    acceleration and a rolling rim point's extra terms (:func:`rim_terms`).
+    All that the sticking POINT's closed form reads of its rows
+    (:func:`sticking_point_from_force`); :func:`patch_rows` adds the rows.
+    """
+    rot, arms = sc[SC_ROT], sc[SC_ARMS]
+    if par[P_SHAPE] == SHAPE_BOX:
+        sx, sy = box_corner(par, index)
+        arm(par, rot, sx, sy, 0.0, arms[0])
+        zt, xt, yt = 0.0, 0.0, 0.0
+    else:
+        radius = par[P_HALF_X]
+        arm(par, rot, radius * cos_psi, radius * sin_psi, 0.0, arms[0])
+        zt, xt, yt = rim_terms(par, y, rot, cos_psi, sin_psi)
+    d = arms[3]
+    for i in range(3):
+        d[i] = arms[0, i]
+    acceleration = centripetal(y, d)
+    sc[SC_NBIAS][0] = _point_bias(0.0, 0.0, 1.0, acceleration, zt)
+    sc[SC_TBIAS][0] = _point_bias(1.0, 0.0, 0.0, acceleration, xt)
+    sc[SC_TBIAS][1] = _point_bias(0.0, 1.0, 0.0, acceleration, yt)
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)

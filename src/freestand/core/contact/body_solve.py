@@ -71,6 +71,7 @@ from freestand.core.contact.body_kernel import (
     effective_twist_radius,
     face_centre_of_pressure,
     pivot_direction,
+    point_arm_and_biases,
     point_velocity,
     prepare_load,
     prepare_wrench,
@@ -770,18 +771,41 @@ def sticking_solve(par, record, dt, t, y, mode, data, sc, loaded=False):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
+def _sticking_point_stage(par, record, dt, t, y, mode, data, sc):
+    """:func:`sticking_stage` of a sticking POINT in an RK4 stage: its arm and biases, no rows.
+
+    The closed form reads the point's arm and its rows' biases alone
+    (``body_kernel.point_arm_and_biases``): the stage's accelerations are
+    :func:`sticking_stage`'s to the last bit, without the three rows, which
+    nothing reads before the step's end is solved in full (the scratch's
+    rows are left as they were). A rolling cylinder's most frequent solve.
+    """
+    rot = sc[SC_ROT]
+    rotation_matrix(y, rot)
+    prepare_wrench(par, record, dt, t, y, sc)
+    cos_psi, sin_psi = pivot_direction(par, rot, POINT, data[D_PSI], sc)
+    point_arm_and_biases(par, y, sc, mode[M_INDEX], cos_psi, sin_psi)
+    f0 = sc[SC_F0]
+    force = (f0[0], f0[1], f0[2], f0[3], f0[4], f0[5])
+    return sticking_point_from_force(par, sc, force, True, sc[SC_ACC], sc[SC_LAM])
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def rate(par, record, dt, t, y, mode, data, sc, ydot):
     """y' of the held mode at (t, y); False when the mode's system is singular.
 
     ``r' = v``, ``q' = (0, omega) q / 2`` (omega in the support frame),
     ``(v', omega') = x''``. A sticking POINT or EDGE is solved by its closed
-    form on the applied wrench alone (:func:`sticking_stage`), any other
+    form on the applied wrench alone (:func:`sticking_stage`; a POINT on its
+    arm and biases without its rows, :func:`_sticking_point_stage`), any other
     sticking mode at its rows' centre (:func:`solve_at_centre`): their
     accelerations are those of :func:`solve_at`, to round-off and to the
     last bit, which only expresses the forces about the centre of pressure
     after the same solve; an integrator's stage reads none of them.
     """
-    if closed_form(mode):
+    if closed_form(mode) and mode[M_KIND] == POINT:
+        ok = _sticking_point_stage(par, record, dt, t, y, mode, data, sc)
+    elif closed_form(mode):
         ok = sticking_stage(par, record, dt, t, y, mode, data, sc)
     elif mode[M_SLIP] == 0:
         ok, _, _ = solve_at_centre(par, record, dt, t, y, mode, data, sc)
