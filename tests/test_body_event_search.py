@@ -68,30 +68,30 @@ def test_the_interpolant_is_exact_for_a_cubic_and_meets_the_ends(coefficients, h
     np.testing.assert_allclose(out, state(s * h), rtol=1e-12, atol=1e-12)
 
 
-def _free_fall(tilt, speed):
-    """The box tilted about x by ``tilt`` [rad], its lowest edge 1 mm up, falling at ``speed``."""
+def _spinning_fall(tilt, azimuth, speed, spin):
+    """The box tilted, its lowest corner 1 mm up, falling at ``speed`` and spinning at
+    ``spin`` (3,) [rad/s]; the kernel's work arrays, the start's rate in ``k[0]``."""
     par = bk.body_parameters(BOX, G)
-    y = initial_state(BOX, (tilt, 0.0))
+    y = initial_state(BOX, (tilt * math.cos(azimuth), tilt * math.sin(azimuth)))
     y[2] += 1e-3
     y[9] = -speed
-    return par, y
-
-
-def _falling(tilt, speed):
-    """:func:`_free_fall` with the kernel's work arrays, its event functions at the start
-    (``count`` of them in ``values``), their rate in ``k[0]`` and the landing's time [s]."""
-    par, y = _free_fall(tilt, speed)
+    y[10:13] = spin
     fall = SimpleNamespace(
         par=par, y=y, record=np.zeros((3, 2)), mode=np.array([bk.FREE, 0, 0], dtype=np.int64),
         data=np.zeros(bk.DATA_SIZE), sc=bk.new_scratch(), ref=np.zeros(step.REF_SIZE),
         values=np.zeros(step.MAX_EVENT_FUNCTIONS),
         kinds=np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64), k=np.zeros((5, bk.STATE_SIZE)),
-        # 1 mm = speed t + g t^2 / 2
-        landing=(-speed + math.sqrt(speed**2 + 2.0 * G * 1e-3)) / G,
     )  # fmt: skip
     fall.count = step.event_functions(par, fall.record, 1.0, 0.0, y, fall.mode, fall.data,
                                       fall.sc, fall.ref, fall.values, fall.kinds)  # fmt: skip
     body_solve.state_rate(y, fall.sc[bk.SC_ACC], fall.k[0])
+    return fall
+
+
+def _falling(tilt, speed):
+    """:func:`_spinning_fall` tilted about x, not spinning, with the landing's time [s]."""
+    fall = _spinning_fall(tilt, 0.0, speed, (0.0, 0.0, 0.0))
+    fall.landing = (-speed + math.sqrt(speed**2 + 2.0 * G * 1e-3)) / G  # 1 mm = v t + g t^2 / 2
     return fall
 
 
@@ -257,26 +257,6 @@ def test_a_spinning_fall_s_landing_is_the_crossing_on_rk4_states(
     assert gap(located) <= 0.0 <= gap(located - events.EVENT_TIME)
     assert located <= high + events.EVENT_TIME
     assert 1 <= trials <= 12  # the seeds close most in 3; the regula falsi needs about 8
-
-
-def _spinning_fall(tilt, azimuth, speed, spin):
-    """The box tilted, its lowest corner 1 mm up, falling at ``speed`` and spinning at
-    ``spin`` (3,) [rad/s]; the kernel's work arrays, the start's rate in ``k[0]``."""
-    par = bk.body_parameters(BOX, G)
-    y = initial_state(BOX, (tilt * math.cos(azimuth), tilt * math.sin(azimuth)))
-    y[2] += 1e-3
-    y[9] = -speed
-    y[10:13] = spin
-    fall = SimpleNamespace(
-        par=par, y=y, record=np.zeros((3, 2)), mode=np.array([bk.FREE, 0, 0], dtype=np.int64),
-        data=np.zeros(bk.DATA_SIZE), sc=bk.new_scratch(), ref=np.zeros(step.REF_SIZE),
-        values=np.zeros(step.MAX_EVENT_FUNCTIONS),
-        kinds=np.zeros(step.MAX_EVENT_FUNCTIONS, dtype=np.int64), k=np.zeros((5, bk.STATE_SIZE)),
-    )  # fmt: skip
-    fall.count = step.event_functions(par, fall.record, 1.0, 0.0, y, fall.mode, fall.data,
-                                      fall.sc, fall.ref, fall.values, fall.kinds)  # fmt: skip
-    body_solve.state_rate(y, fall.sc[bk.SC_ACC], fall.k[0])
-    return fall
 
 
 @settings(max_examples=40, deadline=None)

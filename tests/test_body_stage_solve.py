@@ -32,19 +32,26 @@ PATCHES += [(BOX, body_kernel.POINT, k) for k in range(4)]
 PATCHES += [(CYLINDER, body_kernel.FACE, 0), (CYLINDER, body_kernel.POINT, 0)]
 
 
+def _random_state(rng):
+    """A random state near the support (any orientation near upright, any velocity) and its
+    mode data with a random stored rim angle."""
+    y = np.zeros(body_kernel.STATE_SIZE)
+    y[0:3] = rng.normal(0.0, 0.3, 3) + (0.0, 0.0, 1.0)
+    q = np.array([1.0, 0.0, 0.0, 0.0]) + rng.normal(0.0, 0.2, 4)
+    y[3:7] = q / np.linalg.norm(q)
+    y[7:13] = rng.normal(0.0, 0.5, 6)
+    data = np.zeros(body_kernel.DATA_SIZE)
+    data[body_kernel.D_PSI] = rng.uniform(-np.pi, np.pi)
+    return y, data
+
+
 @pytest.mark.parametrize(("body", "kind", "index"), PATCHES)
 def test_a_sticking_stage_has_the_full_solves_accelerations(body, kind, index):
     par = body_kernel.body_parameters(body, 9.81, 1.0)
     rng = np.random.default_rng(7 + 10 * kind + index)
     for _ in range(20):
-        y = np.zeros(body_kernel.STATE_SIZE)
-        y[0:3] = rng.normal(0.0, 0.3, 3) + (0.0, 0.0, 1.0)
-        q = np.array([1.0, 0.0, 0.0, 0.0]) + rng.normal(0.0, 0.2, 4)
-        y[3:7] = q / np.linalg.norm(q)
-        y[7:13] = rng.normal(0.0, 0.5, 6)
+        y, data = _random_state(rng)
         mode = np.array([kind, index, 0], dtype=np.int64)
-        data = np.zeros(body_kernel.DATA_SIZE)
-        data[body_kernel.D_PSI] = rng.uniform(-np.pi, np.pi)
         full, centre = body_kernel.new_scratch(), body_kernel.new_scratch()
         ok_full, *_ = body_solve.solve_at(par, RECORD, 1.0, 0.4, y, mode, data, full)
         ok_centre, *_ = body_solve.solve_at_centre(par, RECORD, 1.0, 0.4, y, mode, data, centre)
@@ -112,21 +119,15 @@ def test_a_sliding_face_s_stage_has_the_full_solves_accelerations(body, spin):
 
 @pytest.mark.parametrize(("body", "index"), [(BOX, k) for k in range(4)] + [(CYLINDER, 0)])
 def test_a_sticking_point_s_stage_is_its_closed_form_without_its_rows(body, index):
-    # an RK4 stage of a sticking POINT (body_solve._sticking_point_stage) computes the point's
-    # arm and its rows' biases alone: its accelerations and forces must be those of the
-    # closed form on the rows (sticking_stage) to the last bit, and the scratch's rows are
-    # left as they were
+    # an RK4 stage of a sticking POINT (body_solve.rate: sticking_stage without its rows)
+    # computes the point's arm and its rows' biases alone: its accelerations and forces must
+    # be those of the closed form on the rows (sticking_stage) to the last bit, and the
+    # scratch's rows are left as they were
     par = body_kernel.body_parameters(body, 9.81, 1.0)
     rng = np.random.default_rng(23 + index)
     mode = np.array([body_kernel.POINT, index, 0], dtype=np.int64)
     for _ in range(40):
-        y = np.zeros(body_kernel.STATE_SIZE)
-        y[0:3] = rng.normal(0.0, 0.3, 3) + (0.0, 0.0, 1.0)
-        q = np.array([1.0, 0.0, 0.0, 0.0]) + rng.normal(0.0, 0.2, 4)
-        y[3:7] = q / np.linalg.norm(q)
-        y[7:13] = rng.normal(0.0, 0.5, 6)
-        data = np.zeros(body_kernel.DATA_SIZE)
-        data[body_kernel.D_PSI] = rng.uniform(-np.pi, np.pi)
+        y, data = _random_state(rng)
         rows, stage = body_kernel.new_scratch(), body_kernel.new_scratch()
         stage[body_kernel.SC_NORMAL][:] = rng.normal(size=stage[body_kernel.SC_NORMAL].shape)
         kept = stage[body_kernel.SC_NORMAL].copy(), stage[body_kernel.SC_TANGENT].copy()

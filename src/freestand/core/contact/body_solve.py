@@ -714,7 +714,7 @@ def closed_form(mode):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def sticking_stage(par, record, dt, t, y, mode, data, sc):
+def sticking_stage(par, record, dt, t, y, mode, data, sc, rows=True):
     """A sticking POINT's or EDGE's accelerations at (t, y) in ``sc[SC_ACC]``; False if singular.
 
     Its closed form in force form (``body_kernel.sticking_point_from_force``,
@@ -724,18 +724,27 @@ def sticking_stage(par, record, dt, t, y, mode, data, sc):
     scratch's ``SC_INV`` and ``SC_BASE`` are left as they were: every
     stage is followed by a full solve before anything reads them). The
     stage of a rolling cylinder or a rocking box is its most frequent solve.
+    ``rows`` False (an RK4 stage's, :func:`rate`): a POINT's arm and its rows'
+    biases alone (``body_kernel.point_arm_and_biases``), all its closed form
+    reads, not its rows, which nothing reads before the step's end is solved
+    in full (the scratch's rows are left as they were): the same
+    accelerations and forces to the last bit.
     """
     rotation_matrix(y, sc[SC_ROT])
     prepare_wrench(par, record, dt, t, y, sc)
-    return _sticking_on_load(par, y, mode, data, sc)
+    return _sticking_on_load(par, y, mode, data, sc, rows)
 
 
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
-def _sticking_on_load(par, y, mode, data, sc):
+def _sticking_on_load(par, y, mode, data, sc, rows=True):
     """:func:`sticking_stage` at the rotation and applied wrench the scratch holds: the held
-    rows, then the closed form."""
+    rows (a POINT's arm and biases alone where not ``rows``), then the closed form."""
     f0 = sc[SC_F0]
-    held_rows(par, y, mode, data, sc)
+    if rows or mode[M_KIND] != POINT:
+        held_rows(par, y, mode, data, sc)
+    else:
+        cos_psi, sin_psi = pivot_direction(par, sc[SC_ROT], POINT, data[D_PSI], sc)
+        point_arm_and_biases(par, y, sc, mode[M_INDEX], cos_psi, sin_psi)
     force = (f0[0], f0[1], f0[2], f0[3], f0[4], f0[5])
     if mode[M_KIND] == POINT:
         return sticking_point_from_force(par, sc, force, True, sc[SC_ACC], sc[SC_LAM])
@@ -771,42 +780,20 @@ def sticking_solve(par, record, dt, t, y, mode, data, sc, loaded=False):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def _sticking_point_stage(par, record, dt, t, y, mode, data, sc):
-    """:func:`sticking_stage` of a sticking POINT in an RK4 stage: its arm and biases, no rows.
-
-    The closed form reads the point's arm and its rows' biases alone
-    (``body_kernel.point_arm_and_biases``): the stage's accelerations are
-    :func:`sticking_stage`'s to the last bit, without the three rows, which
-    nothing reads before the step's end is solved in full (the scratch's
-    rows are left as they were). A rolling cylinder's most frequent solve.
-    """
-    rot = sc[SC_ROT]
-    rotation_matrix(y, rot)
-    prepare_wrench(par, record, dt, t, y, sc)
-    cos_psi, sin_psi = pivot_direction(par, rot, POINT, data[D_PSI], sc)
-    point_arm_and_biases(par, y, sc, mode[M_INDEX], cos_psi, sin_psi)
-    f0 = sc[SC_F0]
-    force = (f0[0], f0[1], f0[2], f0[3], f0[4], f0[5])
-    return sticking_point_from_force(par, sc, force, True, sc[SC_ACC], sc[SC_LAM])
-
-
-@kernel(cache=True, error_model="numpy", _nrt=False)
 def rate(par, record, dt, t, y, mode, data, sc, ydot):
     """y' of the held mode at (t, y); False when the mode's system is singular.
 
     ``r' = v``, ``q' = (0, omega) q / 2`` (omega in the support frame),
     ``(v', omega') = x''``. A sticking POINT or EDGE is solved by its closed
     form on the applied wrench alone (:func:`sticking_stage`; a POINT on its
-    arm and biases without its rows, :func:`_sticking_point_stage`), any other
+    arm and biases, without its rows), any other
     sticking mode at its rows' centre (:func:`solve_at_centre`): their
     accelerations are those of :func:`solve_at`, to round-off and to the
     last bit, which only expresses the forces about the centre of pressure
     after the same solve; an integrator's stage reads none of them.
     """
-    if closed_form(mode) and mode[M_KIND] == POINT:
-        ok = _sticking_point_stage(par, record, dt, t, y, mode, data, sc)
-    elif closed_form(mode):
-        ok = sticking_stage(par, record, dt, t, y, mode, data, sc)
+    if closed_form(mode):
+        ok = sticking_stage(par, record, dt, t, y, mode, data, sc, False)
     elif mode[M_SLIP] == 0:
         ok, _, _ = solve_at_centre(par, record, dt, t, y, mode, data, sc)
     else:

@@ -18,14 +18,11 @@ from __future__ import annotations
 import math
 
 from freestand.core.contact.body_kernel import (
-    EDGE,
     FREE,
-    M_INDEX,
     M_KIND,
     P_GRAVITY,
     P_MASS,
     P_SHAPE,
-    POINT,
     SC_ACC,
     SC_PROBE,
     SC_ROT,
@@ -48,6 +45,7 @@ from freestand.core.dynamics.body_step import (
     FN_TILT,
     _normalise,
     _rk4,
+    corner_held,
     event_functions,
     event_values,
 )
@@ -242,11 +240,9 @@ def _gap_corner(par, mode, kinds, target):
     -1 where the function is not a box corner's gap."""
     if par[P_SHAPE] != SHAPE_BOX or kinds[target] != FN_GAP:
         return -1
-    kind, index = mode[M_KIND], mode[M_INDEX]
-    count = 0 if kind == FREE else 2  # a held patch's normal and friction (or slip) functions
+    count = 0 if mode[M_KIND] == FREE else 2  # a held patch's normal and friction (or slip)
     for c in range(4):
-        held = kind == POINT and index == c
-        if held or (kind == EDGE and (index == c or (index + 1) % 4 == c)):
+        if corner_held(mode, c):
             continue
         if count == target:
             return c

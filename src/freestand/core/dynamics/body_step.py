@@ -394,9 +394,7 @@ def event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds):
     d = sc[SC_PROBE][0]
     if par[P_SHAPE] == SHAPE_BOX:
         for c in range(4):
-            if kind == FACE or (kind == POINT and mode[M_INDEX] == c):
-                continue
-            if kind == EDGE and (mode[M_INDEX] == c or (mode[M_INDEX] + 1) % 4 == c):
+            if corner_held(mode, c):
                 continue
             g, _ = corner_gap(par, y, rot, c, d)
             values[count] = g
@@ -418,6 +416,16 @@ def event_values(par, y, mode, sc, ref, n_normal, n_tangent, values, kinds):
     kinds[count] = FN_TILT
     count += 1
     return count
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def corner_held(mode, c):
+    """Whether a box's base corner c is held by the mode's patch (a FACE's four, an EDGE's two,
+    a POINT's one): it has no gap function (:func:`event_values`, :func:`closing_step`)."""
+    kind, index = mode[M_KIND], mode[M_INDEX]
+    if kind == FACE or (kind == POINT and index == c):
+        return True
+    return kind == EDGE and (index == c or (index + 1) % 4 == c)
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
@@ -502,9 +510,7 @@ def closing_step(par, y, mode, sc, ref, pulled):
         if kind == FACE:
             return max(earliest, MIN_STEP)
         for c in range(4):
-            if kind == POINT and mode[M_INDEX] == c:
-                continue
-            if kind == EDGE and (mode[M_INDEX] == c or (mode[M_INDEX] + 1) % 4 == c):
+            if corner_held(mode, c):
                 continue
             g, gv = corner_gap(par, y, rot, c, d)
             ux, uy, uz = cross(wx, wy, wz, d[0], d[1], d[2])
