@@ -91,6 +91,7 @@ from freestand.core.contact.body_kernel import (
     tangential_velocity,
 )
 from freestand.core.contact.body_solve import slide_edge_on_terms, solve_patch, unit_slip
+from freestand.core.contact.body_stick_bounds import stick_impact_excluded
 from freestand.core.contact.compiled import kernel
 from freestand.core.contact.regula_falsi import narrowed, retained_scale
 from freestand.core.contact.slip_law import SLIP_FLOOR
@@ -1008,6 +1009,9 @@ def impact(par, y, sc, gap_tol, psi_before, mode, data, out_velocity):
                 search_scales = (1e300, 1e300) if slip == 0 else scales
                 angles[1] = _landing_pivot(par, y, sc, touching, search_scales,
                                            psi_before + math.pi, slip, data)  # fmt: skip
+            if slip == 0 and stick_impact_excluded(par, y, sc, kinds[c], indices[c], touching,
+                                                   scales[0], scales[1]):  # fmt: skip
+                continue  # its solve would fail too (body_stick_bounds)
             if try_mode(par, y, sc, kinds[c], indices[c], angles[c], slip, VELOCITY, touching,
                         0.0, scales, data):  # fmt: skip
                 mode[M_KIND] = kinds[c]
