@@ -21,7 +21,10 @@ the state lies on the hinge. RK4 on (chi, chi') takes a quarter of the
 work of RK4 on the 13 states with the closed form at each stage, keeps the
 edge's corners where they were (no drift off the held rows for the
 projection to take out) and, in a plane, is the planar engine's rocking
-integrator (:mod:`freestand.core.rocking.integrator`) about the pivot.
+integrator (:mod:`freestand.core.rocking.integrator`) about the pivot. The
+turns' cosines and sines are their Taylor series within a step's small
+turn (``vectors.cos_sin``: five ``sincos`` of libm per step took 3-4 % of a
+rocking cabinet's time).
 References: Goldstein, Poole and Safko (2002), Classical Mechanics, 3rd
 ed., sec. 5.5 (rotation about a fixed axis); ``docs/three-d.md``, "Time
 history".
@@ -43,6 +46,7 @@ from freestand.core.contact.body_kernel import (
     support_acceleration,
 )
 from freestand.core.contact.compiled import kernel
+from freestand.core.contact.vectors import cos_sin
 
 
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
@@ -110,13 +114,16 @@ def _hinge_steps(par, record, dt, t, h, rate, fw, fr):
     half = 0.5 * h
     turn2 = half * rate
     rate2 = rate + half * k1
-    k2 = _hinge_acceleration(par, record, dt, t + half, math.cos(turn2), math.sin(turn2), fw, fr)
+    cos2, sin2 = cos_sin(turn2)
+    k2 = _hinge_acceleration(par, record, dt, t + half, cos2, sin2, fw, fr)
     turn3 = half * rate2
     rate3 = rate + half * k2
-    k3 = _hinge_acceleration(par, record, dt, t + half, math.cos(turn3), math.sin(turn3), fw, fr)
+    cos3, sin3 = cos_sin(turn3)
+    k3 = _hinge_acceleration(par, record, dt, t + half, cos3, sin3, fw, fr)
     turn4 = h * rate3
     rate4 = rate + h * k3
-    k4 = _hinge_acceleration(par, record, dt, t + h, math.cos(turn4), math.sin(turn4), fw, fr)
+    cos4, sin4 = cos_sin(turn4)
+    k4 = _hinge_acceleration(par, record, dt, t + h, cos4, sin4, fw, fr)
     turn = h / 6.0 * (rate + 2.0 * rate2 + 2.0 * rate3 + rate4)
     return turn, rate + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
 
@@ -129,16 +136,15 @@ def _hinge_state(y, turn, rate, ux, uy, uz, dax, day, daz, along, qx, qy, qz, wx
     along u + cos(chi) r_perp + sin(chi) w``; the quaternion turned on
     the left (the support's frame); ``omega = rate u``, ``v = omega x r``.
     """
-    c, s = math.cos(turn), math.sin(turn)
+    c, s = cos_sin(turn)
     rx = along * ux + c * qx + s * wx
     ry = along * uy + c * qy + s * wy
     rz = along * uz + c * qz + s * wz
     out[0] = y[0] + dax + rx
     out[1] = y[1] + day + ry
     out[2] = y[2] + daz + rz
-    sh = math.sin(0.5 * turn)
-    q0, q1, q2, q3 = quaternion_product(math.cos(0.5 * turn), sh * ux, sh * uy, sh * uz, y[3],
-                                        y[4], y[5], y[6])  # fmt: skip
+    ch, sh = cos_sin(0.5 * turn)
+    q0, q1, q2, q3 = quaternion_product(ch, sh * ux, sh * uy, sh * uz, y[3], y[4], y[5], y[6])
     size = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
     out[3], out[4], out[5], out[6] = q0 / size, q1 / size, q2 / size, q3 / size
     ox, oy, oz = rate * ux, rate * uy, rate * uz
