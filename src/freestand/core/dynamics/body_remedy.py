@@ -289,6 +289,14 @@ def touched_patch(par, y, sc, reach, velocity_tol, patch):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
+def set_on_support(par, y, sc, data, work):
+    """The body raised so that no base point lies below the support (:func:`_settle` holding
+    none): where a stretch starts at an event of a held mode, whose state a step's end has
+    not projected (its held points within RK4's drift of the support)."""
+    _settle(par, y, sc, data, -math.inf, 0.0, 0.0, work)
+
+
+@kernel(cache=True, error_model="numpy", _nrt=False)
 def _settle(par, y, sc, data, reach, gap_tol, velocity_tol, work):
     """Set the body on the base points a stretch holds; True if any stays above the support.
 
