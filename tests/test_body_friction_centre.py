@@ -462,3 +462,77 @@ def test_a_slip_onset_s_edge_solves_on_kept_terms_are_its_solves_anew(
         assert np.array_equal(np.asarray(anew[0]), np.asarray(kept[0]), equal_nan=True)
         for a, b in zip(anew[1:], kept[1:], strict=True):
             assert np.array_equal(a, b, equal_nan=True)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    tilt=st.floats(0.01, 0.4), yaw=st.floats(-0.3, 0.3),
+    velocity=st.lists(st.floats(-0.5, 0.5), min_size=6, max_size=6),
+    push=st.lists(st.floats(-6.0, 6.0), min_size=3, max_size=3),
+    last=st.floats(0.0, 1.0), slope=st.floats(-100.0, -0.01), edge=st.sampled_from([2, 0]),
+)  # fmt: skip
+def test_a_sliding_edge_s_search_from_its_last_share_settles_where_one_from_its_middle_does(
+    tilt, yaw, velocity, push, last, slope, edge
+):
+    # the search starts at the edge's last settled share and slope (sc[SC_SHARE]), any of
+    # them, or another edge's (edge 0 stored, edge 2 solved: from the middle): the same
+    # centre of pressure to the search's tolerance (CENTRE_TOLERANCE of b_x, on a 1 m edge
+    # 5e-13 of its share), so the same solution to the round-off of the 2 x 2 system
+    par, y, record = tilted_box(tilt, yaw, velocity, push)
+    mode = np.array([bk.EDGE, 2, 1], dtype=np.int64)
+    data = np.zeros(bk.DATA_SIZE)
+    data[bk.D_SLIP] = 1.0
+    solutions = []
+    for stored in (None, (edge + 1.0, last, slope)):
+        sc = bk.new_scratch()
+        if stored is not None:
+            sc[bk.SC_SHARE][:] = stored
+        ok, _, _ = body_solve.solve_at(par, record, 1.0, 0.0, y, mode, data, sc)
+        solutions.append((ok, sc[bk.SC_ACC].copy(), sc[bk.SC_LAM].copy(), sc[bk.SC_CENTRE].copy(),
+                          sc[bk.SC_SHARE].copy()))  # fmt: skip
+    (ok_middle, acc_middle, lam_middle, centre_middle, kept), (ok, acc, lam, centre, _) = solutions
+    assert ok == ok_middle
+    if not ok:
+        return
+    np.testing.assert_allclose(centre[:3], centre_middle[:3], rtol=0.0, atol=1e-11)
+    np.testing.assert_allclose(acc, acc_middle, rtol=0.0, atol=1e-9 * G)
+    np.testing.assert_allclose(lam[:5], lam_middle[:5], rtol=0.0, atol=1e-9 * BOX.mass * G)
+    # a settled search keeps its share and slope for the next (edge 2 stored as 3.0)
+    if kept[0] != 0.0:
+        ax, _ = bk.box_corner(par, 2)
+        bx, _ = bk.box_corner(par, 3)
+        assert kept[0] == 3.0
+        assert ax + kept[1] * (bx - ax) == pytest.approx(centre_middle[0], abs=1e-12)
+        assert body_solve.SLOPE_LOW < kept[2] < body_solve.SLOPE_HIGH
+
+
+@settings(max_examples=80, deadline=None)
+@given(
+    tilt=st.floats(0.01, 0.4), yaw=st.floats(-0.3, 0.3),
+    velocity=st.lists(st.floats(-0.5, 0.5), min_size=6, max_size=6),
+    push=st.lists(st.floats(-6.0, 6.0), min_size=3, max_size=3),
+    share=st.floats(0.0, 1.0), stored=st.floats(-math.pi, math.pi),
+    floor=st.sampled_from([SLIP_FLOOR, 1e-3, 0.1, 1.0]),
+)  # fmt: skip
+def test_a_sliding_edge_s_closed_form_share_is_its_2x2_system_s(
+    tilt, yaw, velocity, push, share, stored, floor
+):
+    # F(sigma) of the kinetic search (body_solve._kinetic_share: Cramer's sum is the same
+    # for any friction, each term times |w|) against edge_share's 2 x 2 system with u =
+    # w / |w| (tolerance: the round-off of the two forms, 1e-12 of the share), and whether
+    # u was pulled to the stored direction (floors up to 1 m/s: pulled at most shares)
+    par, y, record = tilted_box(tilt, yaw, velocity, push)
+    data = np.zeros(bk.DATA_SIZE)
+    data[bk.D_SLIP : bk.D_SLIP + 3] = math.cos(stored), math.sin(stored), 0.0
+    data[bk.D_FLOOR] = floor
+    sc = bk.new_scratch()
+    bk.prepare(par, record, 1.0, 0.0, y, bk.EDGE, 2, 0.0, sc)
+    body_solve.edge_slide_terms(par, y, sc, True)
+    closed, pulled = body_solve._kinetic_share(par, sc[bk.SC_EDGE], 2, share, data, floor)
+    sc[bk.SC_CENTRE][5] = 0.0
+    system = body_solve.edge_share(par, sc, 2, share, np.zeros(3), True, data)
+    assert pulled == (sc[bk.SC_CENTRE][5] == 1.0)
+    assert math.isnan(closed) == math.isnan(system)  # no centre of pressure: both say so
+    if math.isnan(system):
+        return
+    assert closed == pytest.approx(system, abs=1e-12)

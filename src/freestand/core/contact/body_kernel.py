@@ -459,7 +459,7 @@ def rim_terms(par, y, rot, cos_psi, sin_psi):
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)
-def patch_rows(par, y, sc, kind, index, cos_psi, sin_psi):
+def patch_rows(par, y, sc, kind, index, cos_psi, sin_psi, tangential=True):
     """Fill the rows of a patch in the scratch ``sc``; returns (normal rows, tangential rows).
 
     A cylinder's POINT is its rim point at the body-frame angle psi, given
@@ -472,7 +472,9 @@ def patch_rows(par, y, sc, kind, index, cos_psi, sin_psi):
     point; FACE: the base centre) then, in row 3, the friction centre of the
     tangential rows. A FACE's or EDGE's tangential rows are at its friction
     centre ``sc[SC_CENTRE]`` (body-frame base x, y [m] and the twist radius
-    rho [m], see :func:`move_friction_centre`).
+    rho [m], see :func:`move_friction_centre`). ``tangential`` False: a FACE's or
+    EDGE's tangential rows are left as they were (a sliding EDGE's solve
+    computes them at the centre of pressure it finds, ``body_solve._slide_edge``).
     """
     rot, normal, nbias, arms = sc[SC_ROT], sc[SC_NORMAL], sc[SC_NBIAS], sc[SC_ARMS]
     tangent = sc[SC_TANGENT]
@@ -497,7 +499,8 @@ def patch_rows(par, y, sc, kind, index, cos_psi, sin_psi):
         _point_row(y, arms[0], 0.0, 0.0, 1.0, 0.0, normal, nbias, 0)
         _angular_row(1.0, 0.0, 0.0, normal, nbias, 1)
         _angular_row(0.0, 1.0, 0.0, normal, nbias, 2)
-    tangent_rows(par, y, sc)
+    if tangential:
+        tangent_rows(par, y, sc)
     return row_counts(kind)
 
 
@@ -1347,6 +1350,7 @@ SC_ONSET = 28  # (3, 3) an onset's Newton: the basis across u, the trial u
 SC_JACOBIAN = 29  # (2, 2) the onset Newton's Jacobian
 SC_EXCLUDED = 30  # (3,) int: the mode a selection excludes (body_modes.select_mode)
 SC_AFTER = 31  # (6,) an impact's velocity after (body_engine.resolve)
+SC_SHARE = 32  # (3,) a sliding EDGE's last settled centre: its index + 1 (0: none), share, slope
 
 # the columns of ``sc[SC_EDGE]``'s rows 0 and 1 (one per corner's normal row r, q_r = M^-1 w_r)
 E_A0 = 0  # w_r . M^-1 w_0
@@ -1377,7 +1381,7 @@ SCRATCH_DTYPE = np.dtype(
         ("indices", "i8", MAX_CANDIDATES + 1), ("angles", "f8", MAX_CANDIDATES + 1),
         ("points", "f8", (3, 3)), ("stored", "f8", DATA_SIZE), ("start", "f8", 3),
         ("onset", "f8", (3, 3)), ("jacobian", "f8", (2, 2)), ("excluded", "i8", 3),
-        ("after", "f8", 6),
+        ("after", "f8", 6), ("share", "f8", 3),
     ],
     align=True,
 )  # fmt: skip
@@ -1489,15 +1493,16 @@ def prepare_wrench(par, record, dt, t, y, sc):
 
 
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
-def scratch_rows(par, y, kind, index, cos_psi, sin_psi, sc):
-    """The patch's rows (:func:`patch_rows`) in the scratch, at the rotation it holds.
+def scratch_rows(par, y, kind, index, cos_psi, sin_psi, sc, tangential=True):
+    """The patch's rows (:func:`patch_rows`, ``tangential`` as there) in the scratch, at the
+    rotation it holds.
 
     The friction centre starts at the patch's geometric centre
     (:func:`reset_friction_centre`). Returns (normal rows, tangential rows).
     """
     centre = sc[SC_CENTRE]
     reset_friction_centre(par, kind, index, centre)
-    return patch_rows(par, y, sc, kind, index, cos_psi, sin_psi)
+    return patch_rows(par, y, sc, kind, index, cos_psi, sin_psi, tangential)
 
 
 # --- gaps of the base ---------------------------------------------------------------------------
