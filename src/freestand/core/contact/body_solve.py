@@ -435,7 +435,7 @@ def slide_edge_on_terms(par, y, sc, use_bias, direction, kinetic, stored, n_norm
         share, slope = last[1], last[2]
     low, high = 0.0, 1.0
     previous, g_previous = math.nan, math.nan
-    floor = max(SLIP_FLOOR, stored[D_FLOOR])
+    floor = max(SLIP_FLOOR, stored[D_FLOOR]) if kinetic else SLIP_FLOOR  # (unit_slip's)
     i = 0
     while i < EDGE_ITERATIONS:
         if kinetic:

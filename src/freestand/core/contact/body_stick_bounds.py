@@ -38,7 +38,6 @@ from freestand.core.contact.body_kernel import (
     FACE,
     P_HALF_X,
     P_HALF_Y,
-    P_INERTIA,
     P_MASS,
     P_MU_STATIC,
     SC_POINTS,
@@ -46,6 +45,7 @@ from freestand.core.contact.body_kernel import (
     arm,
     box_corner,
     normal_margin,
+    world_inertia_times,
 )
 from freestand.core.contact.compiled import kernel
 
@@ -69,21 +69,6 @@ def stick_impact_excluded(par, y, sc, kind, index, touching, force_tol, rate_tol
 
 
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
-def _inertia_times(par, rot, x0, x1, x2):
-    """I_w x = R S R^T x (S the body-frame inertia about G) [kg m^2 / s for x in rad/s]."""
-    b0 = rot[0, 0] * x0 + rot[1, 0] * x1 + rot[2, 0] * x2
-    b1 = rot[0, 1] * x0 + rot[1, 1] * x1 + rot[2, 1] * x2
-    b2 = rot[0, 2] * x0 + rot[1, 2] * x1 + rot[2, 2] * x2
-    s = par[P_INERTIA : P_INERTIA + 9]
-    c0 = s[0] * b0 + s[1] * b1 + s[2] * b2
-    c1 = s[3] * b0 + s[4] * b1 + s[5] * b2
-    c2 = s[6] * b0 + s[7] * b1 + s[8] * b2
-    return (rot[0, 0] * c0 + rot[0, 1] * c1 + rot[0, 2] * c2,
-            rot[1, 0] * c0 + rot[1, 1] * c1 + rot[1, 2] * c2,
-            rot[2, 0] * c0 + rot[2, 1] * c1 + rot[2, 2] * c2)  # fmt: skip
-
-
-@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def _friction_fails(par, px, py, pz, force_tol):
     """mu_0 P_z - |P_h| below -(tolerance + slack): the impulse P [N s] needs more friction
     than its normal part gives (the patch's |f_t| is at least |P_h|)."""
@@ -104,7 +89,7 @@ def _face_excluded(par, y, sc, force_tol):
     work = sc[SC_POINTS]
     d, lam = work[0], work[2]
     arm(par, rot, 0.0, 0.0, 0.0, d)  # the base centre, where the FACE's rows act
-    lx, ly, _ = _inertia_times(par, rot, y[10], y[11], y[12])
+    lx, ly, _ = world_inertia_times(par, rot, y[10], y[11], y[12])
     # the normal rows' multipliers: N = P_z and the moments about the base centre,
     # -I_w omega - d x P (x and y)
     lam[0] = pz
@@ -140,8 +125,8 @@ def edge_turn(par, y, sc, index):
     # u = (c x e, e): the midpoint held, the corners turning about e
     ux, uy, uz = -cz * ey, cz * ex, cx * ey - cy * ex
     m = par[P_MASS]
-    ix, iy, _ = _inertia_times(par, rot, ex, ey, 0.0)
-    lx, ly, _ = _inertia_times(par, rot, y[10], y[11], y[12])
+    ix, iy, _ = world_inertia_times(par, rot, ex, ey, 0.0)
+    lx, ly, _ = world_inertia_times(par, rot, y[10], y[11], y[12])
     along = m * (ux * y[7] + uy * y[8] + uz * y[9]) + ex * lx + ey * ly
     inertia = m * (ux * ux + uy * uy + uz * uz) + ex * ix + ey * iy
     return along / inertia, ux, uy, uz, ex, ey
