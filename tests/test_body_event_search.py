@@ -193,6 +193,27 @@ def test_a_rocking_box_s_impacts_take_about_one_rk4_trial_each():
     assert result.diagnostics["event_trials"] <= 1.5 * located
 
 
+def test_a_sliding_plate_s_stops_take_about_one_rk4_trial_each():
+    """A squat plate (1 x 1 x 0.4 m, mu 0.4) under 0.45 g at 1 Hz along x and 0.2 g at 1.3 Hz
+    along y slips and sticks again eight times in 4 s. A slip-stop is not seeded (the
+    friction's direction has kinks within its step): the regula falsi brackets it, and its
+    last trials, which close the bracket to EVENT_TIME within 1e-9 s of each other, are
+    extrapolated from the trial before (one solve each, no RK4 step): 12 RK4 trials for
+    its 16 events, 26 before."""
+    t = np.arange(0.0, 4.0 + 1e-9, 0.005)
+    x = 0.45 * G * np.sin(2.0 * math.pi * t)
+    y = 0.2 * G * np.sin(2.0 * math.pi * 1.3 * t + 0.5)
+    plate = Body("plate", Box((1.0, 1.0, 0.4)), 500.0, Friction(0.4, 0.4))
+    result = simulate_body(plate, SupportMotion3(0.005, x, y, np.zeros_like(t)), 4.0)
+    assert result.status == "completed"
+    kinds = [event[1] for event in result.events]
+    assert kinds.count("stick") >= 6 and kinds.count("slip") >= 6
+    located = sum(1 for kind in kinds if kind != "start")
+    # tolerance: 1.2 RK4 trials per located event on average (the slips are seeded and take
+    # one; the stops two or three, 1.75 per event before the extrapolation)
+    assert result.diagnostics["event_trials"] <= 1.2 * located
+
+
 def _lowest_gap(par, y):
     """The lowest base corner's gap [m] of the box at state y."""
     rot = np.zeros((3, 3))
