@@ -271,6 +271,14 @@ def test_a_patch_s_kind_is_the_one_its_rows_were_built_for():
     assert centre[2] == pytest.approx(0.25)
 
 
+#: hypothesis's strategies for :func:`tilted_box`'s tilt [rad], yaw [rad], velocities and push
+TILTED_BOX = dict(
+    tilt=st.floats(0.01, 0.4), yaw=st.floats(-0.3, 0.3),
+    velocity=st.lists(st.floats(-0.5, 0.5), min_size=6, max_size=6),
+    push=st.lists(st.floats(-6.0, 6.0), min_size=3, max_size=3),
+)  # fmt: skip
+
+
 def tilted_box(tilt, yaw, velocity, push, box=BOX):
     """(parameters, state, record) of ``box`` tilted by ``tilt`` [rad] about its x axis onto
     edge 2, turned by ``yaw`` [rad], with the velocities ``velocity`` (6,) and a constant
@@ -285,9 +293,7 @@ def tilted_box(tilt, yaw, velocity, push, box=BOX):
 
 @settings(max_examples=60, deadline=None)
 @given(
-    tilt=st.floats(0.01, 0.4), yaw=st.floats(-0.3, 0.3),
-    velocity=st.lists(st.floats(-0.5, 0.5), min_size=6, max_size=6),
-    push=st.lists(st.floats(-6.0, 6.0), min_size=3, max_size=3),
+    **TILTED_BOX,
     share=st.floats(0.0, 1.0), stored=st.floats(-math.pi, math.pi),
 )  # fmt: skip
 def test_a_sliding_edge_s_share_map_is_its_full_solve_s(tilt, yaw, velocity, push, share, stored):
@@ -424,9 +430,7 @@ def test_the_search_on_the_slip_s_pull_finds_the_slow_slide_s_centre(
 
 @settings(max_examples=60, deadline=None)
 @given(
-    tilt=st.floats(0.01, 0.4), yaw=st.floats(-0.3, 0.3),
-    velocity=st.lists(st.floats(-0.5, 0.5), min_size=6, max_size=6),
-    push=st.lists(st.floats(-6.0, 6.0), min_size=3, max_size=3),
+    **TILTED_BOX,
     directions=st.lists(st.floats(-math.pi, math.pi), min_size=2, max_size=8),
     acceleration=st.booleans(), fallback=st.booleans(),
 )  # fmt: skip
@@ -466,9 +470,7 @@ def test_a_slip_onset_s_edge_solves_on_kept_terms_are_its_solves_anew(
 
 @settings(max_examples=60, deadline=None)
 @given(
-    tilt=st.floats(0.01, 0.4), yaw=st.floats(-0.3, 0.3),
-    velocity=st.lists(st.floats(-0.5, 0.5), min_size=6, max_size=6),
-    push=st.lists(st.floats(-6.0, 6.0), min_size=3, max_size=3),
+    **TILTED_BOX,
     last=st.floats(0.0, 1.0), slope=st.floats(-100.0, -0.01), edge=st.sampled_from([2, 0]),
 )  # fmt: skip
 def test_a_sliding_edge_s_search_from_its_last_share_settles_where_one_from_its_middle_does(
@@ -508,9 +510,7 @@ def test_a_sliding_edge_s_search_from_its_last_share_settles_where_one_from_its_
 
 @settings(max_examples=80, deadline=None)
 @given(
-    tilt=st.floats(0.01, 0.4), yaw=st.floats(-0.3, 0.3),
-    velocity=st.lists(st.floats(-0.5, 0.5), min_size=6, max_size=6),
-    push=st.lists(st.floats(-6.0, 6.0), min_size=3, max_size=3),
+    **TILTED_BOX,
     share=st.floats(0.0, 1.0), stored=st.floats(-math.pi, math.pi),
     floor=st.sampled_from([SLIP_FLOOR, 1e-3, 0.1, 1.0]),
 )  # fmt: skip
@@ -529,9 +529,14 @@ def test_a_sliding_edge_s_closed_form_share_is_its_2x2_system_s(
     bk.prepare(par, record, 1.0, 0.0, y, bk.EDGE, 2, 0.0, sc)
     body_solve.edge_slide_terms(par, y, sc, True)
     closed, pulled = body_solve._kinetic_share(par, sc[bk.SC_EDGE], 2, share, data, floor)
-    sc[bk.SC_CENTRE][5] = 0.0
-    system = body_solve.edge_share(par, sc, 2, share, np.zeros(3), True, data)
-    assert pulled == (sc[bk.SC_CENTRE][5] == 1.0)
+    # the 2 x 2 system at u, the slip velocity's at sigma (unit_slip)
+    ax, ay = bk.box_corner(par, 2)
+    bx, by = bk.box_corner(par, 3)
+    rho = bk.effective_twist_radius(par, bk.EDGE, 2, ax + share * (bx - ax), ay + share * (by - ay))
+    u = np.zeros(3)
+    own = body_solve._slip_at(sc[bk.SC_EDGE], share, rho, data, np.zeros(3), u)
+    system = body_solve._edge_share_along(par, sc[bk.SC_EDGE], share, rho, u)
+    assert pulled == (not own)
     assert math.isnan(closed) == math.isnan(system)  # no centre of pressure: both say so
     if math.isnan(system):
         return

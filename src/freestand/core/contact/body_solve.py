@@ -547,21 +547,21 @@ def edge_share(par, sc, index, share, direction, kinetic, stored):
     (G the generalised force of u there, twist radius rho at sigma). u is
     ``direction``, or (``kinetic``) the slip velocity's there
     (:func:`unit_slip`, ``stored`` its fallback; flagged in
-    ``sc[SC_CENTRE][5]`` where read). Returns ``N_1 / (N_0 + N_1)`` in [0, 1];
-    NaN where the system is singular or N_0 + N_1 <= 0 (no centre of pressure).
+    ``sc[SC_CENTRE][5]`` where read; the slip velocity and u left in the
+    scratch), whose F is :func:`_kinetic_share`'s closed form of the same
+    system. Returns ``N_1 / (N_0 + N_1)`` in [0, 1]; NaN where the system is
+    singular or N_0 + N_1 <= 0 (no centre of pressure).
     """
     edge = sc[SC_EDGE]
     ax, ay = box_corner(par, index)
     bx, by = box_corner(par, (index + 1) % 4)
     rho = effective_twist_radius(par, EDGE, index, ax + share * (bx - ax), ay + share * (by - ay))
     if kinetic:
-        velocity, svel, own = edge[2], sc[SC_SVEL], sc[SC_DIR]
-        svel[0] = velocity[0] + share * (velocity[2] - velocity[0])
-        svel[1] = velocity[1] + share * (velocity[3] - velocity[1])
-        svel[2] = rho * velocity[4]
-        if not unit_slip(svel, 3, stored, own):
+        if not _slip_at(edge, share, rho, stored, sc[SC_SVEL], sc[SC_DIR]):
             sc[SC_CENTRE][5] = 1.0
-        return _edge_share_along(par, edge, share, rho, own)
+        value, _ = _kinetic_share(par, edge, index, share, stored,
+                                  max(SLIP_FLOOR, stored[D_FLOOR]))  # fmt: skip
+        return value
     return _edge_share_along(par, edge, share, rho, direction)
 
 
@@ -612,12 +612,13 @@ def _kinetic_share(par, edge, index, share, stored, floor):
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
 def _slip_at(edge, share, rho, stored, svel, direction):
     """The slip velocity s at ``share`` (twist radius ``rho`` [m]) into ``svel``, u into
-    ``direction`` (:func:`unit_slip`): what :func:`edge_share` leaves there."""
+    ``direction`` (:func:`unit_slip`): what :func:`edge_share` leaves there. Returns
+    :func:`unit_slip`'s flag (False where u was pulled to the stored direction)."""
     velocity = edge[2]
     svel[0] = velocity[0] + share * (velocity[2] - velocity[0])
     svel[1] = velocity[1] + share * (velocity[3] - velocity[1])
     svel[2] = rho * velocity[4]
-    unit_slip(svel, 3, stored, direction)
+    return unit_slip(svel, 3, stored, direction)
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)

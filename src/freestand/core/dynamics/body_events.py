@@ -6,9 +6,9 @@ crossing by Anderson and Bjorck's variant of regula falsi on RK4 states from
 the step's start (:func:`locate`), its first trials seeded by the crossing on
 the step's cubic Hermite interpolant (:func:`interpolated_crossing`; a box
 corner's gap by Newton's method there, :func:`_corner_crossing`) and by
-Newton steps just past it (:func:`_seeded_trial`; within
-``EXTRAPOLATION_TIME`` of the last trial that trial's state moved by its
-rate, :func:`_extrapolated`), a bracket closed from a trial just past a
+Newton steps just past it (:func:`_seeded_trial`), any trial within
+``EXTRAPOLATION_TIME`` of the last one that trial's state moved by its rate
+(:func:`_extrapolated`), a bracket closed from a trial just past a
 gap's crossing by the state just before it (:func:`_clear_before`). The
 loop that calls it is :func:`freestand.core.dynamics.body_engine.run`.
 """
@@ -57,8 +57,8 @@ INTERPOLANT_TRIALS = 40  # most trials of an event's search on the step's cubic 
 INTERPOLANT_TIME = 1e-10  # [s] width of its bracket that ends that search
 SEED_TRIALS = 4  # most seeded trials of an event's search on RK4 states (locate)
 SEED_OFFSET = 0.45  # a seeded trial lies this part of EVENT_TIME beyond its estimated crossing
-#: [s] a seeded trial this close to the last one is that trial's state moved by its rate
-#: (:func:`_extrapolated`), not an RK4 step from the step's start
+#: [s] a trial this close to the last one and to the last RK4 trial is the last trial's
+#: state moved by its rate (:func:`_extrapolated`), not an RK4 step from the step's start
 EXTRAPOLATION_TIME = 1e-8
 #: [s] the state this far before a trial past a gap's, a landing's or the tilt's crossing
 #: closes the bracket where no function has fired there (:func:`_clear_before`)
