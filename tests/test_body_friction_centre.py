@@ -528,7 +528,7 @@ def test_a_sliding_edge_s_closed_form_share_is_its_2x2_system_s(
     sc = bk.new_scratch()
     bk.prepare(par, record, 1.0, 0.0, y, bk.EDGE, 2, 0.0, sc)
     body_solve.edge_slide_terms(par, y, sc, True)
-    closed, pulled = body_solve._kinetic_share(par, sc[bk.SC_EDGE], 2, share, data, floor)
+    closed, _, pulled, *_ = body_solve._kinetic_share(par, sc[bk.SC_EDGE], 2, share, data, floor)
     # the 2 x 2 system at u, the slip velocity's at sigma (unit_slip)
     ax, ay = bk.box_corner(par, 2)
     bx, by = bk.box_corner(par, 3)
@@ -541,3 +541,74 @@ def test_a_sliding_edge_s_closed_form_share_is_its_2x2_system_s(
     if math.isnan(system):
         return
     assert closed == pytest.approx(system, abs=1e-12)
+
+
+@settings(max_examples=80, deadline=None)
+@given(
+    **TILTED_BOX,
+    share=st.floats(0.01, 0.99), stored=st.floats(-math.pi, math.pi),
+    floor=st.sampled_from([SLIP_FLOOR, 1e-3, 0.1, 1.0]),
+)  # fmt: skip
+def test_a_sliding_edge_s_closed_form_slope_is_its_share_s_derivative(
+    tilt, yaw, velocity, push, share, stored, floor
+):
+    # F'(sigma), the Newton step's slope of the kinetic search (body_solve._kinetic_share,
+    # its slip pulled to the stored direction or not), against F's central difference over
+    # 2e-6 of the edge where F is smooth there: both ends pulled alike, neither clamped to
+    # the edge, away from the twist radius's kink at the middle. Tolerance 1e-4 of the
+    # slope (or 1e-6 absolute): the difference's truncation, F'' 1e-12 and its round-off
+    par, y, record = tilted_box(tilt, yaw, velocity, push)
+    data = np.zeros(bk.DATA_SIZE)
+    data[bk.D_SLIP : bk.D_SLIP + 3] = math.cos(stored), math.sin(stored), 0.0
+    sc = bk.new_scratch()
+    bk.prepare(par, record, 1.0, 0.0, y, bk.EDGE, 2, 0.0, sc)
+    body_solve.edge_slide_terms(par, y, sc, True)
+    step = 1e-6
+    value, slope, pulled, *_ = body_solve._kinetic_share(par, sc[bk.SC_EDGE], 2, share, data,
+                                                         floor)  # fmt: skip
+    ends = [body_solve._kinetic_share(par, sc[bk.SC_EDGE], 2, share + s, data, floor)
+            for s in (-step, step)]  # fmt: skip
+    assume(math.isfinite(value) and all(math.isfinite(end[0]) for end in ends))
+    assume(0.0 < value < 1.0 and all(0.0 < end[0] < 1.0 for end in ends))
+    assume(all(end[2] == pulled for end in ends) and abs(share - 0.5) > 2.0 * step)
+    # the pull's floor bends F where |s| crosses it: both ends on the same side of it
+    sizes = [_slip_speed(sc, share + s, par) for s in (-step, 0.0, step)]
+    assume(all(size > floor for size in sizes) or all(size < floor for size in sizes))
+    difference = (ends[1][0] - ends[0][0]) / (2.0 * step)
+    assert slope == pytest.approx(difference, rel=1e-4, abs=1e-6)
+
+
+def _slip_speed(sc, share, par):
+    """|s| at ``share`` of edge 2 (the scratch's terms), its twist part rho omega_z."""
+    ax, ay = bk.box_corner(par, 2)
+    bx, by = bk.box_corner(par, 3)
+    rho_ = bk.effective_twist_radius(par, bk.EDGE, 2, ax + share * (bx - ax),
+                                     ay + share * (by - ay))  # fmt: skip
+    v = sc[bk.SC_EDGE][2]
+    return math.hypot(v[0] + share * (v[2] - v[0]), v[1] + share * (v[3] - v[1]), rho_ * v[4])
+
+
+@settings(max_examples=60, deadline=None)
+@given(**TILTED_BOX, stored=st.floats(-math.pi, math.pi), floor=st.sampled_from([SLIP_FLOOR, 0.1]))
+def test_a_kinetic_edge_s_solution_is_its_2x2_system_s_at_the_settled_share(
+    tilt, yaw, velocity, push, stored, floor
+):
+    # the kinetic search's solution comes from its last closed form's terms (c_r |w|, |w|,
+    # det |w|; body_solve._edge_forces): the same accelerations and forces as the 2 x 2
+    # system solved again at the share it settled on, with its u (body_solve._edge_solution).
+    # Tolerance 1e-9 of g and of m g: the round-off of the two forms
+    par, y, record = tilted_box(tilt, yaw, velocity, push)
+    mode = np.array([bk.EDGE, 2, 1], dtype=np.int64)
+    data = np.zeros(bk.DATA_SIZE)
+    data[bk.D_SLIP : bk.D_SLIP + 3] = math.cos(stored), math.sin(stored), 0.0
+    data[bk.D_FLOOR] = floor
+    sc = bk.new_scratch()
+    ok, _, _ = body_solve.solve_at(par, record, 1.0, 0.0, y, mode, data, sc)
+    assume(ok and sc[bk.SC_EDGE][2, bk.E_INTACT] == 1.0)  # settled (not the full solve)
+    acc, lam = sc[bk.SC_ACC].copy(), sc[bk.SC_LAM].copy()
+    ax, _ = bk.box_corner(par, 2)
+    bx, _ = bk.box_corner(par, 3)
+    share = (sc[bk.SC_CENTRE][0] - ax) / (bx - ax)
+    assert body_solve._edge_solution(par, sc, share, sc[bk.SC_DIR].copy())
+    np.testing.assert_allclose(acc, sc[bk.SC_ACC], rtol=0.0, atol=1e-9 * G)
+    np.testing.assert_allclose(lam[:5], sc[bk.SC_LAM][:5], rtol=0.0, atol=1e-9 * BOX.mass * G)
