@@ -8,6 +8,7 @@ uplift, free flight, overturning).
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field, replace
 
@@ -173,7 +174,8 @@ class BodyTimeHistory:
     twist : numpy.ndarray
         (K,) rotation about the vertical (swing-twist decomposition, unwrapped) [rad].
     events : tuple of (float, str, str, str)
-        (time [s], kind, patch before, patch after).
+        (time [s], kind, patch before, patch after); named from
+        ``event_codes`` where first read.
     max_rotation, max_slide, max_twist : float
         Largest tilt [rad], horizontal slide magnitude [m], |twist| [rad].
     uplift, free_flight, overturned : bool
@@ -191,6 +193,14 @@ class BodyTimeHistory:
         being finite, or a base point went deeper below the support than
         :func:`lost_contact_depth`; the histories, events and peaks stop
         before it), else empty.
+    event_codes : tuple of numpy.ndarray
+        The engine's events as codes: times [s], kinds, patches before and
+        after (:data:`EVENT_KIND_NAMES`, :data:`PATCH_NAMES`), from which
+        ``events`` is named. Naming the 293 events of the 3-D benchmark's
+        cabinet as tuples took 34 us of its run warm and 86 us where another
+        program's run had left Python's objects out of the caches, as the
+        benchmark alternates them (3 % of the run): a run whose events are
+        not read does not pay for them.
     """
 
     body: str
@@ -204,7 +214,7 @@ class BodyTimeHistory:
     tilt: np.ndarray
     slide: np.ndarray
     twist: np.ndarray
-    events: tuple
+    event_codes: tuple
     max_rotation: float
     max_slide: float
     max_twist: float
@@ -214,6 +224,12 @@ class BodyTimeHistory:
     overturn_time: float | None
     diagnostics: dict = field(default_factory=dict)
     message: str = ""
+
+    @functools.cached_property
+    def events(self) -> tuple:
+        """(time [s], kind, patch before, patch after) of each event, named from
+        ``event_codes`` (:func:`_event_tuples`) where first read."""
+        return _event_tuples(self.event_codes)
 
 
 def default_body_step(body: Body, gravity: float = GRAVITY) -> float:
@@ -762,7 +778,7 @@ def _result(body, width, istate, time, state, events, rows) -> BodyTimeHistory:
         tilt=tilt,
         slide=slide,
         twist=twist,
-        events=_event_tuples(events, shown),
+        event_codes=tuple(codes[:shown] for codes in events),
         max_rotation=peaks[0],
         max_slide=peaks[1],
         max_twist=peaks[2],
@@ -782,13 +798,14 @@ def _result(body, width, istate, time, state, events, rows) -> BodyTimeHistory:
     )
 
 
-def _event_tuples(events: tuple, shown: int) -> tuple:
-    """The first ``shown`` of the engine's events as (time [s], kind, patch before, after).
+def _event_tuples(codes: tuple) -> tuple:
+    """The engine's events as (time [s], kind, patch before, after), from their ``codes``
+    (:attr:`BodyTimeHistory.event_codes`).
 
     Named from lists of the codes (indexing arrays of names took 8 us warm, 26 us where
     another program's run had left numpy out of the caches).
     """
-    columns = (e[:shown].tolist() for e in events)
+    columns = (column.tolist() for column in codes)
     return tuple(
         (time, EVENT_KIND_NAMES[kind], PATCH_NAMES[was], PATCH_NAMES[now])
         for time, kind, was, now in zip(*columns, strict=True)
