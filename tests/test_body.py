@@ -10,6 +10,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from freestand.core.body import Body, Box, Cylinder, base_ray_distance
+from freestand.core.contact import body_kernel as bk
+from freestand.core.contact.body_kernel import body_parameters
 from freestand.core.contact.body_screening import initial_motion, screen_directions
 from freestand.core.contact.screening import Motion
 from freestand.core.model import Friction
@@ -108,3 +110,23 @@ def test_centred_box_screening_is_symmetric_under_reversal(body, horizontal, phi
     assert forward.tangential_force == pytest.approx(
         tuple(-f for f in backward.tangential_force), abs=1e-6, nan_ok=True
     )
+
+
+def test_a_body_is_immutable_and_keeps_its_kernel_parameters():
+    # the inertia is a read-only copy (a body does not change), so the kernel's parameters
+    # are kept on the body for each (gravity, restitution): the same values, a fresh array
+    # each call (the caller's to keep), another array for another gravity or restitution
+    given = np.diag([10.0, 20.0, 30.0])
+    body = Body("b", Box((1.0, 0.6, 2.0)), 400.0, Friction(0.5, 0.5), inertia=given)
+    given[0, 0] = 99.0  # the caller's array is not the body's
+    assert body.inertia[0, 0] == 10.0
+    with pytest.raises(ValueError):
+        body.inertia[0, 0] = 1.0
+    first, again = body_parameters(body, 9.81), body_parameters(body, 9.81)
+    assert first is not again and np.array_equal(first, again)
+    first[:] = 0.0  # a copy: the kept parameters stay
+    assert np.array_equal(body_parameters(body, 9.81), again)
+    assert body_parameters(body, 9.81, 0.5)[bk.P_RESTITUTION] == 0.5
+    assert body_parameters(body, 1.62)[bk.P_GRAVITY] == 1.62
+    default = Body("b", Cylinder(0.5, 1.0), 100.0, Friction(0.3, 0.3))
+    assert not default.inertia.flags.writeable

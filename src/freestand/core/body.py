@@ -92,9 +92,12 @@ Shape = Box | Cylinder
 
 
 def _inertia_matrix(value, mass: float, shape: Shape) -> np.ndarray:
+    """The body-frame inertia [kg m^2], checked, as a read-only copy (a body is immutable)."""
     if value is None:
-        return np.diag(mass * shape.unit_inertia())
-    matrix = np.asarray(value, dtype=float)
+        matrix = np.diag(mass * shape.unit_inertia())
+        matrix.flags.writeable = False
+        return matrix
+    matrix = np.array(value, dtype=float)
     if matrix.shape == (3,):
         matrix = np.diag(matrix)
     if matrix.shape != (3, 3) or not np.isfinite(matrix).all():
@@ -106,6 +109,7 @@ def _inertia_matrix(value, mass: float, shape: Shape) -> np.ndarray:
         raise FreestandError(f"inertia must be symmetric, not {matrix.tolist()!r}")
     if np.linalg.eigvalsh(matrix).min() <= 0.0:
         raise FreestandError(f"inertia must be positive definite, not {matrix.tolist()!r}")
+    matrix.flags.writeable = False
     return matrix
 
 
@@ -129,7 +133,9 @@ class Body:
     inertia : array_like, optional
         About the centre of gravity, body frame [kg m^2]: three principal
         values or a symmetric positive definite 3x3 matrix; default the
-        homogeneous body's.
+        homogeneous body's. Kept as a read-only 3x3 copy: a body does not
+        change (the 3-D kernel's parameters are kept on it,
+        :func:`~freestand.core.contact.body_kernel.body_parameters`).
     """
 
     name: str
