@@ -603,8 +603,8 @@ def _kinetic_share(par, edge, index, share, stored, floor):
     pulled at 95 % of them) where the secant took 3.6.
 
     Returns (F [-], F' [-], True where u was pulled to the stored r (:func:`unit_slip`
-    with ``floor`` [m/s]), ``c_0 |w|``, ``c_1 |w|`` [m/s], |w| [m/s], ``det |w|``): the
-    system at sigma, whose solution :func:`slide_edge_on_terms` takes from them.
+    with ``floor`` [m/s]), ``c_0 |w|``, ``c_1 |w|``, |w| [m/s], ``det |w|``): the system
+    at sigma, whose solution :func:`slide_edge_on_terms` takes from them.
     """
     ax, ay = box_corner(par, index)
     bx, by = box_corner(par, (index + 1) % 4)
