@@ -556,7 +556,8 @@ def test_a_sliding_edge_s_closed_form_slope_is_its_share_s_derivative(
     # its slip pulled to the stored direction or not), against F's central difference over
     # 2e-6 of the edge where F is smooth there: both ends pulled alike, neither clamped to
     # the edge, away from the twist radius's kink at the middle. Tolerance 1e-4 of the
-    # slope (or 1e-6 absolute): the difference's truncation, F'' 1e-12 and its round-off
+    # slope (or 1e-6 absolute): the difference's truncation (F''' step^2 / 6) and its
+    # round-off (some 1e-16 / step, 1e-10)
     par, y, record = tilted_box(tilt, yaw, velocity, push)
     data = np.zeros(bk.DATA_SIZE)
     data[bk.D_SLIP : bk.D_SLIP + 3] = math.cos(stored), math.sin(stored), 0.0
