@@ -521,18 +521,10 @@ def test_a_sliding_edge_s_closed_form_share_is_its_2x2_system_s(
     # for any friction, each term times |w|) against edge_share's 2 x 2 system with u =
     # w / |w| (tolerance: the round-off of the two forms, 1e-12 of the share), and whether
     # u was pulled to the stored direction (floors up to 1 m/s: pulled at most shares)
-    par, y, record = tilted_box(tilt, yaw, velocity, push)
-    data = np.zeros(bk.DATA_SIZE)
-    data[bk.D_SLIP : bk.D_SLIP + 3] = math.cos(stored), math.sin(stored), 0.0
-    data[bk.D_FLOOR] = floor
-    sc = bk.new_scratch()
-    bk.prepare(par, record, 1.0, 0.0, y, bk.EDGE, 2, 0.0, sc)
-    body_solve.edge_slide_terms(par, y, sc, True)
+    par, data, sc = _edge_terms(tilt, yaw, velocity, push, stored, floor)
     closed, _, pulled, *_ = body_solve._kinetic_share(par, sc[bk.SC_EDGE], 2, share, data, floor)
     # the 2 x 2 system at u, the slip velocity's at sigma (unit_slip)
-    ax, ay = bk.box_corner(par, 2)
-    bx, by = bk.box_corner(par, 3)
-    rho = bk.effective_twist_radius(par, bk.EDGE, 2, ax + share * (bx - ax), ay + share * (by - ay))
+    rho = _edge_rho(par, share)
     u = np.zeros(3)
     own = body_solve._slip_at(sc[bk.SC_EDGE], share, rho, data, np.zeros(3), u)
     system = body_solve._edge_share_along(par, sc[bk.SC_EDGE], share, rho, u)
@@ -558,12 +550,7 @@ def test_a_sliding_edge_s_closed_form_slope_is_its_share_s_derivative(
     # the edge, away from the twist radius's kink at the middle. Tolerance 1e-4 of the
     # slope (or 1e-6 absolute): the difference's truncation (F''' step^2 / 6) and its
     # round-off (some 1e-16 / step, 1e-10)
-    par, y, record = tilted_box(tilt, yaw, velocity, push)
-    data = np.zeros(bk.DATA_SIZE)
-    data[bk.D_SLIP : bk.D_SLIP + 3] = math.cos(stored), math.sin(stored), 0.0
-    sc = bk.new_scratch()
-    bk.prepare(par, record, 1.0, 0.0, y, bk.EDGE, 2, 0.0, sc)
-    body_solve.edge_slide_terms(par, y, sc, True)
+    par, data, sc = _edge_terms(tilt, yaw, velocity, push, stored, floor)
     step = 1e-6
     value, slope, pulled, *_ = body_solve._kinetic_share(par, sc[bk.SC_EDGE], 2, share, data,
                                                          floor)  # fmt: skip
@@ -581,12 +568,31 @@ def test_a_sliding_edge_s_closed_form_slope_is_its_share_s_derivative(
 
 def _slip_speed(sc, share, par):
     """|s| at ``share`` of edge 2 (the scratch's terms), its twist part rho omega_z."""
+    v = sc[bk.SC_EDGE][2]
+    return math.hypot(v[0] + share * (v[2] - v[0]), v[1] + share * (v[3] - v[1]),
+                      _edge_rho(par, share) * v[4])  # fmt: skip
+
+
+def _edge_terms(tilt, yaw, velocity, push, stored, floor):
+    """The tilted box sliding on edge 2 (:func:`tilted_box`): its parameters, the mode data
+    (stored slip direction at angle ``stored``, floor ``floor`` [m/s]) and the scratch with
+    the edge's terms (``body_solve.edge_slide_terms``)."""
+    par, y, record = tilted_box(tilt, yaw, velocity, push)
+    data = np.zeros(bk.DATA_SIZE)
+    data[bk.D_SLIP : bk.D_SLIP + 3] = math.cos(stored), math.sin(stored), 0.0
+    data[bk.D_FLOOR] = floor
+    sc = bk.new_scratch()
+    bk.prepare(par, record, 1.0, 0.0, y, bk.EDGE, 2, 0.0, sc)
+    body_solve.edge_slide_terms(par, y, sc, True)
+    return par, data, sc
+
+
+def _edge_rho(par, share):
+    """Edge 2's twist radius [m] with its centre of pressure at ``share``."""
     ax, ay = bk.box_corner(par, 2)
     bx, by = bk.box_corner(par, 3)
-    rho_ = bk.effective_twist_radius(par, bk.EDGE, 2, ax + share * (bx - ax),
+    return bk.effective_twist_radius(par, bk.EDGE, 2, ax + share * (bx - ax),
                                      ay + share * (by - ay))  # fmt: skip
-    v = sc[bk.SC_EDGE][2]
-    return math.hypot(v[0] + share * (v[2] - v[0]), v[1] + share * (v[3] - v[1]), rho_ * v[4])
 
 
 @settings(max_examples=60, deadline=None)

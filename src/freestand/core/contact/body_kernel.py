@@ -599,14 +599,28 @@ def effective_twist_radius(par, kind, index, cx, cy):
         return face_twist_radius(par[P_SHAPE] == SHAPE_BOX, par[P_HALF_X], par[P_HALF_Y],
                                  par[P_RHO_FACE], floor, cx, cy)  # fmt: skip
     if kind == EDGE:
-        ax, ay = box_corner(par, index)
-        bx, by = box_corner(par, (index + 1) % 4)
-        if ay == by:  # an edge along x
-            half, offset = 0.5 * abs(bx - ax), cx - 0.5 * (ax + bx)
-        else:
-            half, offset = 0.5 * abs(by - ay), cy - 0.5 * (ay + by)
-        return max(0.5 * (half - abs(offset)), floor)
+        return edge_twist_radius(par, index, cx, cy)[0]
     return 0.0
+
+
+@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
+def edge_twist_radius(par, index, cx, cy):
+    """:func:`effective_twist_radius` of EDGE ``index`` and its rate along the edge:
+    (rho [m], d rho / d sigma [m]) at the centre of pressure (cx, cy), sigma its share
+    from the edge's first corner. ``rho = max((L/2 - |e|) / 2, floor)``, e the offset
+    from the edge's middle, so the rate is ``-sign(e) L / 2`` with L signed along the
+    edge's axis, and zero where rho is floored or e is zero."""
+    floor = RHO_FLOOR * par[P_HALF_X]
+    ax, ay = box_corner(par, index)
+    bx, by = box_corner(par, (index + 1) % 4)
+    if ay == by:  # an edge along x
+        half, offset, length = 0.5 * abs(bx - ax), cx - 0.5 * (ax + bx), bx - ax
+    else:
+        half, offset, length = 0.5 * abs(by - ay), cy - 0.5 * (ay + by), by - ay
+    rho = 0.5 * (half - abs(offset))
+    if not rho > floor or offset == 0.0:
+        return max(rho, floor), 0.0
+    return rho, -0.5 * length if offset > 0.0 else 0.5 * length
 
 
 @kernel(cache=True, error_model="numpy", _nrt=False)

@@ -69,6 +69,7 @@ from freestand.core.contact.body_kernel import (
     box_corner,
     centre_stick_friction,
     cross,
+    edge_twist_radius,
     effective_twist_radius,
     face_centre_of_pressure,
     pivot_direction,
@@ -608,8 +609,7 @@ def _kinetic_share(par, edge, index, share, stored, floor):
     """
     ax, ay = box_corner(par, index)
     bx, by = box_corner(par, (index + 1) % 4)
-    rho = effective_twist_radius(par, EDGE, index, ax + share * (bx - ax), ay + share * (by - ay))
-    twist = _edge_twist_slope(par, index, share, ax, ay, bx, by)  # rho'
+    rho, twist = edge_twist_radius(par, index, ax + share * (bx - ax), ay + share * (by - ay))
     velocity = edge[2]
     w0 = velocity[0] + share * (velocity[2] - velocity[0])
     w1 = velocity[1] + share * (velocity[3] - velocity[1])
@@ -653,19 +653,6 @@ def _kinetic_share(par, edge, index, share, stored, floor):
     dc1 = mu * _friction_slope(edge[1], share, rho, twist, slip, d0, d1, d2)
     dsecond = plain * dsize - rhs1 * dc0 + rhs0 * dc1
     return value, (dsecond - value * whole * dsize) * inverse, pulled, c0, c1, size, det
-
-
-@kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
-def _edge_twist_slope(par, index, share, ax, ay, bx, by):
-    """rho' = d rho / d sigma [m] of :func:`effective_twist_radius` on the EDGE from corner
-    (ax, ay) to (bx, by): ``rho = max((L/2 - |e|) / 2, floor)``, e the offset along it."""
-    if ay == by:  # an edge along x
-        half, length, offset = 0.5 * abs(bx - ax), bx - ax, ax + share * (bx - ax) - 0.5 * (ax + bx)
-    else:
-        half, length, offset = 0.5 * abs(by - ay), by - ay, ay + share * (by - ay) - 0.5 * (ay + by)
-    if not 0.5 * (half - abs(offset)) > RHO_FLOOR * par[P_HALF_X] or offset == 0.0:
-        return 0.0
-    return -0.5 * length if offset > 0.0 else 0.5 * length
 
 
 @kernel(cache=True, inline="always", error_model="numpy", _nrt=False)
